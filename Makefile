@@ -1,0 +1,69 @@
+# Two user commands:  make repro  (every figure + the claims report)  and  make test.
+# Both first install what is missing (Debian packages, as root), then build.
+# Generated files go to $(OUT)/ (ignored by git); the build tree is $(BUILD)/.
+
+BUILD      ?= build
+OUT        ?= out
+BUILD_TYPE ?= Release
+PY         := /usr/bin/python3
+JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
+FUZZ_CASES ?= 1000000
+
+# Debian packages the project needs (tool chain first, then libraries, then Python).
+DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
+            libbenchmark-dev nlohmann-json3-dev python3-numpy python3-matplotlib
+
+BIN := $(BUILD)/bin
+
+.PHONY: all deps configure build test repro fuzz bench clean figures report
+
+all: build
+
+# Install only what is missing; 'apt-get update' runs once, before the first install.
+deps:
+	@missing=""; for p in $(DEB_PKGS); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'install ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "== installing missing Debian packages:$$missing"; \
+	  if [ "$$(id -u)" -ne 0 ]; then SUDO=sudo; else SUDO=; fi; \
+	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get update -q && \
+	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $$missing; \
+	else echo "== all Debian packages present"; fi
+
+configure: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) > /dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Property tests with random seeds and FUZZ_CASES cases per property.
+fuzz: build
+	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
+
+bench: build
+	$(BIN)/bench_geometry
+
+# 'repro' builds the tools, then a sub-make rebuilds only the figures whose
+# driver binary, data or script changed (one rule per figure below).
+repro: build
+	@$(MAKE) --no-print-directory figures report
+
+clean:
+	rm -rf $(BUILD) $(OUT)
+
+# ---------------------------------------------------------------------------
+# Figures: one rule per data set and one per figure.
+# ---------------------------------------------------------------------------
+FIGS :=
+include repro/figures.mk
+
+figures: $(FIGS)
+
+report: $(OUT)/report.md
+$(OUT)/report.md: figures/report.py $(wildcard $(OUT)/claims/*.csv) $(FIGS)
+	$(PY) figures/report.py $(OUT)/claims $@
+	@echo "== report: $@"

@@ -1,0 +1,50 @@
+// Overlap examination with the entrance block (Paper A Sect. 3.1.2, Eq. 9)
+// and the intersection polygon by cutting (Sect. 3.1.3).
+#pragma once
+#include "dda/polygon.hpp"
+
+namespace dda {
+
+// Where an edge of the entrance block comes from: the Minkowski sum B - A has
+// exactly two kinds of edges, an edge of B translated by a vertex of -A, or an
+// edge of -A translated by a vertex of B (the vertex-edge pairs of Table 1).
+struct EntranceEdgeSource {
+  bool from_b = true;  // true: edge `edge` of B at vertex `vertex` of A
+  int edge = -1;       // index into B (from_b) or into A (!from_b)
+  int vertex = -1;     // index into A (from_b) or into B (!from_b)
+};
+
+struct EntranceBlock {
+  Polygon poly;  // E(A, B) = B - A + a0, CCW
+  std::array<EntranceEdgeSource, kMaxVertices> source{};  // source of edge i
+};
+
+// Builds E(A,B) = B - A + a0 in O(n + m): both polygons are walked from their
+// lowest vertex and the edges of B and of -A are merged by the angle of their
+// outward normals. Only vertex-edge pairs whose vertex is extreme along the
+// edge's normal appear, which is the pair-skipping rule of Table 1. Exactly
+// parallel edges of B and -A merge into one edge; nearly parallel ones give a
+// very short edge whose normal is still exact (taken from its source edge).
+EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0);
+
+enum class OverlapState { kSeparate, kTouching, kOverlapping };
+
+// A and B overlap iff a0 lies inside E(A,B) (Table 2). a0 on E's boundary
+// (within tol) is touching: boundaries meet, interiors do not. tol < 0 means
+// the geometric tolerance of the two inputs.
+OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol = -1.0);
+inline bool overlaps(const Polygon& a, const Polygon& b) {
+  return overlap_state(a, b) == OverlapState::kOverlapping;
+}
+
+// The intersection polygon (IP): the target polygon cut by the line of each
+// edge of the contact polygon, keeping the inner half-plane each time (Table 3).
+// Vertices within tol of a cutting line are taken as on it, so a line through
+// a vertex or along an edge makes no duplicate vertex or zero-length edge.
+// Returns an empty polygon (count 0) when the interiors do not overlap.
+Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol = -1.0);
+
+// Tolerance used for a pair: the larger of the two polygons' tolerances.
+double pair_tolerance(const Polygon& a, const Polygon& b);
+
+}  // namespace dda

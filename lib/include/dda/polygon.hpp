@@ -1,0 +1,124 @@
+// Convex polygon value type and its pure free functions: validation, area
+// moments (for the DDA mass matrix, Paper A Eq. 5a), bounds, point location,
+// and cutting by a line. Nothing here allocates.
+#pragma once
+#include <array>
+#include <cfloat>
+#include "dda/vec2.hpp"
+
+namespace dda {
+
+// Capacity of a Polygon. An intersection polygon or an entrance block of two
+// blocks has at most n + m vertices, so blocks are limited to half of it.
+inline constexpr int kMaxVertices = 32;
+inline constexpr int kMaxBlockVertices = kMaxVertices / 2;
+
+// Round-off budget for geometric predicates, in units of machine epsilon times
+// the coordinate magnitude: the absolute error of a difference of coordinates
+// of size X is about eps*X, and a predicate chains a few dozen such operations.
+inline constexpr double kRoundoffUlps = 64.0;
+
+// Sine of the smallest turn accepted between consecutive edges of a block
+// (dimensionless, ~1e-9 rad): below it, three vertices are taken as collinear.
+// Far below the paper's smallest angle (5 deg) and our tested 0.5 deg.
+inline constexpr double kCollinearSin = 1e-9;
+
+// Smallest edge accepted in a block, relative to the block's diameter:
+// shorter edges are duplicate vertices. 1e-6 is tested; 1e-9 leaves margin
+// above round-off at coordinate offsets of 1e6.
+inline constexpr double kMinEdgeRelative = 1e-9;
+
+// A convex polygon: CCW vertices and outward unit normals; n[i] is the normal
+// of edge i, which runs from v[i] to v[(i+1) % count].
+struct Polygon {
+  std::array<Vec2, kMaxVertices> v{};
+  std::array<Vec2, kMaxVertices> n{};
+  int count = 0;
+
+  Vec2 vertex(int i) const { return v[static_cast<std::size_t>(i)]; }
+  Vec2 normal(int i) const { return n[static_cast<std::size_t>(i)]; }
+  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
+  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
+  Vec2 edge(int i) const { return vertex(next(i)) - vertex(i); }
+  bool empty() const { return count < 3; }
+};
+
+// Builds a polygon from CCW points and computes its normals. Does not check:
+// call validate_polygon first on untrusted input. count is clamped to capacity.
+Polygon make_polygon(const Vec2* points, int count);
+// Recomputes the outward unit normals from the vertices (after a move).
+void update_normals(Polygon& poly);
+
+enum class PolygonFault {
+  kNone,
+  kTooFewVertices,   // fewer than 3
+  kTooManyVertices,  // more than kMaxBlockVertices
+  kNonFinite,        // NaN or infinite coordinate
+  kDuplicateVertex,  // an edge shorter than kMinEdgeRelative * diameter
+  kCollinear,        // a turn smaller than kCollinearSin
+  kClockwise,        // every turn is to the right
+  kNonConvex,        // turns both ways, or turns left but winds more than once
+};
+
+struct PolygonCheck {
+  PolygonFault fault = PolygonFault::kNone;
+  int vertex = -1;  // 0-based index of the offending vertex, -1 if none
+  bool ok() const { return fault == PolygonFault::kNone; }
+};
+
+// Checks that points form a block polygon this library accepts.
+PolygonCheck validate_polygon(const Vec2* points, int count);
+// A short human-readable reason for a fault ("clockwise vertex order", ...).
+const char* describe(PolygonFault fault);
+
+// Area moments about the centroid: S = area, Sxx = int (x-xc)^2 dS,
+// Syy = int (y-yc)^2 dS, Sxy = int (x-xc)(y-yc) dS.
+struct AreaMoments {
+  double area = 0.0;
+  Vec2 centroid{};
+  double sxx = 0.0, syy = 0.0, sxy = 0.0;
+};
+AreaMoments area_moments(const Polygon& poly);
+double area(const Polygon& poly);
+Vec2 centroid(const Polygon& poly);
+
+struct Aabb {
+  Vec2 lo{DBL_MAX, DBL_MAX};
+  Vec2 hi{-DBL_MAX, -DBL_MAX};
+};
+Aabb bounds(const Polygon& poly);
+inline bool aabb_overlap(const Aabb& a, const Aabb& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+double diameter(const Polygon& poly);
+double min_edge_length(const Polygon& poly);
+double max_edge_length(const Polygon& poly);
+double perimeter(const Polygon& poly);
+
+// Absolute tolerance for predicates on this polygon: kRoundoffUlps * eps times
+// (largest |coordinate| + diameter). Scales with offsets and with size.
+double geometric_tolerance(const Polygon& poly);
+
+enum class PointLocation { kInside, kOnBoundary, kOutside };
+
+// Point in convex polygon. With d = max_i n_i.(p - v_i) the signed distance
+// to the farthest-out edge line: d < -tol inside, d > tol outside, else on
+// the boundary. tol < 0 means geometric_tolerance(poly).
+PointLocation locate_point(const Polygon& poly, Vec2 p, double tol = -1.0);
+
+// Cuts a convex polygon by the line through `point` with unit normal `normal`.
+// `below` gets the part with normal.(x - point) <= 0, `above` the rest; either
+// may come back empty (count 0). Vertices within tol of the line are shared.
+void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above,
+                   double tol = -1.0);
+
+// Removes repeated vertices (closer than tol) and vertices whose turn is
+// within tol of straight; recomputes normals; empties a polygon left with
+// fewer than 3 vertices or no area. Used on clipper and Minkowski output.
+void clean_polygon(Polygon& poly, double tol);
+
+// Rigid motion helpers (used by tests and scene set-up).
+Polygon translated(const Polygon& poly, Vec2 t);
+Polygon rotated(const Polygon& poly, double angle, Vec2 about);
+
+}  // namespace dda

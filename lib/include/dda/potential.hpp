@@ -1,0 +1,49 @@
+// The shortest-exit contact potential of Paper A Sect. 3.2.2 (Eqs. 12-14) and
+// the geometry its integration needs (Sect. 3.2.3): angle-bisector rays from
+// the vertices and virtual nodes of small edges, and the inscribed-circle
+// radius used as the 'previous' per-polygon H.
+#pragma once
+#include "dda/polygon.hpp"
+
+namespace dda {
+
+// d_exit(p) = min_i n_i . (v_i - p)  (Eqs. 13-14): the shortest distance for
+// p to leave the polygon; positive inside, negative outside.
+double exit_distance(const Polygon& poly, Vec2 p);
+
+// phi(p) = kn * d_exit(p) / H inside the polygon, 0 outside (Eq. 12).
+inline double potential(const Polygon& poly, Vec2 p, double kn, double h) {
+  const double d = exit_distance(poly, p);
+  return d > 0.0 ? kn * d / h : 0.0;
+}
+
+// Gradient of phi at p: -kn/H times the normal of the nearest edge (inside).
+Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h);
+
+// Radius and centre of the largest inscribed circle: the maximum of d_exit,
+// a small linear programme solved exactly by enumerating triples of edge
+// lines (O(n^4) but n <= 16 and it runs once per block or per H update).
+struct InscribedCircle {
+  Vec2 centre{};
+  double radius = 0.0;
+};
+InscribedCircle inscribed_circle(const Polygon& poly);
+
+// A ray from `origin` along unit `dir` into the polygon.
+struct Ray {
+  Vec2 origin{};
+  Vec2 dir{};
+};
+
+// Angle-bisector rays of Sect. 3.2.3. From every vertex, the inward bisector
+// of its angle. An edge shorter than `small_edge` has its two vertex rays
+// replaced by one ray from a virtual node: the crossing of the two vertex
+// bisectors, pointing along the bisector of the two neighbouring edges (the
+// direction in which the potential stays equidistant from them). Returns the
+// number of rays written to `out` (at most poly.count).
+int bisector_rays(const Polygon& poly, double small_edge, Ray* out);
+
+// Parameter t in [0, 1] where segment a->b meets the ray, or -1 if it does not.
+double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray);
+
+}  // namespace dda

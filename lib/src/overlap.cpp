@@ -1,0 +1,122 @@
+#include "dda/overlap.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dda {
+
+namespace {
+
+// Index of the lowest vertex (smallest y, then smallest x): the edge walk
+// starts there so that edge normals sweep angles in increasing order from -pi/2.
+int lowest_vertex(const Polygon& p, double sign) {
+  int best = 0;
+  for (int i = 1; i < p.count; ++i) {
+    const Vec2 q = sign * p.vertex(i), r = sign * p.vertex(best);
+    if (q.y < r.y || (q.y == r.y && q.x < r.x)) best = i;
+  }
+  return best;
+}
+
+// Monotone stand-in for atan2 in [0, 4): the "diamond angle" of direction d.
+// Exact for comparisons of exactly parallel directions, and cheap.
+double pseudo_angle(Vec2 d) {
+  if (d.y >= 0.0) return d.x >= 0.0 ? d.y / (d.x + d.y) : 1.0 - d.x / (-d.x + d.y);
+  return d.x < 0.0 ? 2.0 - d.y / (-d.x - d.y) : 3.0 + d.x / (d.x - d.y);
+}
+
+}  // namespace
+
+double pair_tolerance(const Polygon& a, const Polygon& b) {
+  return std::max(geometric_tolerance(a), geometric_tolerance(b));
+}
+
+EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0) {
+  // -A has vertices -a_i in the same (CCW) order; its edge i is -(edge i of A).
+  EntranceBlock e;
+  const int n = a.count, m = b.count;
+  const int ia0 = lowest_vertex(a, -1.0);  // lowest vertex of -A
+  const int jb0 = lowest_vertex(b, 1.0);
+  int i = 0, j = 0, k = 0;
+  while ((i < n || j < m) && k < kMaxVertices) {
+    const int ia = (ia0 + i) % n, jb = (jb0 + j) % m;
+    e.poly.v[k] = b.vertex(jb) - a.vertex(ia) + a0;
+    const Vec2 ea = -a.edge(ia);  // edge of -A leaving vertex -a_ia
+    const Vec2 eb = b.edge(jb);
+    // Merge by edge direction: from the lowest vertex each polygon's edge
+    // directions increase monotonically through [0, 2 pi), so the edge with
+    // the smaller angle comes first. With one polygon exhausted the other
+    // finishes. c > 0: take the edge of -A; c < 0: of B; c == 0: both.
+    double c = 0.0;
+    if (i == n) c = -1.0;
+    else if (j == m) c = 1.0;
+    else c = pseudo_angle(eb) - pseudo_angle(ea);
+    // The edge normal comes from its source edge, not from the vertex
+    // difference, so a near-zero edge of E (nearly parallel edges of A and B)
+    // still has an exact outward normal and the inside test stays robust.
+    if (c > 0.0) {
+      e.source[k] = {false, ia, jb};
+      e.poly.n[k] = -a.normal(ia);
+      ++i;
+    } else {
+      e.source[k] = {true, jb, ia};
+      e.poly.n[k] = b.normal(jb);
+      ++j;
+      if (c == 0.0) ++i;  // exactly parallel: one merged edge
+    }
+    ++k;
+  }
+  e.poly.count = k;
+  return e;
+}
+
+OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
+  if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
+  if (tol < 0.0) tol = pair_tolerance(a, b);
+  // a0: any point of A works; its centroid (Paper A) keeps E near the origin
+  // scale of the inputs. Computed cheaply as the vertex mean (inside A).
+  Vec2 a0{};
+  for (int i = 0; i < a.count; ++i) a0 += a.vertex(i);
+  a0 = a0 / static_cast<double>(a.count);
+  const EntranceBlock e = entrance_block(a, b, a0);
+  switch (locate_point(e.poly, a0, tol)) {
+    case PointLocation::kInside: return OverlapState::kOverlapping;
+    case PointLocation::kOnBoundary: return OverlapState::kTouching;
+    case PointLocation::kOutside: return OverlapState::kSeparate;
+  }
+  return OverlapState::kSeparate;
+}
+
+Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol) {
+  if (tol < 0.0) tol = pair_tolerance(contact, target);
+  // Two buffers, ping-ponged: each cut of a convex polygon by a half-plane
+  // adds at most one vertex, so n + m fits in kMaxVertices.
+  Polygon buf[2];
+  buf[0] = target;
+  int cur = 0;
+  for (int c = 0; c < contact.count && buf[cur].count >= 3; ++c) {
+    const Polygon& in = buf[cur];
+    Polygon& out = buf[1 - cur];
+    out.count = 0;
+    const Vec2 nc = contact.normal(c);
+    const Vec2 pc = contact.vertex(c);
+    for (int i = 0; i < in.count; ++i) {
+      const Vec2 p = in.vertex(i);
+      const Vec2 q = in.vertex(in.next(i));
+      double dp = dot(nc, p - pc);
+      double dq = dot(nc, q - pc);
+      if (std::fabs(dp) <= tol) dp = 0.0;
+      if (std::fabs(dq) <= tol) dq = 0.0;
+      if (dp <= 0.0 && out.count < kMaxVertices) out.v[out.count++] = p;
+      if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && out.count < kMaxVertices)
+        out.v[out.count++] = lerp(p, q, dp / (dp - dq));
+    }
+    if (out.count < 3) out.count = 0;
+    cur = 1 - cur;
+  }
+  Polygon& ip = buf[cur];
+  clean_polygon(ip, tol);
+  return ip;
+}
+
+}  // namespace dda

@@ -1,0 +1,251 @@
+#include "dda/polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dda {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+// Total turning of a simple convex polygon is 2*pi; a star that winds twice
+// turns 4*pi. Half a turn of slack separates the two cases robustly.
+constexpr double kWindingSlack = kPi;
+}  // namespace
+
+Polygon make_polygon(const Vec2* points, int count) {
+  Polygon poly;
+  poly.count = std::min(std::max(count, 0), kMaxVertices);
+  for (int i = 0; i < poly.count; ++i) poly.v[static_cast<std::size_t>(i)] = points[i];
+  update_normals(poly);
+  return poly;
+}
+
+void update_normals(Polygon& poly) {
+  for (int i = 0; i < poly.count; ++i)
+    poly.n[static_cast<std::size_t>(i)] = normalized(perp_right(poly.edge(i)));
+}
+
+const char* describe(PolygonFault fault) {
+  switch (fault) {
+    case PolygonFault::kNone: return "valid";
+    case PolygonFault::kTooFewVertices: return "fewer than 3 vertices";
+    case PolygonFault::kTooManyVertices: return "more than 16 vertices";
+    case PolygonFault::kNonFinite: return "non-finite coordinate (NaN or infinity)";
+    case PolygonFault::kDuplicateVertex: return "duplicate vertex (zero-length edge)";
+    case PolygonFault::kCollinear: return "three collinear vertices";
+    case PolygonFault::kClockwise: return "clockwise vertex order (counter-clockwise required)";
+    case PolygonFault::kNonConvex: return "polygon is not convex";
+  }
+  return "unknown fault";
+}
+
+PolygonCheck validate_polygon(const Vec2* p, int count) {
+  if (count < 3) return {PolygonFault::kTooFewVertices, -1};
+  if (count > kMaxBlockVertices) return {PolygonFault::kTooManyVertices, -1};
+  for (int i = 0; i < count; ++i)
+    if (!is_finite(p[i])) return {PolygonFault::kNonFinite, i};
+
+  double diam = 0.0;
+  for (int i = 0; i < count; ++i)
+    for (int j = i + 1; j < count; ++j) diam = std::max(diam, distance(p[i], p[j]));
+  for (int i = 0; i < count; ++i) {
+    const Vec2 e = p[(i + 1) % count] - p[i];
+    if (length(e) <= kMinEdgeRelative * diam) return {PolygonFault::kDuplicateVertex, (i + 1) % count};
+  }
+
+  // Classify every turn; record the first of each sign.
+  int first_left = -1, first_right = -1, first_straight = -1;
+  double turning = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const Vec2 a = p[i] - p[(i + count - 1) % count];
+    const Vec2 b = p[(i + 1) % count] - p[i];
+    const double s = cross(a, b) / (length(a) * length(b));
+    turning += std::atan2(cross(a, b), dot(a, b));
+    if (s > kCollinearSin) {
+      if (first_left < 0) first_left = i;
+    } else if (s < -kCollinearSin) {
+      if (first_right < 0) first_right = i;
+    } else if (dot(a, b) < 0.0) {
+      // A 180-degree turn back along the same line: a spike, not a straight run.
+      if (first_right < 0) first_right = i;
+    } else if (first_straight < 0) {
+      first_straight = i;
+    }
+  }
+  if (first_left < 0 && first_right >= 0 && first_straight < 0) return {PolygonFault::kClockwise, first_right};
+  if (first_left >= 0 && first_right >= 0) {
+    // Mostly right turns: report the clockwise order; else the concave vertex.
+    if (turning < 0.0) return {PolygonFault::kClockwise, first_left};
+    return {PolygonFault::kNonConvex, first_right};
+  }
+  if (first_straight >= 0) return {PolygonFault::kCollinear, first_straight};
+  if (turning > 2.0 * kPi + kWindingSlack) return {PolygonFault::kNonConvex, 0};
+  return {};
+}
+
+AreaMoments area_moments(const Polygon& poly) {
+  // Green's theorem on edges, in coordinates relative to v[0] so that large
+  // offsets do not cancel catastrophically. For edge (a, b), c = a x b:
+  //   S   += c / 2,  Sx += c (ax + bx) / 6,  Sy += c (ay + by) / 6,
+  //   Sxx += c (ax^2 + ax bx + bx^2) / 12,  Syy likewise,
+  //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
+  AreaMoments m;
+  if (poly.count < 3) return m;
+  const Vec2 o = poly.v[0];
+  double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 a = poly.vertex(i) - o;
+    const Vec2 b = poly.vertex(poly.next(i)) - o;
+    const double c = cross(a, b);
+    s += c;
+    sx += c * (a.x + b.x);
+    sy += c * (a.y + b.y);
+    sxx += c * (a.x * a.x + a.x * b.x + b.x * b.x);
+    syy += c * (a.y * a.y + a.y * b.y + b.y * b.y);
+    sxy += c * (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y);
+  }
+  s *= 0.5;
+  sx /= 6.0;
+  sy /= 6.0;
+  sxx /= 12.0;
+  syy /= 12.0;
+  sxy /= 24.0;
+  m.area = s;
+  if (s == 0.0) return m;
+  const Vec2 c{sx / s, sy / s};
+  m.centroid = o + c;
+  m.sxx = sxx - s * c.x * c.x;
+  m.syy = syy - s * c.y * c.y;
+  m.sxy = sxy - s * c.x * c.y;
+  return m;
+}
+
+double area(const Polygon& poly) {
+  if (poly.count < 3) return 0.0;
+  const Vec2 o = poly.v[0];
+  double s = 0.0;
+  for (int i = 1; i + 1 < poly.count; ++i) s += cross(poly.vertex(i) - o, poly.vertex(i + 1) - o);
+  return 0.5 * s;
+}
+
+Vec2 centroid(const Polygon& poly) { return area_moments(poly).centroid; }
+
+Aabb bounds(const Polygon& poly) {
+  Aabb b;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 p = poly.vertex(i);
+    b.lo.x = std::min(b.lo.x, p.x);
+    b.lo.y = std::min(b.lo.y, p.y);
+    b.hi.x = std::max(b.hi.x, p.x);
+    b.hi.y = std::max(b.hi.y, p.y);
+  }
+  return b;
+}
+
+double diameter(const Polygon& poly) {
+  double d = 0.0;
+  for (int i = 0; i < poly.count; ++i)
+    for (int j = i + 1; j < poly.count; ++j) d = std::max(d, distance(poly.vertex(i), poly.vertex(j)));
+  return d;
+}
+
+double min_edge_length(const Polygon& poly) {
+  double l = DBL_MAX;
+  for (int i = 0; i < poly.count; ++i) l = std::min(l, length(poly.edge(i)));
+  return l;
+}
+
+double max_edge_length(const Polygon& poly) {
+  double l = 0.0;
+  for (int i = 0; i < poly.count; ++i) l = std::max(l, length(poly.edge(i)));
+  return l;
+}
+
+double perimeter(const Polygon& poly) {
+  double l = 0.0;
+  for (int i = 0; i < poly.count; ++i) l += length(poly.edge(i));
+  return l;
+}
+
+double geometric_tolerance(const Polygon& poly) {
+  const Aabb b = bounds(poly);
+  const double coord = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
+  const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+  return kRoundoffUlps * DBL_EPSILON * (coord + size);
+}
+
+PointLocation locate_point(const Polygon& poly, Vec2 p, double tol) {
+  if (tol < 0.0) tol = geometric_tolerance(poly);
+  double d = -DBL_MAX;
+  for (int i = 0; i < poly.count; ++i) d = std::max(d, dot(poly.normal(i), p - poly.vertex(i)));
+  if (d < -tol) return PointLocation::kInside;
+  if (d > tol) return PointLocation::kOutside;
+  return PointLocation::kOnBoundary;
+}
+
+void clean_polygon(Polygon& poly, double tol) {
+  bool changed = true;
+  while (changed && poly.count >= 3) {
+    changed = false;
+    for (int i = 0; i < poly.count && poly.count >= 3; ++i) {
+      const Vec2 a = poly.vertex(poly.prev(i));
+      const Vec2 b = poly.vertex(i);
+      const Vec2 c = poly.vertex(poly.next(i));
+      const Vec2 ac = c - a;
+      const double lac = length(ac);
+      // Repeated vertex, or b within tol of the chord a-c (straight or spike).
+      const bool repeated = distance(a, b) <= tol;
+      const bool straight = lac > tol ? std::fabs(cross(ac, b - a)) / lac <= tol : true;
+      if (repeated || straight) {
+        for (int j = i; j + 1 < poly.count; ++j) poly.v[static_cast<std::size_t>(j)] = poly.v[static_cast<std::size_t>(j + 1)];
+        --poly.count;
+        changed = true;
+        --i;
+      }
+    }
+  }
+  if (poly.count < 3) {
+    poly.count = 0;
+    return;
+  }
+  update_normals(poly);
+}
+
+void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above, double tol) {
+  if (tol < 0.0) tol = geometric_tolerance(poly);
+  below.count = 0;
+  above.count = 0;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 a = poly.vertex(i);
+    const Vec2 b = poly.vertex(poly.next(i));
+    double da = dot(normal, a - point);
+    double db = dot(normal, b - point);
+    if (std::fabs(da) <= tol) da = 0.0;
+    if (std::fabs(db) <= tol) db = 0.0;
+    if (da <= 0.0 && below.count < kMaxVertices) below.v[static_cast<std::size_t>(below.count++)] = a;
+    if (da >= 0.0 && above.count < kMaxVertices) above.v[static_cast<std::size_t>(above.count++)] = a;
+    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) {
+      const Vec2 x = lerp(a, b, da / (da - db));
+      if (below.count < kMaxVertices) below.v[static_cast<std::size_t>(below.count++)] = x;
+      if (above.count < kMaxVertices) above.v[static_cast<std::size_t>(above.count++)] = x;
+    }
+  }
+  clean_polygon(below, tol);
+  clean_polygon(above, tol);
+}
+
+Polygon translated(const Polygon& poly, Vec2 t) {
+  Polygon out = poly;
+  for (int i = 0; i < out.count; ++i) out.v[static_cast<std::size_t>(i)] += t;
+  return out;
+}
+
+Polygon rotated(const Polygon& poly, double angle, Vec2 about) {
+  Polygon out = poly;
+  for (int i = 0; i < out.count; ++i)
+    out.v[static_cast<std::size_t>(i)] = about + rotate(poly.vertex(i) - about, angle);
+  update_normals(out);
+  return out;
+}
+
+}  // namespace dda

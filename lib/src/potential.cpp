@@ -1,0 +1,93 @@
+#include "dda/potential.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dda {
+
+double exit_distance(const Polygon& poly, Vec2 p) {
+  double d = DBL_MAX;
+  for (int i = 0; i < poly.count; ++i) d = std::min(d, dot(poly.normal(i), poly.vertex(i) - p));
+  return d;
+}
+
+Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
+  double d = DBL_MAX;
+  int best = -1;
+  for (int i = 0; i < poly.count; ++i) {
+    const double di = dot(poly.normal(i), poly.vertex(i) - p);
+    if (di < d) {
+      d = di;
+      best = i;
+    }
+  }
+  if (best < 0 || d <= 0.0) return {};
+  return -(kn / h) * poly.normal(best);
+}
+
+InscribedCircle inscribed_circle(const Polygon& poly) {
+  // Maximise r subject to n_i . (v_i - c) >= r for all i. The optimum is a
+  // vertex of the feasible set in (c, r) space: three constraints tight.
+  InscribedCircle best;
+  const int n = poly.count;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      for (int k = j + 1; k < n; ++k) {
+        // Rows: n_x c_x + n_y c_y + r = n . v  for edges i, j, k.
+        const Vec2 ni = poly.normal(i), nj = poly.normal(j), nk = poly.normal(k);
+        const double bi = dot(ni, poly.vertex(i)), bj = dot(nj, poly.vertex(j)), bk = dot(nk, poly.vertex(k));
+        const double det = ni.x * (nj.y - nk.y) - ni.y * (nj.x - nk.x) + (nj.x * nk.y - nj.y * nk.x);
+        if (std::fabs(det) < 1e-12) continue;  // two parallel lines met twice: no vertex
+        // Cramer's rule on [nx ny 1 | b].
+        const double dx = bi * (nj.y - nk.y) - ni.y * (bj - bk) + (bj * nk.y - nj.y * bk);
+        const double dy = ni.x * (bj - bk) - bi * (nj.x - nk.x) + (nj.x * bk - bj * nk.x);
+        const double dr = ni.x * (nj.y * bk - bj * nk.y) - ni.y * (nj.x * bk - bj * nk.x) + bi * (nj.x * nk.y - nj.y * nk.x);
+        const Vec2 c{dx / det, dy / det};
+        const double r = dr / det;
+        if (r <= best.radius) continue;
+        // Feasible only if no other edge is closer than r.
+        if (exit_distance(poly, c) >= r * (1.0 - 1e-12)) best = {c, r};
+      }
+  return best;
+}
+
+int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
+  const int n = poly.count;
+  int count = 0;
+  // Inward bisector at vertex i, between edges i-1 and i.
+  auto vertex_dir = [&](int i) { return normalized(-(poly.normal(poly.prev(i)) + poly.normal(i))); };
+  std::array<bool, kMaxVertices> replaced{};
+  for (int e = 0; e < n; ++e) {
+    if (length(poly.edge(e)) >= small_edge) continue;
+    const int a = e, b = poly.next(e);
+    if (replaced[a] || replaced[b]) continue;  // consecutive small edges: first one wins
+    // Virtual node: crossing of the bisectors from v_a and v_b. By symmetry
+    // of the construction it lies on the line equidistant from edges e-1 and
+    // e+1 at distance (|e| / 2) / tan-ish from the edge; solve the 2x2 system.
+    const Vec2 pa = poly.vertex(a), pb = poly.vertex(b);
+    const Vec2 da = vertex_dir(a), db = vertex_dir(b);
+    const double den = cross(da, db);
+    if (std::fabs(den) < 1e-14) continue;  // parallel bisectors (cannot happen when convex)
+    const double s = cross(pb - pa, db) / den;
+    const Vec2 node = pa + s * da;
+    const Vec2 dir = normalized(-(poly.normal(poly.prev(a)) + poly.normal(b)));
+    replaced[a] = replaced[b] = true;
+    out[count++] = {node, dir};
+  }
+  for (int i = 0; i < n; ++i)
+    if (!replaced[i]) out[count++] = {poly.vertex(i), vertex_dir(i)};
+  return count;
+}
+
+double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray) {
+  // a + t (b - a) = o + s d  ->  t = cross(o - a, d) / cross(b - a, d).
+  const Vec2 ab = b - a;
+  const double den = cross(ab, ray.dir);
+  if (den == 0.0) return -1.0;
+  const double t = cross(ray.origin - a, ray.dir) / den;
+  const double s = cross(ray.origin - a, ab) / den;
+  if (t < 0.0 || t > 1.0 || s < 0.0) return -1.0;
+  return t;
+}
+
+}  // namespace dda

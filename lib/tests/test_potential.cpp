@@ -1,0 +1,54 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "dda/potential.hpp"
+
+using namespace dda;
+
+namespace {
+Polygon rect(double x0, double y0, double w, double h) {
+  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
+  return make_polygon(p, 4);
+}
+}  // namespace
+
+TEST_CASE("exit distance and potential of a rectangle", "[potential]") {
+  const Polygon r = rect(0, 0, 4, 2);
+  CHECK(exit_distance(r, {1, 1}) == Approx(1.0));
+  CHECK(exit_distance(r, {0.25, 1}) == Approx(0.25));
+  CHECK(potential(r, {0.25, 1}, 10.0, 2.0) == Approx(1.25));
+  CHECK(potential(r, {-1, 1}, 10.0, 2.0) == 0.0);
+  const Vec2 g = potential_gradient(r, {0.25, 1}, 10.0, 2.0);
+  CHECK(g.x == Approx(5.0));  // pointing inward from the left edge
+  CHECK(g.y == Approx(0.0).margin(1e-15));
+}
+
+TEST_CASE("inscribed circle of a rectangle, triangle and square", "[potential]") {
+  CHECK(inscribed_circle(rect(0, 0, 4, 2)).radius == Approx(1.0));
+  const Vec2 t[3] = {{0, 0}, {3, 0}, {0, 4}};  // 3-4-5: r = (a + b - c) / 2 = 1
+  const InscribedCircle c = inscribed_circle(make_polygon(t, 3));
+  CHECK(c.radius == Approx(1.0));
+  CHECK(c.centre.x == Approx(1.0));
+  CHECK(c.centre.y == Approx(1.0));
+  CHECK(inscribed_circle(rect(5, 5, 1, 1)).radius == Approx(0.5));
+}
+
+TEST_CASE("bisector rays and the virtual node of a small edge", "[potential]") {
+  Ray rays[kMaxVertices];
+  const Polygon sq = rect(0, 0, 1, 1);
+  REQUIRE(bisector_rays(sq, 1e-3, rays) == 4);
+  CHECK(rays[0].dir.x == Approx(std::sqrt(0.5)));
+  CHECK(rays[0].dir.y == Approx(std::sqrt(0.5)));
+  // A square with its top-right corner cut by a 0.01 edge at 45 degrees.
+  const double c = 0.01 / std::sqrt(2.0);
+  const Vec2 p[5] = {{0, 0}, {1, 0}, {1, 1 - c}, {1 - c, 1}, {0, 1}};
+  const Polygon cut = make_polygon(p, 5);
+  const int n = bisector_rays(cut, 0.05, rays);
+  REQUIRE(n == 4);
+  // The virtual node lies on the diagonal, its ray points to the centre.
+  CHECK(rays[0].origin.x == Approx(rays[0].origin.y));
+  CHECK(rays[0].dir.x == Approx(-std::sqrt(0.5)));
+  CHECK(rays[0].dir.y == Approx(-std::sqrt(0.5)));
+  CHECK(segment_ray_crossing({0, 0.5}, {1, 0.5}, rays[0]) == Approx(0.5));
+}
