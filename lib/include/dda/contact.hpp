@@ -1,0 +1,58 @@
+// Contact force between two overlapping convex polygons: Paper A Sect. 3.2.
+// Pure functions; nothing here allocates.
+#pragma once
+#include "dda/overlap.hpp"
+#include "dda/potential.hpp"
+
+namespace dda {
+
+// How the boundary integral of Eq. 11 is split into linear pieces.
+enum class Integration {
+  // Paper A Sect. 3.2.3 as written: each IP edge is split at its start, end
+  // and midpoint and where it crosses the angle-bisector rays of CP and TP
+  // (virtual nodes for small edges); the trapezoid rule of Eq. 16 is exact
+  // only if those are all the kinks of phi along the edge.
+  kPaperBisector,
+  // Exact for the min-of-linear potential: each IP edge is split at the true
+  // breakpoints of the lower envelope of the per-edge distance functions.
+  kExactEnvelope,
+};
+
+// One polygon's side of the potential: phi = kn / H * max(0, d_exit).
+struct PotentialSide {
+  const Polygon* poly = nullptr;
+  double kn_over_h = 0.0;   // kn / H, Pa / m
+  double small_edge = 0.0;  // edges shorter than this get a virtual node, m
+};
+
+// Global normal force on CP (f_TP = -force) and where it acts.
+struct NormalForce {
+  Vec2 force{};          // f_ng_CP, Eq. 18, N (per unit thickness)
+  Vec2 point{};          // loading point pg (Eq. 20 and the auxiliary line)
+  Vec2 ip_centroid{};    // centroid of the intersection polygon
+  double ip_area = 0.0;  // m^2
+  int segments = 0;      // integration segments used
+  bool valid = false;    // false when the net force vanishes
+};
+
+// Integrates Eq. 11 over the boundary of ip = CP n TP, segment by segment
+// with Eqs. 16-17, and finds the loading point: the acting line is where the
+// moment of the segment forces vanishes (Eq. 20); pg is its crossing with the
+// perpendicular through the IP centroid. tol: geometric tolerance of the pair.
+NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
+                                 Integration rule, double tol);
+
+// Contact (penalty) energy stored in the overlap: the integral over IP of
+// phi_CP + phi_TP, exact (IP is cut into the cells where one edge of each
+// polygon is nearest, on which the integrand is linear). Its negative
+// gradient with respect to the relative position is the force of Eq. 10.
+double contact_energy(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol);
+
+// Integral over `region` of kn/H * d_exit of `side` (region inside side.poly).
+double potential_integral(const PotentialSide& side, const Polygon& region, double tol);
+
+// Keeps the part of `poly` with normal.x <= offset (a general half-plane cut,
+// in place). Vertices within tol of the line are taken as on it.
+void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol);
+
+}  // namespace dda

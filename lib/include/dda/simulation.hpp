@@ -1,0 +1,135 @@
+// Explicit DDA time stepping (Paper A Sect. 2.3, Eqs. 6-8) with the
+// potential-based contact of Sect. 3. The library does no I/O: callers read
+// state through the accessors and write it where they like.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dda/block.hpp"
+#include "dda/scene.hpp"
+
+namespace dda {
+
+// A scene that cannot be simulated; what() names the field and the reason,
+// e.g. "blocks[2].vertices[1]: clockwise vertex order".
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A run that went wrong (non-finite state, a collapsed block); what() says
+// the step, the time, the block and what was exceeded.
+struct SimulationError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws SceneError for the first problem found in the scene.
+void check_scene(const Scene& scene);
+
+struct Energy {
+  double kinetic = 0.0;
+  double gravity = 0.0;  // -sum m g.x_c, relative to the origin
+  double strain = 0.0;
+  double contact = 0.0;  // penalty energy stored in overlaps
+  double total() const { return kinetic + gravity + strain + contact; }
+};
+
+// A contact as seen in the last force evaluation.
+struct ContactInfo {
+  int cp = -1, tp = -1;  // block indices: contact and target polygon
+  Vec2 normal_force{};   // on CP, N
+  Vec2 tangential_force{};
+  Vec2 point{};          // loading point pg
+  double ip_area = 0.0;
+  bool sliding = false;
+};
+
+class Simulation {
+ public:
+  explicit Simulation(const Scene& scene);
+
+  // One explicit step (velocity Verlet, Eqs. 7-8). Throws SimulationError.
+  void step();
+  // Steps until time() >= t (within half a step).
+  void advance_to(double t);
+
+  double time() const { return time_; }
+  std::int64_t step_count() const { return steps_; }
+  double dt() const { return dt_; }
+  const Scene& scene() const { return scene_; }
+
+  int block_count() const { return static_cast<int>(poly_.size()); }
+  // Blocks made from boundary segments come after the scene's blocks.
+  int scene_block_count() const { return scene_blocks_; }
+  const Polygon& polygon(int i) const { return poly_[i]; }
+  Vec2 centroid(int i) const { return moments_[i].centroid; }
+  double area(int i) const { return moments_[i].area; }
+  double mass(int i) const { return mass_[i]; }
+  bool fixed(int i) const { return fixed_[i]; }
+  // Velocity DOFs at the current time (synchronised, not half-step).
+  const Vec6& velocity(int i) const { return vel_[i]; }
+  // Total displacement DOFs accumulated since t = 0 (translation and
+  // rotation are meaningful; strains are the accumulated small strains).
+  const Vec6& displacement(int i) const { return disp_[i]; }
+  const Vec3& stress(int i) const { return stress_[i]; }
+  // The H used for block i's potential.
+  double potential_length(int i) const { return h_[i]; }
+
+  Vec2 momentum() const;
+  Energy energy() const;  // recomputes contact energy: call at output time
+  const std::vector<ContactInfo>& contacts() const { return contact_info_; }
+
+ private:
+  // Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
+  struct PairHistory {
+    std::uint64_t key = 0;  // (cp << 32) | tp
+    Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
+    Vec2 slide_dir{};       // sliding direction s of the last sliding step
+    Vec2 point{};           // pg of the last force evaluation
+    bool sliding = false;
+  };
+
+  void build_blocks();
+  void choose_potential_length();
+  void kick_and_drift();
+  void update_contact_history();
+  void update_geometry();
+  void compute_forces();
+  void find_candidate_pairs();
+  void add_contact_force(int cp, int tp, PairHistory* history);
+  void kick();
+  void check_state() const;
+  double friction_tan(int a, int b) const;
+
+  Scene scene_;
+  double dt_ = 0.0;
+  double time_ = 0.0;
+  std::int64_t steps_ = 0;
+  int scene_blocks_ = 0;
+  bool strains_ = true;
+  bool friction_ = false;
+
+  // Hot state, one entry per block.
+  std::vector<Polygon> poly_;
+  std::vector<AreaMoments> moments_;
+  std::vector<Vec6> vel_, acc_, force_, step_disp_, disp_;
+  std::vector<Vec3> stress_;
+
+  // Per-block constants and bookkeeping.
+  std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
+  std::vector<Mat3> elastic_;
+  std::vector<char> fixed_;
+  std::vector<int> group_;
+  std::vector<double> friction_tan_table_;
+  int group_count_ = 1;
+
+  // Contacts.
+  std::vector<std::pair<int, int>> candidates_;
+  std::vector<PairHistory> history_, next_history_;
+  std::vector<ContactInfo> contact_info_;
+  std::vector<Aabb> boxes_;
+  std::vector<int> order_;
+};
+
+}  // namespace dda

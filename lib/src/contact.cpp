@@ -1,0 +1,175 @@
+#include "dda/contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dda {
+
+namespace {
+
+// Demarcation points on one IP edge, as parameters t in [0, 1].
+struct Breaks {
+  std::array<double, 4 * kMaxVertices + 8> t{};
+  int count = 0;
+  void add(double x) {
+    if (count < static_cast<int>(t.size()) && x >= 0.0 && x <= 1.0) t[count++] = x;
+  }
+};
+
+// Kinks of the lower envelope of d_i(t) = c_i + s_i t on (0, 1), where
+// d_i is the distance of a + t (b - a) inside edge line i of `poly`. Walks
+// the envelope from t = 0: at each step the next kink is the earliest
+// crossing with a line that falls faster than the current one.
+void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Breaks& out) {
+  const Vec2 ab = b - a;
+  std::array<double, kMaxVertices> c{}, s{};
+  for (int i = 0; i < poly.count; ++i) {
+    c[i] = dot(poly.normal(i), poly.vertex(i) - a);
+    s[i] = -dot(poly.normal(i), ab);
+  }
+  int cur = 0;
+  for (int i = 1; i < poly.count; ++i)
+    if (c[i] < c[cur] || (c[i] == c[cur] && s[i] < s[cur])) cur = i;
+  double t = 0.0;
+  for (int guard = 0; guard < poly.count; ++guard) {
+    int next = -1;
+    double tn = 1.0;
+    for (int j = 0; j < poly.count; ++j) {
+      if (s[j] >= s[cur]) continue;
+      const double tj = (c[j] - c[cur]) / (s[cur] - s[j]);
+      if (tj > t && tj < tn) {
+        tn = tj;
+        next = j;
+      }
+    }
+    if (next < 0) break;
+    out.add(tn);
+    t = tn;
+    cur = next;
+  }
+}
+
+void add_bisector_breaks(const Polygon& poly, double small_edge, Vec2 a, Vec2 b, Breaks& out) {
+  std::array<Ray, kMaxVertices> rays;
+  const int n = bisector_rays(poly, small_edge, rays.data());
+  for (int r = 0; r < n; ++r) out.add(segment_ray_crossing(a, b, rays[r]));
+}
+
+double side_potential(const PotentialSide& side, Vec2 p) {
+  const double d = exit_distance(*side.poly, p);
+  return d > 0.0 ? side.kn_over_h * d : 0.0;
+}
+
+}  // namespace
+
+NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
+                                 Integration rule, double tol) {
+  NormalForce out;
+  if (ip.count < 3) return out;
+  const AreaMoments am = area_moments(ip);
+  out.ip_area = am.area;
+  out.ip_centroid = am.centroid;
+  const Vec2 c = am.centroid;
+  Vec2 force{};
+  double moment = 0.0;  // about the IP centroid
+  for (int e = 0; e < ip.count; ++e) {
+    const Vec2 a = ip.vertex(e), b = ip.vertex(ip.next(e));
+    const Vec2 n = ip.normal(e);
+    const double len = length(b - a);
+    if (len <= tol) continue;
+    // Demarcation points (Sect. 3.2.3 steps 1-4).
+    Breaks br;
+    br.add(0.0);
+    br.add(0.5);
+    br.add(1.0);
+    const Vec2 mid = lerp(a, b, 0.5);
+    // An IP edge on the boundary of a polygon carries zero potential of it.
+    const bool on_cp = exit_distance(*cp.poly, mid) <= tol;
+    const bool on_tp = exit_distance(*tp.poly, mid) <= tol;
+    if (rule == Integration::kPaperBisector) {
+      if (!on_cp) add_bisector_breaks(*cp.poly, cp.small_edge, a, b, br);
+      if (!on_tp) add_bisector_breaks(*tp.poly, tp.small_edge, a, b, br);
+    } else {
+      if (!on_cp) add_envelope_breaks(*cp.poly, a, b, br);
+      if (!on_tp) add_envelope_breaks(*tp.poly, a, b, br);
+    }
+    std::sort(br.t.begin(), br.t.begin() + br.count);
+    // Eqs. 16-17 on each segment. The segment force L (fa + fb) / 2 acts at
+    // pk of Eq. 17; its moment about c is taken in the equivalent form
+    // L [(fa + fb) / 2 (pa - c) + (fa + 2 fb) / 6 (pb - pa)] x n, which is
+    // Eq. 17 times the force but stays finite when fa + fb = 0.
+    double t0 = br.t[0];
+    Vec2 pa = lerp(a, b, t0);
+    double fa = (on_cp ? 0.0 : side_potential(cp, pa)) - (on_tp ? 0.0 : side_potential(tp, pa));
+    for (int k = 1; k < br.count; ++k) {
+      const double t1 = br.t[k];
+      if (t1 - t0 <= 0.0) continue;
+      const Vec2 pb = lerp(a, b, t1);
+      const double fb = (on_cp ? 0.0 : side_potential(cp, pb)) - (on_tp ? 0.0 : side_potential(tp, pb));
+      const double l = len * (t1 - t0);
+      const double fs = 0.5 * l * (fa + fb);
+      force += fs * n;
+      const Vec2 arm = 0.5 * l * (fa + fb) * (pa - c) + (l * (fa + 2.0 * fb) / 6.0) * (pb - pa);
+      moment += cross(arm, n);
+      ++out.segments;
+      t0 = t1;
+      pa = pb;
+      fa = fb;
+    }
+  }
+  const double f2 = length_squared(force);
+  if (!(f2 > 0.0)) return out;
+  // Acting line: points p with (p - c) x f = moment. pg = c + lambda t with
+  // t = perp_left(f) / |f|, so lambda (t x f) = moment, t x f = -|f|.
+  const double fl = std::sqrt(f2);
+  const double lambda = -moment / fl;
+  out.force = force;
+  out.point = c + lambda * (perp_left(force) / fl);
+  out.valid = true;
+  return out;
+}
+
+void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol) {
+  Polygon out;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 p = poly.vertex(i), q = poly.vertex(poly.next(i));
+    double dp = dot(normal, p) - offset, dq = dot(normal, q) - offset;
+    if (std::fabs(dp) <= tol) dp = 0.0;
+    if (std::fabs(dq) <= tol) dq = 0.0;
+    if (dp <= 0.0 && out.count < kMaxVertices) out.v[out.count++] = p;
+    if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && out.count < kMaxVertices)
+      out.v[out.count++] = lerp(p, q, dp / (dp - dq));
+  }
+  out.count = out.count < 3 ? 0 : out.count;
+  poly = out;
+}
+
+double potential_integral(const PotentialSide& side, const Polygon& region, double tol) {
+  // Cell of edge i: where d_i <= d_j for all j, i.e. (n_j - n_i).x <=
+  // n_j.v_j - n_i.v_i. On it phi = kn/H d_i is linear, so its integral is
+  // area * phi(cell centroid).
+  const Polygon& p = *side.poly;
+  double total = 0.0;
+  for (int i = 0; i < p.count; ++i) {
+    Polygon cell = region;
+    const Vec2 ni = p.normal(i);
+    const double ci = dot(ni, p.vertex(i));
+    for (int j = 0; j < p.count && cell.count >= 3; ++j) {
+      if (j == i) continue;
+      const Vec2 nj = p.normal(j);
+      clip_half_plane(cell, nj - ni, dot(nj, p.vertex(j)) - ci, tol * 1e-3);
+    }
+    if (cell.count < 3) continue;
+    const AreaMoments m = area_moments(cell);
+    const double d = dot(ni, p.vertex(i) - m.centroid);
+    total += m.area * side.kn_over_h * std::max(d, 0.0);
+  }
+  return total;
+}
+
+double contact_energy(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol) {
+  if (ip.count < 3) return 0.0;
+  return potential_integral(cp, ip, tol) + potential_integral(tp, ip, tol);
+}
+
+}  // namespace dda

@@ -1,0 +1,457 @@
+#include "dda/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace dda {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string field(const char* name, std::size_t i) {
+  std::ostringstream s;
+  s << name << '[' << i << ']';
+  return s.str();
+}
+
+[[noreturn]] void fail(const std::string& where, const std::string& why) { throw SceneError(where + ": " + why); }
+
+bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
+
+// The virtual polygon behind a boundary segment: a rectangle on the
+// segment's right side (the solid side).
+std::vector<Vec2> segment_polygon(const BoundarySegment& s) {
+  const Vec2 ab = s.b - s.a;
+  const double depth = s.depth > 0.0 ? s.depth : length(ab);
+  const Vec2 out = normalized(perp_right(ab)) * depth;
+  return {s.a + out, s.b + out, s.b, s.a};
+}
+
+std::vector<int> sweep_pairs_order(const std::vector<Aabb>& boxes) {
+  std::vector<int> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return boxes[a].lo.x < boxes[b].lo.x; });
+  return order;
+}
+
+}  // namespace
+
+void check_scene(const Scene& scene) {
+  if (!positive_finite(scene.dt)) fail("dt", "must be a positive finite time step");
+  if (!(std::isfinite(scene.initial_overlap) && scene.initial_overlap >= 0.0))
+    fail("initial_overlap", "must be finite and >= 0");
+  if (!(std::isfinite(scene.duration) && scene.duration >= 0.0)) fail("duration", "must be finite and >= 0");
+  if (!is_finite(scene.gravity)) fail("gravity", "must be finite");
+  if (scene.materials.empty()) fail("materials", "at least one material is needed");
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    const std::string f = field("materials", i);
+    if (!positive_finite(m.density)) fail(f + ".density", "must be positive");
+    if (!positive_finite(m.young)) fail(f + ".young", "must be positive");
+    if (!(std::isfinite(m.poisson) && m.poisson > -1.0 && m.poisson < 0.5))
+      fail(f + ".poisson", "must lie in (-1, 0.5)");
+  }
+  const ContactParams& c = scene.contact;
+  if (!positive_finite(c.kn)) fail("contact.kn", "must be positive");
+  if (!(std::isfinite(c.kt) && c.kt >= 0.0)) fail("contact.kt", "must be >= 0 (0 switches friction off)");
+  auto check_angle = [](double deg, const std::string& where) {
+    if (!(std::isfinite(deg) && deg >= 0.0 && deg < 90.0)) fail(where, "friction angle must lie in [0, 90) degrees");
+  };
+  check_angle(c.friction_deg, "contact.friction_deg");
+  for (std::size_t i = 0; i < c.friction_rules.size(); ++i) {
+    check_angle(c.friction_rules[i].friction_deg, field("contact.friction_rules", i) + ".friction_deg");
+    if (c.friction_rules[i].group_a < 0 || c.friction_rules[i].group_b < 0)
+      fail(field("contact.friction_rules", i), "groups must be >= 0");
+  }
+  if (c.h_rule == HRule::kGiven && !positive_finite(c.h)) fail("contact.h", "must be positive when H is given");
+  if (!(std::isfinite(c.small_edge_fraction) && c.small_edge_fraction >= 0.0))
+    fail("contact.small_edge_fraction", "must be >= 0");
+
+  std::vector<Polygon> polys(scene.blocks.size());
+  for (std::size_t i = 0; i < scene.blocks.size(); ++i) {
+    const BlockSpec& b = scene.blocks[i];
+    const std::string f = field("blocks", i);
+    const PolygonCheck pc = validate_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
+    if (!pc.ok()) {
+      if (pc.vertex >= 0) fail(f + field(".vertices", static_cast<std::size_t>(pc.vertex)), describe(pc.fault));
+      fail(f + ".vertices", describe(pc.fault));
+    }
+    if (b.material < 0 || static_cast<std::size_t>(b.material) >= scene.materials.size())
+      fail(f + ".material", "no such material");
+    if (b.group < 0) fail(f + ".group", "must be >= 0");
+    if (!is_finite(b.velocity) || !std::isfinite(b.spin)) fail(f + ".velocity", "must be finite");
+    polys[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
+  }
+  for (std::size_t i = 0; i < scene.boundaries.size(); ++i) {
+    const BoundarySegment& s = scene.boundaries[i];
+    if (!is_finite(s.a) || !is_finite(s.b) || !(length(s.b - s.a) > 0.0))
+      fail(field("boundaries", i), "segment end points must be finite and distinct");
+    if (!(std::isfinite(s.depth) && s.depth >= 0.0)) fail(field("boundaries", i) + ".depth", "must be >= 0");
+  }
+  // Blocks overlapping at t = 0 (sort and sweep on x).
+  std::vector<Aabb> boxes(polys.size());
+  for (std::size_t i = 0; i < polys.size(); ++i) boxes[i] = bounds(polys[i]);
+  const std::vector<int> order = sweep_pairs_order(boxes);
+  for (std::size_t a = 0; a < order.size(); ++a)
+    for (std::size_t b = a + 1; b < order.size() && boxes[order[b]].lo.x <= boxes[order[a]].hi.x; ++b) {
+      const int i = std::min(order[a], order[b]), j = std::max(order[a], order[b]);
+      if (scene.blocks[i].fixed && scene.blocks[j].fixed) continue;
+      if (!aabb_overlap(boxes[i], boxes[j])) continue;
+      if (overlap_state(polys[i], polys[j]) == OverlapState::kOverlapping) {
+        const Polygon ip = intersection_polygon(polys[i], polys[j]);
+        const double thickness = ip.count >= 3 ? 2.0 * inscribed_circle(ip).radius : 0.0;
+        if (thickness < scene.initial_overlap) continue;
+        std::ostringstream s;
+        s << "overlaps blocks[" << j << "] at t = 0 (overlap " << thickness << " m thick";
+        if (scene.initial_overlap > 0.0) s << ", more than initial_overlap = " << scene.initial_overlap << " m";
+        s << ")";
+        fail(field("blocks", static_cast<std::size_t>(i)), s.str());
+      }
+    }
+}
+
+Simulation::Simulation(const Scene& scene) : scene_(scene) {
+  check_scene(scene_);
+  dt_ = scene_.dt;
+  strains_ = scene_.strains;
+  friction_ = scene_.contact.friction();
+  build_blocks();
+  choose_potential_length();
+  update_geometry();
+  compute_forces();
+  kick();  // the first half kick uses a^0; v^0 is restored below
+  for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] -= 0.5 * dt_ * acc_[i];
+}
+
+void Simulation::build_blocks() {
+  const std::size_t n = scene_.blocks.size() + scene_.boundaries.size();
+  scene_blocks_ = static_cast<int>(scene_.blocks.size());
+  poly_.resize(n);
+  moments_.resize(n);
+  vel_.assign(n, Vec6::Zero());
+  acc_.assign(n, Vec6::Zero());
+  force_.assign(n, Vec6::Zero());
+  step_disp_.assign(n, Vec6::Zero());
+  disp_.assign(n, Vec6::Zero());
+  stress_.assign(n, Vec3::Zero());
+  density_.assign(n, 0.0);
+  mass_.assign(n, 0.0);
+  h_.assign(n, 0.0);
+  elastic_.assign(n, Mat3::Zero());
+  fixed_.assign(n, 1);
+  group_.assign(n, 0);
+  for (std::size_t i = 0; i < scene_.blocks.size(); ++i) {
+    const BlockSpec& b = scene_.blocks[i];
+    const Material& m = scene_.materials[static_cast<std::size_t>(b.material)];
+    poly_[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
+    density_[i] = m.density;
+    elastic_[i] = elastic_matrix(m.young, m.poisson);
+    fixed_[i] = b.fixed ? 1 : 0;
+    group_[i] = b.group;
+    if (!b.fixed) {
+      vel_[i][0] = b.velocity.x;
+      vel_[i][1] = b.velocity.y;
+      vel_[i][2] = b.spin;
+    }
+  }
+  for (std::size_t k = 0; k < scene_.boundaries.size(); ++k) {
+    const std::size_t i = scene_.blocks.size() + k;
+    const std::vector<Vec2> pts = segment_polygon(scene_.boundaries[k]);
+    poly_[i] = make_polygon(pts.data(), static_cast<int>(pts.size()));
+    density_[i] = scene_.materials[0].density;
+    group_[i] = scene_.boundaries[k].group;
+  }
+  // Friction angle table by group pair.
+  group_count_ = 1;
+  for (int g : group_) group_count_ = std::max(group_count_, g + 1);
+  for (const FrictionRule& r : scene_.contact.friction_rules)
+    group_count_ = std::max({group_count_, r.group_a + 1, r.group_b + 1});
+  friction_tan_table_.assign(static_cast<std::size_t>(group_count_ * group_count_),
+                             std::tan(scene_.contact.friction_deg * kPi / 180.0));
+  for (const FrictionRule& r : scene_.contact.friction_rules) {
+    const double t = std::tan(r.friction_deg * kPi / 180.0);
+    friction_tan_table_[static_cast<std::size_t>(r.group_a * group_count_ + r.group_b)] = t;
+    friction_tan_table_[static_cast<std::size_t>(r.group_b * group_count_ + r.group_a)] = t;
+  }
+  boxes_.resize(n);
+}
+
+double Simulation::friction_tan(int a, int b) const {
+  return friction_tan_table_[static_cast<std::size_t>(group_[a] * group_count_ + group_[b])];
+}
+
+void Simulation::choose_potential_length() {
+  // H of Eq. 12 from the scene's blocks (boundary polygons have an arbitrary
+  // depth and are left out of the edge statistics).
+  const ContactParams& c = scene_.contact;
+  double lmin = DBL_MAX, lmax = 0.0, lsum = 0.0;
+  int edges = 0;
+  for (int i = 0; i < scene_blocks_; ++i)
+    for (int e = 0; e < poly_[i].count; ++e) {
+      const double l = length(poly_[i].edge(e));
+      lmin = std::min(lmin, l);
+      lmax = std::max(lmax, l);
+      lsum += l;
+      ++edges;
+    }
+  double h = 1.0;
+  switch (c.h_rule) {
+    case HRule::kMinMaxEdge: h = 0.5 * (lmin + lmax); break;
+    case HRule::kMeanEdge: h = edges > 0 ? lsum / edges : 1.0; break;
+    case HRule::kGiven: h = c.h; break;
+    case HRule::kInscribedRadius: break;
+  }
+  for (int i = 0; i < block_count(); ++i)
+    h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(poly_[i]).radius : h;
+}
+
+void Simulation::step() {
+  kick_and_drift();          // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}
+  update_contact_history();  // relative displacement at the contact points
+  update_geometry();         // centroids, moments, normals of moved blocks
+  compute_forces();          // gravity, initial stress, contacts at t^{n+1}
+  kick();                    // a^{n+1}; v^{n+1} = v^{n+1/2} + h/2 a^{n+1}
+  ++steps_;
+  time_ = static_cast<double>(steps_) * dt_;
+  check_state();
+}
+
+void Simulation::advance_to(double t) {
+  while (time_ + 0.5 * dt_ < t) step();
+}
+
+void Simulation::kick_and_drift() {
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    vel_[i] += 0.5 * dt_ * acc_[i];
+    const Vec6 dd = dt_ * vel_[i];  // Eq. 8
+    step_disp_[i] = dd;
+    disp_[i] += dd;
+    Polygon& p = poly_[i];
+    const Vec2 c = moments_[i].centroid;
+    for (int k = 0; k < p.count; ++k) p.v[k] += point_displacement(c, p.v[k], dd);
+    if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+  }
+}
+
+void Simulation::update_contact_history() {
+  if (!friction_) return;
+  // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at pg; a sticking
+  // pair accumulates it, a sliding pair restarts from it. The centroids are
+  // those of the step's start configuration (moments_ not yet updated).
+  for (PairHistory& h : history_) {
+    const int cp = static_cast<int>(h.key >> 32), tp = static_cast<int>(h.key & 0xffffffffu);
+    const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(moments_[cp].centroid, h.point, step_disp_[cp]);
+    const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(moments_[tp].centroid, h.point, step_disp_[tp]);
+    const Vec2 dd = du_cp - du_tp;
+    h.d = h.sliding ? dd : h.d + dd;
+  }
+}
+
+void Simulation::update_geometry() {
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i] && steps_ > 0) continue;
+    update_normals(poly_[i]);
+    moments_[i] = area_moments(poly_[i]);
+    boxes_[i] = bounds(poly_[i]);
+    // Mass is conserved: the density follows the strained area.
+    if (steps_ == 0) mass_[i] = density_[i] * moments_[i].area;
+    density_[i] = mass_[i] / moments_[i].area;
+  }
+}
+
+void Simulation::find_candidate_pairs() {
+  candidates_.clear();
+  const int n = block_count();
+  if (scene_.broad_phase == BroadPhase::kNone) {
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) candidates_.emplace_back(i, j);
+    return;
+  }
+  // Sort and sweep along x; the order of the previous step is nearly sorted,
+  // so insertion sort is linear in practice.
+  if (order_.size() != static_cast<std::size_t>(n)) {
+    order_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) order_[i] = i;
+  }
+  for (std::size_t a = 1; a < order_.size(); ++a) {
+    const int key = order_[a];
+    std::size_t b = a;
+    while (b > 0 && boxes_[order_[b - 1]].lo.x > boxes_[key].lo.x) {
+      order_[b] = order_[b - 1];
+      --b;
+    }
+    order_[b] = key;
+  }
+  for (std::size_t a = 0; a < order_.size(); ++a) {
+    const int i = order_[a];
+    for (std::size_t b = a + 1; b < order_.size(); ++b) {
+      const int j = order_[b];
+      if (boxes_[j].lo.x > boxes_[i].hi.x) break;
+      if (fixed_[i] && fixed_[j]) continue;
+      if (boxes_[j].lo.y > boxes_[i].hi.y || boxes_[i].lo.y > boxes_[j].hi.y) continue;
+      candidates_.emplace_back(std::min(i, j), std::max(i, j));
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+}
+
+void Simulation::compute_forces() {
+  // Gravity (int T^T rho g dS = rho S g on the translation DOFs) and the
+  // step's initial stress on the strain DOFs (K d of Eq. 4 carried as
+  // accumulated stress because d is reset every step).
+  for (int i = 0; i < block_count(); ++i) {
+    force_[i].setZero();
+    if (fixed_[i]) continue;
+    const double m = density_[i] * moments_[i].area;
+    force_[i][0] = m * scene_.gravity.x;
+    force_[i][1] = m * scene_.gravity.y;
+    if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
+  }
+  find_candidate_pairs();
+  contact_info_.clear();
+  next_history_.clear();
+  std::size_t h = 0;
+  for (const auto& [i, j] : candidates_) {
+    PairHistory* hist = nullptr;
+    if (friction_) {
+      const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
+      while (h < history_.size() && history_[h].key < key) ++h;  // both sorted by key
+      PairHistory fresh;
+      fresh.key = key;
+      next_history_.push_back(h < history_.size() && history_[h].key == key ? history_[h] : fresh);
+      hist = &next_history_.back();
+    }
+    const std::size_t before = contact_info_.size();
+    add_contact_force(i, j, hist);
+    // A pair that does not touch forgets its history (zero on next touch).
+    if (friction_ && contact_info_.size() == before) next_history_.pop_back();
+  }
+  if (friction_) history_.swap(next_history_);
+}
+
+void Simulation::add_contact_force(int cp, int tp, PairHistory* hist) {
+  const Polygon& a = poly_[cp];
+  const Polygon& b = poly_[tp];
+  const double tol = pair_tolerance(a, b);
+  if (overlap_state(a, b, tol) != OverlapState::kOverlapping) return;  // Sect. 3.1.2
+  const Polygon ip = intersection_polygon(a, b, tol);                   // Sect. 3.1.3
+  if (ip.count < 3) return;
+  const ContactParams& c = scene_.contact;
+  const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp]};
+  const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp]};
+  const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol);  // Eqs. 11-20
+  if (!nf.valid) return;
+
+  ContactInfo info;
+  info.cp = cp;
+  info.tp = tp;
+  info.normal_force = nf.force;
+  info.point = nf.point;
+  info.ip_area = nf.ip_area;
+  Vec2 f = nf.force;
+  if (hist) {
+    // Coulomb friction with stick/slide history, Eqs. 24-26.
+    const double fn = length(nf.force);
+    const Vec2 ng = nf.force / fn;
+    const Vec2 dtan = hist->d - dot(hist->d, ng) * ng;
+    const double lt = length(dtan);
+    const Vec2 s = lt > 0.0 ? dtan / lt : Vec2{};
+    const double limit = fn * friction_tan(cp, tp);
+    Vec2 ft{};
+    if (!hist->sliding) {
+      if (c.kt * lt < limit) {
+        ft = -c.kt * dtan;
+      } else {
+        ft = -limit * s;
+        hist->sliding = true;
+      }
+    } else if (dot(hist->slide_dir, dtan) > 0.0) {
+      // Eq. 26 keeps sliding while f_t(n-1) . d_tan < 0. With f_t(n-1) =
+      // -limit s(n-1) that is s(n-1) . d_tan > 0, the form used here: it
+      // stays defined when the limit is zero (phi = 0 or fn = 0), where the
+      // literal test would stick every other step.
+      ft = -limit * s;
+    } else {
+      ft = -c.kt * dtan;
+      hist->sliding = false;
+    }
+    if (hist->sliding && lt > 0.0) hist->slide_dir = s;
+    hist->point = nf.point;
+    info.tangential_force = ft;
+    info.sliding = hist->sliding;
+    f += ft;
+  }
+  // Eqs. 22-23 and 28-29: into both blocks through T(pg)^T.
+  if (!fixed_[cp]) force_[cp] += point_load(moments_[cp].centroid, nf.point, f);
+  if (!fixed_[tp]) force_[tp] -= point_load(moments_[tp].centroid, nf.point, f);
+  contact_info_.push_back(info);
+}
+
+void Simulation::kick() {
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    const AreaMoments& m = moments_[i];
+    const double mass = density_[i] * m.area;
+    acc_[i][0] = force_[i][0] / mass;
+    acc_[i][1] = force_[i][1] / mass;
+    if (strains_) {
+      // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
+      const Mat6 mm = mass_matrix(m, density_[i]);
+      const Eigen::Matrix4d m4 = mm.bottomRightCorner<4, 4>();
+      acc_[i].tail<4>() = m4.llt().solve(force_[i].tail<4>());
+    } else {
+      acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
+    }
+    vel_[i] += 0.5 * dt_ * acc_[i];
+  }
+}
+
+void Simulation::check_state() const {
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
+                        std::isfinite(moments_[i].centroid.y);
+    if (!finite || !(moments_[i].area > 0.0)) {
+      std::ostringstream s;
+      s << "step " << steps_ << " (t = " << time_ << " s): block " << i
+        << (finite ? ": area collapsed to " : ": non-finite state, area ") << moments_[i].area
+        << "; the time step " << dt_ << " s is likely above the stability limit";
+      throw SimulationError(s.str());
+    }
+  }
+}
+
+Vec2 Simulation::momentum() const {
+  Vec2 p{};
+  for (int i = 0; i < block_count(); ++i)
+    if (!fixed_[i]) p += mass(i) * Vec2{vel_[i][0], vel_[i][1]};
+  return p;
+}
+
+Energy Simulation::energy() const {
+  Energy e;
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    const Mat6 m = mass_matrix(moments_[i], density_[i]);
+    e.kinetic += 0.5 * vel_[i].dot(m * vel_[i]);
+    e.gravity -= mass(i) * dot(scene_.gravity, moments_[i].centroid);
+    if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic_[i].ldlt().solve(stress_[i]));
+  }
+  const ContactParams& c = scene_.contact;
+  for (const ContactInfo& ci : contact_info_) {
+    const Polygon& a = poly_[ci.cp];
+    const Polygon& b = poly_[ci.tp];
+    const double tol = pair_tolerance(a, b);
+    const Polygon ip = intersection_polygon(a, b, tol);
+    const PotentialSide sa{&a, c.kn / h_[ci.cp], 0.0};
+    const PotentialSide sb{&b, c.kn / h_[ci.tp], 0.0};
+    e.contact += contact_energy(sa, sb, ip, tol);
+  }
+  return e;
+}
+
+}  // namespace dda

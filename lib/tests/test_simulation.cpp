@@ -1,0 +1,172 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "dda/paper_scenes.hpp"
+#include "dda/simulation.hpp"
+
+using namespace dda;
+
+namespace {
+std::vector<Vec2> rect(double x0, double y0, double w, double h) {
+  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
+}
+// FNV-1a over the bytes of every block's vertices and velocities.
+std::uint64_t state_hash(const Simulation& sim) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const void* p, std::size_t n) {
+    const unsigned char* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  };
+  for (int i = 0; i < sim.block_count(); ++i) {
+    const Polygon& p = sim.polygon(i);
+    mix(p.v.data(), sizeof(Vec2) * static_cast<std::size_t>(p.count));
+    mix(sim.velocity(i).data(), sizeof(double) * 6);
+  }
+  return h;
+}
+}  // namespace
+
+TEST_CASE("a free-falling block follows g t^2 / 2 exactly (Verlet is exact for constant force)", "[simulation]") {
+  Scene s;
+  s.gravity = {0.0, -9.81};
+  s.dt = 1e-3;
+  BlockSpec b;
+  b.vertices = rect(0, 0, 1, 2);
+  b.velocity = {0.5, 0.0};
+  s.blocks = {b};
+  Simulation sim(s);
+  const Vec2 c0 = sim.centroid(0);
+  sim.advance_to(0.5);
+  const double t = sim.time();
+  CHECK(t == Approx(0.5));
+  CHECK(sim.centroid(0).y - c0.y == Approx(-0.5 * 9.81 * t * t).epsilon(1e-12));
+  CHECK(sim.centroid(0).x - c0.x == Approx(0.5 * t).epsilon(1e-12));
+  CHECK(sim.velocity(0)[1] == Approx(-9.81 * t).epsilon(1e-12));
+}
+
+TEST_CASE("contact forces are equal and opposite: momentum is conserved to round-off", "[simulation]") {
+  Scene s = paper::two_squares();
+  s.blocks[1].vertices = {{0, -0.3}, {1, -0.5}, {1.2, 0.4}, {0.3, 0.6}};  // oblique impact
+  Simulation sim(s);
+  const Vec2 p0 = sim.momentum();
+  double worst = 0.0;
+  int contact_steps = 0;
+  while (sim.time() < 1.0) {
+    sim.step();
+    contact_steps += sim.contacts().empty() ? 0 : 1;
+    worst = std::max(worst, length(sim.momentum() - p0));
+  }
+  CHECK(contact_steps > 10);
+  // Tolerance: a few ulps of the momentum per contact step (~500 steps).
+  CHECK(worst < 1e-9 * length(p0));
+}
+
+TEST_CASE("two squares exchange velocities (Sect. 4.1)", "[simulation]") {
+  Simulation sim(paper::two_squares());
+  bool touched = false;
+  while (sim.time() < 1.0) {
+    sim.step();
+    touched = touched || !sim.contacts().empty();
+  }
+  CHECK(touched);
+  CHECK(std::fabs(sim.velocity(0)[0]) < 1e-3);
+  CHECK(sim.velocity(1)[0] == Approx(1.0).epsilon(1e-3));
+  // Energy: a slow penalty collision of elastic blocks is nearly elastic.
+  const Energy e = sim.energy();
+  CHECK(e.total() == Approx(0.5 * 2000.0).epsilon(1e-3));
+}
+
+TEST_CASE("a frictionless block slides down the incline as Eq. 30 says", "[simulation]") {
+  paper::Incline in = paper::incline(0.0, 30.0, 0.1);
+  Simulation sim(in.scene);
+  const Vec2 c0 = sim.centroid(1);
+  sim.advance_to(0.1);
+  const double l = dot(sim.centroid(1) - c0, in.downhill);
+  CHECK(l == Approx(paper::incline_distance(9.81, in.theta_rad, 0.0, sim.time())).epsilon(1e-6));
+}
+
+TEST_CASE("the symmetric stack stays symmetric (Sect. 4.2, short run)", "[simulation]") {
+  paper::SymmetricStack st = paper::symmetric_stack();
+  st.scene.duration = 0.4;
+  Simulation sim(st.scene);
+  double asym = 0.0;
+  while (sim.time() < st.scene.duration) {
+    sim.step();
+    for (int i = 0; i < sim.block_count(); ++i) {
+      const int j = st.mirror[static_cast<std::size_t>(i)];
+      asym = std::max({asym, std::fabs(sim.centroid(i).x + sim.centroid(j).x),
+                       std::fabs(sim.centroid(i).y - sim.centroid(j).y)});
+    }
+  }
+  CHECK(asym < 1e-9);
+}
+
+TEST_CASE("broad phase on or off gives the same run", "[simulation]") {
+  paper::SymmetricStack st = paper::symmetric_stack();
+  Scene a = st.scene, b = st.scene;
+  a.duration = b.duration = 0.3;
+  b.broad_phase = BroadPhase::kSweep;
+  Simulation sa(a), sb(b);
+  sa.advance_to(0.3);
+  sb.advance_to(0.3);
+  CHECK(state_hash(sa) == state_hash(sb));
+}
+
+TEST_CASE("a run is deterministic: the same scene gives the same bits", "[simulation]") {
+  // The hash of the final state is printed so that builds can be compared;
+  // within one build two runs must agree bit for bit.
+  paper::Incline in = paper::incline(20.0, 30.0, 0.05);
+  Simulation s1(in.scene), s2(in.scene);
+  s1.advance_to(0.05);
+  s2.advance_to(0.05);
+  const std::uint64_t h1 = state_hash(s1), h2 = state_hash(s2);
+  INFO("determinism hash " << h1);
+  CHECK(h1 == h2);
+}
+
+TEST_CASE("scene checks name the field and the reason", "[simulation]") {
+  auto message = [](const Scene& s) {
+    try {
+      check_scene(s);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  Scene s = paper::two_squares();
+  Scene bad = s;
+  bad.dt = 0.0;
+  CHECK(message(bad).find("dt") == 0);
+  bad = s;
+  bad.materials[0].poisson = 0.5;
+  CHECK(message(bad).find("materials[0].poisson") == 0);
+  bad = s;
+  bad.contact.friction_deg = 90.0;
+  CHECK(message(bad).find("contact.friction_deg") == 0);
+  bad = s;
+  std::swap(bad.blocks[1].vertices[1], bad.blocks[1].vertices[3]);
+  CHECK(message(bad).find("blocks[1].vertices") == 0);
+  CHECK(message(bad).find("clockwise") != std::string::npos);
+  bad = s;
+  bad.blocks[1].vertices = rect(-0.6, -0.5, 1.0, 1.0);
+  CHECK(message(bad).find("overlaps blocks[1]") != std::string::npos);
+  CHECK(message(s) == "accepted");
+}
+
+TEST_CASE("a blow-up stops with a message naming step and block", "[simulation]") {
+  Scene s = paper::two_squares();
+  s.contact.kn = 1e13;  // far above what dt = 1e-4 can integrate
+  s.blocks[0].velocity = {100.0, 0.0};
+  Simulation sim(s);
+  std::string what;
+  try {
+    sim.advance_to(1.0);
+  } catch (const SimulationError& e) {
+    what = e.what();
+  }
+  CHECK(what.find("step") != std::string::npos);
+  CHECK(what.find("block") != std::string::npos);
+}
