@@ -1,0 +1,71 @@
+# Figure rules, included by the top-level Makefile (which defines OUT, BIN, PY
+# and FIGS before the include). One rule per data set, one per figure.
+#
+# Template for a new driver <drv> writing $(OUT)/data/<drv>/ and
+# $(OUT)/claims/<drv>.csv, drawn by figures/<figNN>.py:
+#
+#   $(OUT)/data/<drv>/.done: $(BIN)/<drv>
+#   	$(BIN)/<drv> --out $(OUT)
+#   	@touch $@
+#
+#   $(OUT)/figures/<figNN>.png: $(OUT)/data/<drv>/.done figures/<figNN>.py
+#   	$(PY) figures/<figNN>.py $(OUT)/data/<drv> $@
+#
+#   FIGS += $(OUT)/figures/<figNN>.png
+#   $(OUT)/report.md: $(OUT)/data/<drv>/.done
+#
+# The last line re-makes the report when the driver re-ran, even for a driver
+# with no figure (the Makefile's $(wildcard $(OUT)/claims/*.csv) is expanded
+# before the drivers run, so it misses claim files created in the same run).
+#
+# The .done stamp is touched only after the driver succeeds, so a failed run
+# is retried next time; drivers write every file atomically (CsvWriter), so a
+# failure never leaves half a CSV. A figure script also gets a rule on any
+# helper module it imports (figures/potential_common.py below).
+
+# --- Paper A Sect. 3.2.2: potential fields, Figs. 4b and 5 -------------------
+$(OUT)/data/potential_fields/.done: $(BIN)/potential_fields
+	$(BIN)/potential_fields --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig04b_potential.png: $(OUT)/data/potential_fields/.done figures/fig04_potential.py figures/potential_common.py
+	$(PY) figures/fig04_potential.py $(OUT)/data/potential_fields $@
+
+$(OUT)/figures/fig05_potential.png: $(OUT)/data/potential_fields/.done figures/fig05_potential.py figures/potential_common.py
+	$(PY) figures/fig05_potential.py $(OUT)/data/potential_fields $@
+
+FIGS += $(OUT)/figures/fig04b_potential.png $(OUT)/figures/fig05_potential.png
+$(OUT)/report.md: $(OUT)/data/potential_fields/.done
+
+# --- Paper A Sect. 4.1: two squares, Fig. 8 ----------------------------------
+$(OUT)/data/two_squares/.done: $(BIN)/two_squares
+	$(BIN)/two_squares --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig08_two_squares.png: $(OUT)/data/two_squares/.done figures/fig08_two_squares.py figures/potential_common.py
+	$(PY) figures/fig08_two_squares.py $(OUT)/data/two_squares $@
+
+FIGS += $(OUT)/figures/fig08_two_squares.png
+$(OUT)/report.md: $(OUT)/data/two_squares/.done
+
+# --- Paper A Sect. 4.2: symmetric stack, Fig. 10 -----------------------------
+$(OUT)/data/symmetric_stack/.done: $(BIN)/symmetric_stack
+	$(BIN)/symmetric_stack --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig10_symmetric_stack.png: $(OUT)/data/symmetric_stack/.done figures/fig10_symmetric_stack.py figures/potential_common.py
+	$(PY) figures/fig10_symmetric_stack.py $(OUT)/data/symmetric_stack $@
+
+FIGS += $(OUT)/figures/fig10_symmetric_stack.png
+$(OUT)/report.md: $(OUT)/data/symmetric_stack/.done
+
+# --- Paper A Sect. 4.3: incline, Fig. 12 --------------------------------------
+$(OUT)/data/incline/.done: $(BIN)/incline
+	$(BIN)/incline --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig12_incline.png: $(OUT)/data/incline/.done figures/fig12_incline.py figures/potential_common.py
+	$(PY) figures/fig12_incline.py $(OUT)/data/incline $@
+
+FIGS += $(OUT)/figures/fig12_incline.png
+$(OUT)/report.md: $(OUT)/data/incline/.done

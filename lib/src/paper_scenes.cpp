@@ -55,7 +55,7 @@ SymmetricStack symmetric_stack() {
   return st;
 }
 
-Incline incline(double phi_deg, double theta_deg, double duration, bool start_sunk) {
+Incline incline(double phi_deg, double theta_deg, double duration, bool start_sunk, double h_given) {
   Incline in;
   in.theta_rad = theta_deg * kPi / 180.0;
   const double th = in.theta_rad;
@@ -80,7 +80,11 @@ Incline incline(double phi_deg, double theta_deg, double duration, bool start_su
   // the slab and leaves an undamped normal oscillation between 0 and 2 W).
   // For a flat contact of length L both potentials push: f = 2 kn delta L / H,
   // so delta = W cos(theta) H / (2 kn L), with H of the min-max edge rule.
-  const double side = 1.0, h_rule = 0.5 * (side + len);
+  const double side = 1.0, h_rule = h_given > 0.0 ? h_given : 0.5 * (side + len);
+  if (h_given > 0.0) {
+    s.contact.h_rule = HRule::kGiven;
+    s.contact.h = h_given;
+  }
   const double weight = s.materials[0].density * side * side * kG;
   const double delta = start_sunk ? weight * std::cos(th) * h_rule / (2.0 * s.contact.kn * side) : 0.0;
   const Vec2 o = 8.0 * along - delta * up;

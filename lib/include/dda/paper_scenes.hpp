@@ -36,7 +36,10 @@ struct Incline {
   Vec2 downhill{};  // unit vector along the incline, pointing down
 };
 // start_sunk: B starts at its static penetration (see the source).
-Incline incline(double phi_deg, double theta_deg = 30.0, double duration = 1.0, bool start_sunk = true);
+// h_given > 0: use that H instead of the paper's min-max edge rule (6.5 m
+// here, set by the long slab), for the sensitivity rows of the report.
+Incline incline(double phi_deg, double theta_deg = 30.0, double duration = 1.0, bool start_sunk = true,
+                double h_given = 0.0);
 
 // Analytic sliding distance of Eq. 30: l = g (sin t - cos t tan phi) t^2 / 2.
 double incline_distance(double g, double theta_rad, double phi_rad, double t);

@@ -1,0 +1,94 @@
+"""Shared reading and drawing for the potential-field maps (Paper A Figs. 4b, 5).
+
+The grid CSVs are written by the potential_fields driver: '#' comment lines,
+a header 'x,y,inside,d_exit,phi', rows y-major (x varies fastest).
+"""
+import csv
+import os
+import textwrap
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    """Returns (comment lines, {column: float array}). Fails on non-finite data."""
+    comments, rows, header = [], [], None
+    with open(path, newline="") as f:
+        for rec in csv.reader(f):
+            if not rec:
+                continue
+            if rec[0].startswith("#"):
+                comments.append(",".join(rec).lstrip("# ").rstrip())
+            elif header is None:
+                header = rec
+            else:
+                rows.append([float(v) for v in rec])
+    if header is None or not rows:
+        raise SystemExit(f"{path}: no header or no data rows")
+    data = np.array(rows, dtype=float)
+    if not np.all(np.isfinite(data)):
+        raise SystemExit(f"{path}: non-finite values")
+    return comments, {name: data[:, i] for i, name in enumerate(header)}
+
+
+def save_atomic(fig, out_png):
+    os.makedirs(os.path.dirname(out_png) or ".", exist_ok=True)
+    tmp = out_png + ".tmp"
+    fig.savefig(tmp, dpi=150, format="png")
+    plt.close(fig)
+    os.replace(tmp, out_png)
+
+
+def draw_potential(grid_csv, outline_csv, title, out_png, highlight_below=None):
+    """Filled contours of phi inside the polygon, outline on top.
+
+    highlight_below: edges shorter than this (m) are drawn in red and labelled.
+    """
+    notes, g = read_csv(grid_csv)
+    _, o = read_csv(outline_csv)
+    xs = np.unique(g["x"])
+    ys = np.unique(g["y"])
+    nx, ny = xs.size, ys.size
+    if nx * ny != g["x"].size:
+        raise SystemExit(f"{grid_csv}: {g['x'].size} rows are not a {nx} x {ny} grid")
+    X = g["x"].reshape(ny, nx)
+    Y = g["y"].reshape(ny, nx)
+    phi = g["phi"].reshape(ny, nx)
+    inside = g["inside"].reshape(ny, nx) > 0.5
+    field = np.ma.masked_where(~inside, phi)
+
+    fig, ax = plt.subplots(figsize=(7.5, 6.5), layout="constrained")
+    top = float(phi.max())
+    levels = np.linspace(0.0, top, 21)
+    cf = ax.contourf(X, Y, field, levels=levels, cmap="viridis")
+    ax.contour(X, Y, field, levels=levels[1::2], colors="white", linewidths=0.4, alpha=0.7)
+    cb = fig.colorbar(cf, ax=ax, shrink=0.85)
+    cb.locator = matplotlib.ticker.MaxNLocator(8)
+    cb.update_ticks()
+    cb.set_label(r"potential $\varphi = k_n\, d_{exit} / H$  (Pa)")
+
+    px = np.append(o["x"], o["x"][0])
+    py = np.append(o["y"], o["y"][0])
+    ax.plot(px, py, "k-", lw=1.2)
+    if highlight_below is not None:
+        n = o["x"].size
+        for i in range(n):
+            if o["edge_length"][i] < highlight_below:
+                j = (i + 1) % n
+                ax.plot([o["x"][i], o["x"][j]], [o["y"][i], o["y"][j]], "r-", lw=3.0)
+                mx, my = 0.5 * (o["x"][i] + o["x"][j]), 0.5 * (o["y"][i] + o["y"][j])
+                ax.annotate(f"{o['edge_length'][i]:.3g} m edge", (mx, my), xytext=(12, 8),
+                            textcoords="offset points", color="red", fontsize=9)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(title, fontsize=10)
+    note = next((c for c in notes if c.startswith("RECONSTRUCTED")), "")
+    ax.text(0.0, -0.12, textwrap.fill(note + f". Grid {nx} x {ny}; white: outside (phi = 0).", 110),
+            transform=ax.transAxes, fontsize=7, color="0.3", va="top")
+    save_atomic(fig, out_png)

@@ -1,0 +1,118 @@
+// Paper A, Sect. 4.3 "Sliding block on an inclined plane" (Figs. 11-12).
+//
+// GEOMETRY RECONSTRUCTED: Fig. 11 is lost. A 1 m square B on a fixed 12 m
+// slab A inclined at 30 deg (dda::paper::incline), from rest, friction angle
+// phi = 0, 10, 20 deg; rho 2000, E 1 GPa, nu 0.25, kn 10 MPa, kt 1e7 N/m,
+// dt 1e-5 s (Table 4), 1.0 s. Expected (paper): the sliding distance follows
+// Eq. 30, l = g (sin t - cos t tan phi) t^2 / 2 ("good agreements").
+//
+// Extra runs beyond the paper (each a report row): B starting just touching
+// instead of at its static penetration, and a stiffer tangential penalty,
+// to show where the gap to Eq. 30 comes from.
+//
+// Output: data/incline/sliding.csv (Fig. 12), claims/4_3_incline.csv.
+#include <cmath>
+#include <vector>
+
+#include "dda/paper_scenes.hpp"
+#include "dda/simulation.hpp"
+#include "repro/common/common.hpp"
+
+namespace {
+constexpr double kG = 9.81;
+constexpr double kPi = 3.14159265358979323846;
+
+struct Run {
+  double distance = 0.0;  // final sliding distance, m
+  double analytic = 0.0;  // Eq. 30 at the same time, m
+  double rel_error() const { return (distance - analytic) / analytic; }
+};
+
+// Runs one case; appends (time, l, l_analytic) rows for `column` if given.
+Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg) {
+  dda::Simulation sim(in.scene);
+  const dda::Vec2 c0 = sim.centroid(1);
+  const double phi = phi_deg * kPi / 180.0;
+  Run r;
+  while (sim.time() < in.scene.duration - 0.5 * sim.dt()) {
+    sim.step();
+    if (csv && sim.step_count() % 500 == 0) {
+      const double l = dot(sim.centroid(1) - c0, in.downhill);
+      csv->row({phi_deg, sim.time(), l, dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time())});
+    }
+  }
+  r.distance = dot(sim.centroid(1) - c0, in.downhill);
+  r.analytic = dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time());
+  return r;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = repro::out_dir(argc, argv);
+  const repro::Progress progress("4.3 incline");
+  repro::CsvWriter csv(out + "/data/incline/sliding.csv", {"phi_deg", "time", "distance", "analytic"},
+                       {"Paper A Sect. 4.3, geometry reconstructed (Fig. 11 lost): theta = 30 deg"});
+  std::vector<repro::Claim> claims;
+  using repro::format_short;
+  // Tolerance 1 % of the distance: "good agreement" read as within the line
+  // width of Fig. 12.
+  constexpr double kTol = 0.01;
+  for (double phi : {0.0, 10.0, 20.0}) {
+    const Run r = run(dda::paper::incline(phi), &csv, phi);
+    progress("phi = " + format_short(phi) + ": l = " + format_short(r.distance, 6) + " m, Eq. 30 " +
+             format_short(r.analytic, 6) + " m");
+    claims.push_back({"4.3", "sliding distance at t = 1 s follows Eq. 30, phi = " + format_short(phi) + " deg",
+                      "Fig. 12: 'good agreements'",
+                      "l = " + format_short(r.distance, 5) + " m vs " + format_short(r.analytic, 5) +
+                          " m, rel. error " + format_short(r.rel_error(), 3),
+                      "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+  }
+  csv.commit();
+  // Where the gap comes from. (1) With finite kt the pair starts in an
+  // elastic stick phase: friction ramps up from zero until kt |d| reaches
+  // fn tan(phi), so B gains speed that rigid Coulomb friction (Eq. 30) would
+  // not give it. For a spring-mass start from rest (translation only) slip
+  // begins at w t* = acos(1 - tan(phi) cot(theta)), w = sqrt(kt / m), and B
+  // leads Eq. 30 by dv = g [tan(phi) cos(theta) t* - sin(theta) (t* - sin(w t*) / w)].
+  // (2) The friction torque rocks B on the soft contact (H = 6.5 m from the
+  // long slab) and the contact point's motion reverses, which re-enters the
+  // stick phase. Rows below: the predicted offset, and runs with a stiffer
+  // kt and a smaller H that remove both causes.
+  {
+    const double th = 30.0 * kPi / 180.0, mu = std::tan(20.0 * kPi / 180.0), m = 2000.0, t_end = 1.0;
+    const double w = std::sqrt(1e7 / m);
+    const double ts = std::acos(1.0 - mu / std::tan(th)) / w;
+    const double dv = kG * (mu * std::cos(th) * ts - std::sin(th) * (ts - std::sin(w * ts) / w));
+    const double la = dda::paper::incline_distance(kG, th, std::atan(mu), t_end);
+    const double predicted = dv * (t_end - ts) / la;
+    claims.push_back({"4.3 (extra)", "phi = 20 deg: predicted lead of B from the elastic stick phase alone",
+                      "not discussed in the paper",
+                      "stick phase t* = " + format_short(ts * 1e3, 3) + " ms, predicted rel. lead " +
+                          format_short(predicted, 3),
+                      "information (no tolerance)", true});
+  }
+  {
+    const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, true, 1.0), nullptr, 20.0);
+    claims.push_back({"4.3 (extra)", "phi = 20 deg with H = 1 m (paper's rule gives 6.5 m here): less rocking",
+                      "Eq. 30", "rel. error " + format_short(r.rel_error(), 3), "|rel. error| < 1 %",
+                      std::fabs(r.rel_error()) < kTol});
+  }
+  for (double kt : {1e9, 1e11}) {
+    dda::paper::Incline in = dda::paper::incline(20.0, 30.0, 1.0, true, 1.0);
+    in.scene.contact.kt = kt;
+    const Run r = run(in, nullptr, 20.0);
+    claims.push_back({"4.3 (extra)", "phi = 20 deg, H = 1 m, kt = " + format_short(kt) + " N/m (paper: 1e7)",
+                      "Eq. 30 in the rigid-friction limit",
+                      "rel. error " + format_short(r.rel_error(), 3) + " (l = " + format_short(r.distance, 5) + " m)",
+                      "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+  }
+  {
+    const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, false), nullptr, 20.0);
+    claims.push_back({"4.3 (extra)", "phi = 20 deg, B starting just touching (falls into its static penetration)",
+                      "not stated in the paper", "rel. error " + format_short(r.rel_error(), 3),
+                      "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+  }
+  repro::write_claims(repro::claims_path(out, "4_3_incline"), claims);
+  progress("done");
+  return 0;
+}

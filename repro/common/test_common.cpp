@@ -1,0 +1,94 @@
+// Unit tests of the driver helpers: atomic CSV, non-finite refusal, claims
+// quoting, --out parsing.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "repro/common/common.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+std::string scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("repro_common_test_" + std::to_string(::getpid()));
+  return (d / name).string();
+}
+}  // namespace
+
+TEST_CASE("CsvWriter writes only on commit, creating directories", "[csv]") {
+  const std::string path = scratch("a/b/t.csv");
+  {
+    repro::CsvWriter w(path, {"x", "y"}, {"a note"});
+    w.row({0.1, 1e-300});
+    w.row(std::vector<std::string>{"has,comma", "has\"quote"});
+    CHECK_FALSE(fs::exists(path));
+    CHECK(fs::exists(path + ".tmp"));
+    w.commit();
+  }
+  CHECK(fs::exists(path));
+  CHECK_FALSE(fs::exists(path + ".tmp"));
+  CHECK(slurp(path) == "# a note\nx,y\n0.1,1e-300\n\"has,comma\",\"has\"\"quote\"\n");
+  fs::remove_all(fs::path(scratch("")));
+}
+
+TEST_CASE("CsvWriter without commit leaves nothing", "[csv]") {
+  const std::string path = scratch("u.csv");
+  { repro::CsvWriter w(path, {"x"}); w.row({1.0}); }
+  CHECK_FALSE(fs::exists(path));
+  CHECK_FALSE(fs::exists(path + ".tmp"));
+  fs::remove_all(fs::path(scratch("")));
+}
+
+TEST_CASE("CsvWriter refuses non-finite values and names the column", "[csv]") {
+  const std::string path = scratch("n.csv");
+  {
+    repro::CsvWriter w(path, {"time", "velocity"});
+    w.row({0.0, 1.0});
+    try {
+      w.row({1.0, std::nan("")});
+      FAIL("no exception");
+    } catch (const std::invalid_argument& e) {
+      CHECK(std::string(e.what()).find("'velocity'") != std::string::npos);
+    }
+    CHECK_THROWS_AS(w.row({1.0, INFINITY}), std::invalid_argument);
+    CHECK_THROWS_AS(w.row({1.0}), std::invalid_argument);  // wrong width
+  }
+  CHECK_FALSE(fs::exists(path));
+  fs::remove_all(fs::path(scratch("")));
+}
+
+TEST_CASE("full-precision numbers read back exactly", "[csv]") {
+  for (double v : {0.1, 1.0 / 3.0, -2.5e-17, 6.02214076e23, 5e-324})
+    CHECK(std::strtod(repro::format_full(v).c_str(), nullptr) == v);
+}
+
+TEST_CASE("claims file has the report's columns and PASS/FAIL", "[claims]") {
+  const std::string out = scratch("o");
+  const std::string path = repro::claims_path(out, "drv");
+  repro::write_claims(path, {{"4.1", "a, b", "x", "1", "<2", true}, {"4.1", "c", "\"q\"", "3", "<2", false}});
+  CHECK(slurp(path) ==
+        "section,claim,paper,measured,tolerance,status\n4.1,\"a, b\",x,1,<2,PASS\n4.1,c,\"\"\"q\"\"\",3,<2,FAIL\n");
+  fs::remove_all(fs::path(scratch("")));
+}
+
+TEST_CASE("out_dir parses --out", "[cli]") {
+  char a0[] = "prog", a1[] = "--out", a2[] = "dir1", a3[] = "--out=dir2", a4[] = "--other";
+  char* v1[] = {a0};
+  CHECK(repro::out_dir(1, v1) == "out");
+  char* v2[] = {a0, a1, a2};
+  CHECK(repro::out_dir(3, v2) == "dir1");
+  char* v3[] = {a0, a4, a3};
+  CHECK(repro::out_dir(3, v3) == "dir2");
+  char* v4[] = {a0, a1};
+  CHECK_THROWS_AS(repro::out_dir(2, v4), std::invalid_argument);
+}
