@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace dda {
@@ -40,6 +41,12 @@ std::vector<int> sweep_pairs_order(const std::vector<Aabb>& boxes) {
 
 void check_scene(const Scene& scene) {
   if (!positive_finite(scene.dt)) fail("dt", "must be a positive finite time step");
+  if (!(std::isfinite(scene.dt_fraction) && scene.dt_fraction >= 0.0)) fail("dt_fraction", "must be >= 0");
+  if (!(std::isfinite(scene.guards.max_step_motion) && scene.guards.max_step_motion > 0.0))
+    fail("guards.max_step_motion", "must be positive");
+  if (!(std::isfinite(scene.guards.max_energy_growth) && scene.guards.max_energy_growth > 0.0))
+    fail("guards.max_energy_growth", "must be positive");
+  if (scene.guards.energy_check_every < 0) fail("guards.energy_check_every", "must be >= 0");
   if (!(std::isfinite(scene.initial_overlap) && scene.initial_overlap >= 0.0))
     fail("initial_overlap", "must be finite and >= 0");
   if (!(std::isfinite(scene.duration) && scene.duration >= 0.0)) fail("duration", "must be finite and >= 0");
@@ -120,9 +127,14 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   build_blocks();
   choose_potential_length();
   update_geometry();
+  predict_critical_step();
+  if (scene_.dt_fraction > 0.0) dt_ = scene_.dt_fraction * dt_crit_prior_;
   compute_forces();
   kick();  // the first half kick uses a^0; v^0 is restored below
   for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] -= 0.5 * dt_ * acc_[i];
+  const Energy e = energy();
+  energy0_ = e.total();
+  energy_scale_ = e.kinetic + e.strain + e.contact;
 }
 
 void Simulation::build_blocks() {
@@ -352,6 +364,7 @@ void Simulation::add_contact_force(int cp, int tp, PairHistory* hist) {
   info.normal_force = nf.force;
   info.point = nf.point;
   info.ip_area = nf.ip_area;
+  info.ip_length = 0.5 * perimeter(ip);
   Vec2 f = nf.force;
   if (hist) {
     // Coulomb friction with stick/slide history, Eqs. 24-26.
@@ -410,19 +423,122 @@ void Simulation::kick() {
   }
 }
 
-void Simulation::check_state() const {
+[[noreturn]] void Simulation::stop(int block, const std::string& what) const {
+  std::ostringstream s;
+  s << "step " << steps_ << " (t = " << time_ << " s): block " << block;
+  // The pair through which the block takes its largest contact force.
+  double fmax = 0.0;
+  int other = -1;
+  for (const ContactInfo& c : contact_info_)
+    if ((c.cp == block || c.tp == block) && length(c.normal_force) > fmax) {
+      fmax = length(c.normal_force);
+      other = c.cp == block ? c.tp : c.cp;
+    }
+  if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
+  s << ": " << what << "; dt/dt_crit = ";
+  const double now = critical_time_step();
+  if (std::isfinite(now) && now < DBL_MAX) s << dt_ / now << " now, ";
+  else s << "undefined now (state not finite), ";
+  s << dt_ / dt_crit_prior_ << " predicted at start";
+  throw SimulationError(s.str());
+}
+
+void Simulation::check_state() {
+  const double motion_limit = scene_.guards.max_step_motion * min_inscribed_radius_;
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
     const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
-                        std::isfinite(moments_[i].centroid.y);
-    if (!finite || !(moments_[i].area > 0.0)) {
+                        std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
+    if (!finite) stop(i, "non-finite velocity or position");
+    if (!(moments_[i].area > 0.0)) {
       std::ostringstream s;
-      s << "step " << steps_ << " (t = " << time_ << " s): block " << i
-        << (finite ? ": area collapsed to " : ": non-finite state, area ") << moments_[i].area
-        << "; the time step " << dt_ << " s is likely above the stability limit";
-      throw SimulationError(s.str());
+      s << "area collapsed to " << moments_[i].area << " m^2";
+      stop(i, s.str());
+    }
+    // Largest vertex motion of this step: |T(p) dd| at the vertices.
+    double motion = 0.0;
+    const Polygon& p = poly_[i];
+    for (int k = 0; k < p.count; ++k)
+      motion = std::max(motion, length(point_displacement(moments_[i].centroid, p.v[k], step_disp_[i])));
+    if (motion > motion_limit) {
+      std::ostringstream s;
+      s << "a vertex moved " << motion << " m in one step, more than " << scene_.guards.max_step_motion
+        << " of the smallest inscribed radius (" << min_inscribed_radius_ << " m)";
+      stop(i, s.str());
     }
   }
+  const int every = scene_.guards.energy_check_every;
+  if (every > 0 && steps_ % every == 0) {
+    const Energy e = energy();
+    energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
+    const double growth = (e.total() - energy0_) / std::max(energy_scale_, DBL_MIN);
+    if (growth > scene_.guards.max_energy_growth) {
+      int worst = 0;
+      double kmax = -1.0;
+      for (int i = 0; i < block_count(); ++i) {
+        if (fixed_[i]) continue;
+        const double k = vel_[i].head<2>().squaredNorm() * mass_[i];
+        if (k > kmax) {
+          kmax = k;
+          worst = i;
+        }
+      }
+      std::ostringstream s;
+      s << "total energy grew by " << growth << " of the largest mechanical energy (" << energy_scale_
+        << " J), more than " << scene_.guards.max_energy_growth;
+      stop(worst, s.str());
+    }
+  }
+}
+
+double Simulation::block_strain_omega2(int i) const {
+  // Generalised eigenproblem K x = w^2 M x on (r, ex, ey, gxy); K has the
+  // elastic block S D on the strains and nothing on the rotation.
+  if (!strains_) return 0.0;
+  const Mat6 m = mass_matrix(moments_[i], density_[i]);
+  Eigen::Matrix4d k = Eigen::Matrix4d::Zero();
+  k.bottomRightCorner<3, 3>() = moments_[i].area * elastic_[i];
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix4d> es(k, m.bottomRightCorner<4, 4>(), Eigen::EigenvaluesOnly);
+  return es.eigenvalues().maxCoeff();
+}
+
+void Simulation::predict_critical_step() {
+  // Before any contact: each block pressed along its longest edge L by an
+  // identical block, k = kn L (1/H + 1/H), with translation k / m and the
+  // rotational mode k r^2 / I (r the largest centroid-vertex distance).
+  double w2 = 0.0;
+  min_inscribed_radius_ = DBL_MAX;
+  for (int i = 0; i < block_count(); ++i) {
+    min_inscribed_radius_ = std::min(min_inscribed_radius_, inscribed_circle(poly_[i]).radius);
+    if (fixed_[i]) continue;
+    const double k = scene_.contact.kn * max_edge_length(poly_[i]) * 2.0 / h_[i];
+    double r2 = 0.0;
+    for (int v = 0; v < poly_[i].count; ++v) r2 = std::max(r2, length_squared(poly_[i].v[v] - moments_[i].centroid));
+    const double inertia = density_[i] * (moments_[i].sxx + moments_[i].syy);
+    w2 = std::max({w2, k / mass_[i] + k * r2 / inertia, block_strain_omega2(i)});
+  }
+  dt_crit_prior_ = w2 > 0.0 ? 2.0 / std::sqrt(w2) : DBL_MAX;
+}
+
+double Simulation::critical_time_step() const {
+  // Contact stiffness summed per block from the current contacts.
+  std::vector<double> kt(poly_.size(), 0.0), kr(poly_.size(), 0.0);
+  for (const ContactInfo& c : contact_info_) {
+    const double k = scene_.contact.kn * c.ip_length * (1.0 / h_[c.cp] + 1.0 / h_[c.tp]);
+    for (int b : {c.cp, c.tp}) {
+      kt[b] += k;
+      kr[b] += k * length_squared(c.point - moments_[b].centroid);
+    }
+  }
+  double w2 = 0.0;
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    const double inertia = density_[i] * (moments_[i].sxx + moments_[i].syy);
+    const double wi = std::max(kt[i] / mass_[i] + kr[i] / inertia, block_strain_omega2(i));
+    if (!std::isfinite(wi)) return std::numeric_limits<double>::quiet_NaN();
+    w2 = std::max(w2, wi);
+  }
+  return w2 > 0.0 ? 2.0 / std::sqrt(w2) : DBL_MAX;
 }
 
 Vec2 Simulation::momentum() const {

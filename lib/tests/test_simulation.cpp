@@ -169,4 +169,29 @@ TEST_CASE("a blow-up stops with a message naming step and block", "[simulation]"
   }
   CHECK(what.find("step") != std::string::npos);
   CHECK(what.find("block") != std::string::npos);
+  CHECK(what.find("dt/dt_crit") != std::string::npos);
+}
+
+TEST_CASE("a time step above the predicted critical step is caught, one below runs clean", "[simulation]") {
+  // dt_crit = 2 / omega_max of velocity Verlet; the strain modes of a 1 m
+  // block with E = 1 GPa, rho = 2000 limit it to ~1e-3 s.
+  Scene s = paper::two_squares();
+  Simulation probe(s);
+  const double dt_crit = probe.predicted_critical_step();
+  CHECK(dt_crit > 5e-4);
+  CHECK(dt_crit < 2e-3);
+  s.dt_fraction = 0.5;
+  Simulation ok(s);
+  CHECK(ok.dt() == Approx(0.5 * dt_crit));
+  CHECK_NOTHROW(ok.advance_to(1.0));
+  s.dt_fraction = 1.5;
+  Simulation bad(s);
+  std::string what;
+  try {
+    bad.advance_to(1.0);
+  } catch (const SimulationError& e) {
+    what = e.what();
+  }
+  INFO(what);
+  CHECK(what.find("dt/dt_crit") != std::string::npos);
 }

@@ -63,6 +63,21 @@ struct ContactParams {
 
 enum class BroadPhase { kNone, kSweep };
 
+// What the solver watches every step; a violation stops the run with a
+// SimulationError naming the step, time, block, pair and dt/dt_crit.
+struct StabilityGuards {
+  // Largest vertex displacement in one step, as a fraction of the smallest
+  // inscribed radius in the assembly: beyond it a vertex can pass through a
+  // thin block between two contact checks (flip-through).
+  double max_step_motion = 0.25;
+  // Largest growth of the total energy above its initial value, relative to
+  // the largest mechanical (kinetic + strain + contact) energy seen so far.
+  // Without damping an explicit run conserves energy to O(dt^2); friction
+  // only removes it. Checked every `energy_check_every` steps; 0 disables.
+  double max_energy_growth = 0.5;
+  int energy_check_every = 100;
+};
+
 struct Scene {
   std::string name;
   std::vector<Material> materials{Material{}};
@@ -77,7 +92,11 @@ struct Scene {
   // contact placed at its static penetration. 0 rejects every overlap.
   double initial_overlap = 0.0;
   double dt = 1e-4;             // s
+  // If > 0, dt is replaced by this fraction of the predicted critical step
+  // (Simulation::predicted_critical_step) when the simulation is built.
+  double dt_fraction = 0.0;
   double duration = 1.0;        // s
+  StabilityGuards guards;
 };
 
 }  // namespace dda

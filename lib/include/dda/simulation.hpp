@@ -42,6 +42,7 @@ struct ContactInfo {
   Vec2 tangential_force{};
   Vec2 point{};          // loading point pg
   double ip_area = 0.0;
+  double ip_length = 0.0;  // half the IP perimeter: the contact length, m
   bool sliding = false;
 };
 
@@ -76,6 +77,16 @@ class Simulation {
   // The H used for block i's potential.
   double potential_length(int i) const { return h_[i]; }
 
+  // Critical step of velocity Verlet, 2 / omega_max, from the stiffest mode
+  // of any block: its current contacts (stiffness kn L (1/H_cp + 1/H_tp) per
+  // contact of length L, summed per block, with the rotational mode k r^2 / I)
+  // and its own strain modes (generalised eigenvalues of S D against the mass
+  // matrix). predicted_critical_step assumes every block is pressed along its
+  // longest edge by an identical block: an a-priori bound usable before any
+  // contact exists.
+  double critical_time_step() const;
+  double predicted_critical_step() const { return dt_crit_prior_; }
+
   Vec2 momentum() const;
   Energy energy() const;  // recomputes contact energy: call at output time
   const std::vector<ContactInfo>& contacts() const { return contact_info_; }
@@ -99,7 +110,10 @@ class Simulation {
   void find_candidate_pairs();
   void add_contact_force(int cp, int tp, PairHistory* history);
   void kick();
-  void check_state() const;
+  void check_state();
+  void predict_critical_step();
+  double block_strain_omega2(int i) const;
+  [[noreturn]] void stop(int block, const std::string& what) const;
   double friction_tan(int a, int b) const;
 
   Scene scene_;
@@ -123,6 +137,11 @@ class Simulation {
   std::vector<int> group_;
   std::vector<double> friction_tan_table_;
   int group_count_ = 1;
+
+  // Guards.
+  double min_inscribed_radius_ = 0.0;
+  double dt_crit_prior_ = 0.0;
+  double energy0_ = 0.0, energy_scale_ = 0.0;
 
   // Contacts.
   std::vector<std::pair<int, int>> candidates_;
