@@ -28,25 +28,30 @@ Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
 InscribedCircle inscribed_circle(const Polygon& poly) {
   // Maximise r subject to n_i . (v_i - c) >= r for all i. The optimum is a
   // vertex of the feasible set in (c, r) space: three constraints tight.
+  // The systems are solved relative to v_0, so that a large coordinate offset
+  // does not swamp the right-hand sides, and each candidate centre is scored
+  // by its actual exit distance: the answer is feasible by construction
+  // (radius == exit_distance(centre)) and needs no feasibility tolerance.
   InscribedCircle best;
   const int n = poly.count;
+  if (n < 3) return best;
+  const Vec2 o = poly.vertex(0);
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       for (int k = j + 1; k < n; ++k) {
-        // Rows: n_x c_x + n_y c_y + r = n . v  for edges i, j, k.
+        // Rows: n_x c_x + n_y c_y + r = n . (v - o)  for edges i, j, k.
         const Vec2 ni = poly.normal(i), nj = poly.normal(j), nk = poly.normal(k);
-        const double bi = dot(ni, poly.vertex(i)), bj = dot(nj, poly.vertex(j)), bk = dot(nk, poly.vertex(k));
+        const double bi = dot(ni, poly.vertex(i) - o), bj = dot(nj, poly.vertex(j) - o), bk = dot(nk, poly.vertex(k) - o);
         const double det = ni.x * (nj.y - nk.y) - ni.y * (nj.x - nk.x) + (nj.x * nk.y - nj.y * nk.x);
         if (std::fabs(det) < 1e-12) continue;  // two parallel lines met twice: no vertex
         // Cramer's rule on [nx ny 1 | b].
         const double dx = bi * (nj.y - nk.y) - ni.y * (bj - bk) + (bj * nk.y - nj.y * bk);
         const double dy = ni.x * (bj - bk) - bi * (nj.x - nk.x) + (nj.x * bk - bj * nk.x);
         const double dr = ni.x * (nj.y * bk - bj * nk.y) - ni.y * (nj.x * bk - bj * nk.x) + bi * (nj.x * nk.y - nj.y * nk.x);
-        const Vec2 c{dx / det, dy / det};
-        const double r = dr / det;
-        if (r <= best.radius) continue;
-        // Feasible only if no other edge is closer than r.
-        if (exit_distance(poly, c) >= r * (1.0 - 1e-12)) best = {c, r};
+        if (dr / det <= best.radius) continue;  // the exit distance at c is at most dr / det
+        const Vec2 c = o + Vec2{dx / det, dy / det};
+        const double r = exit_distance(poly, c);  // < dr / det if another edge is closer
+        if (r > best.radius) best = {c, r};
       }
   return best;
 }

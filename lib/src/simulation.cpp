@@ -97,24 +97,37 @@ void check_scene(const Scene& scene) {
       fail(field("boundaries", i), "segment end points must be finite and distinct");
     if (!(std::isfinite(s.depth) && s.depth >= 0.0)) fail(field("boundaries", i) + ".depth", "must be >= 0");
   }
-  // Blocks overlapping at t = 0 (sort and sweep on x).
+  // Blocks overlapping at t = 0, each other or a boundary's virtual polygon
+  // (sort and sweep on x).
+  std::vector<char> fixed(polys.size());
+  for (std::size_t i = 0; i < scene.blocks.size(); ++i) fixed[i] = scene.blocks[i].fixed ? 1 : 0;
+  for (const BoundarySegment& b : scene.boundaries) {
+    const std::vector<Vec2> pts = segment_polygon(b);
+    polys.push_back(make_polygon(pts.data(), static_cast<int>(pts.size())));
+    fixed.push_back(1);
+  }
+  auto name = [&](int i) {
+    const std::size_t nb = scene.blocks.size();
+    return static_cast<std::size_t>(i) < nb ? field("blocks", static_cast<std::size_t>(i))
+                                             : field("boundaries", static_cast<std::size_t>(i) - nb);
+  };
   std::vector<Aabb> boxes(polys.size());
   for (std::size_t i = 0; i < polys.size(); ++i) boxes[i] = bounds(polys[i]);
   const std::vector<int> order = sweep_pairs_order(boxes);
   for (std::size_t a = 0; a < order.size(); ++a)
     for (std::size_t b = a + 1; b < order.size() && boxes[order[b]].lo.x <= boxes[order[a]].hi.x; ++b) {
       const int i = std::min(order[a], order[b]), j = std::max(order[a], order[b]);
-      if (scene.blocks[i].fixed && scene.blocks[j].fixed) continue;
+      if (fixed[i] && fixed[j]) continue;
       if (!aabb_overlap(boxes[i], boxes[j])) continue;
       if (overlap_state(polys[i], polys[j]) == OverlapState::kOverlapping) {
         const Polygon ip = intersection_polygon(polys[i], polys[j]);
         const double thickness = ip.count >= 3 ? 2.0 * inscribed_circle(ip).radius : 0.0;
         if (thickness < scene.initial_overlap) continue;
         std::ostringstream s;
-        s << "overlaps blocks[" << j << "] at t = 0 (overlap " << thickness << " m thick";
+        s << "overlaps " << name(j) << " at t = 0 (overlap " << thickness << " m thick";
         if (scene.initial_overlap > 0.0) s << ", more than initial_overlap = " << scene.initial_overlap << " m";
         s << ")";
-        fail(field("blocks", static_cast<std::size_t>(i)), s.str());
+        fail(name(i), s.str());
       }
     }
 }

@@ -153,6 +153,9 @@ TEST_CASE("scene checks name the field and the reason", "[simulation]") {
   bad = s;
   bad.blocks[1].vertices = rect(-0.6, -0.5, 1.0, 1.0);
   CHECK(message(bad).find("overlaps blocks[1]") != std::string::npos);
+  bad = s;
+  bad.boundaries.push_back({{-2.0, 0.0}, {2.0, 0.0}});  // solid below y = 0 cuts both squares
+  CHECK(message(bad).find("overlaps boundaries[0]") != std::string::npos);
   CHECK(message(s) == "accepted");
 }
 

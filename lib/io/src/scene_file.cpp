@@ -1,0 +1,591 @@
+#include "dda/io/scene_file.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "dda/io/csv.hpp"
+#include "dda/simulation.hpp"
+
+namespace dda::io {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// ---------------------------------------------------------------------------
+// Messages
+
+std::string join_path(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string index_path(const std::string& parent, std::size_t i) { return parent + "[" + std::to_string(i) + "]"; }
+
+std::string single_quoted(const std::string& s) { return "'" + s + "'"; }
+
+// "string \"abc\"", "number 2.5", "array", ... for "expected X, got Y".
+std::string describe_value(const json& v) {
+  std::string s = v.type_name();
+  if (v.is_string() || v.is_number() || v.is_boolean()) {
+    std::string d = v.dump();
+    if (d.size() > 40) d = d.substr(0, 37) + "...";
+    s += " " + d;
+  }
+  return s;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// ---------------------------------------------------------------------------
+// Reading with field paths
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& why) const {
+    throw SceneFileError(file_ + ": " + (path.empty() ? std::string() : path + ": ") + why);
+  }
+
+  // Checks v is an object whose keys are all in `allowed`.
+  void object(const json& v, const std::string& path, std::initializer_list<const char*> allowed) const {
+    if (!v.is_object()) fail(path, "expected an object, got " + describe_value(v));
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      const std::string& k = it.key();
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || k == a;
+      if (ok) continue;
+      std::string best;
+      std::size_t best_d = std::numeric_limits<std::size_t>::max();
+      for (const char* a : allowed) {
+        const std::size_t d = edit_distance(k, a);
+        if (d < best_d) best_d = d, best = a;
+      }
+      std::string why = "unknown key";
+      if (best_d <= std::max<std::size_t>(1, std::min(k.size(), best.size()) / 3)) {
+        why += " (did you mean " + single_quoted(best) + "?)";
+      } else {
+        why += "; allowed here:";
+        for (const char* a : allowed) why += std::string(" ") + a;
+      }
+      fail(join_path(path, k), why);
+    }
+  }
+
+  static const json* find(const json& obj, const char* key) {
+    const auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+  }
+
+  const json& need(const json& obj, const std::string& path, const char* key) const {
+    const json* v = find(obj, key);
+    if (!v) fail(join_path(path, key), "missing required key");
+    return *v;
+  }
+
+  double number(const json& v, const std::string& path) const {
+    if (!v.is_number()) fail(path, "expected a number, got " + describe_value(v));
+    return v.get<double>();
+  }
+
+  int integer(const json& v, const std::string& path) const {
+    constexpr long long kMax = std::numeric_limits<int>::max(), kMin = std::numeric_limits<int>::min();
+    if (v.is_number_unsigned()) {
+      if (v.get<unsigned long long>() > static_cast<unsigned long long>(kMax)) fail(path, "integer out of range");
+      return static_cast<int>(v.get<unsigned long long>());
+    }
+    if (v.is_number_integer()) {
+      const long long x = v.get<long long>();
+      if (x < kMin || x > kMax) fail(path, "integer out of range");
+      return static_cast<int>(x);
+    }
+    if (v.is_number_float()) {
+      const double x = v.get<double>();
+      if (x == std::floor(x) && std::fabs(x) <= static_cast<double>(kMax)) return static_cast<int>(x);
+    }
+    fail(path, "expected an integer, got " + describe_value(v));
+  }
+
+  bool boolean(const json& v, const std::string& path) const {
+    if (!v.is_boolean()) fail(path, "expected true or false, got " + describe_value(v));
+    return v.get<bool>();
+  }
+
+  std::string string(const json& v, const std::string& path) const {
+    if (!v.is_string()) fail(path, "expected a string, got " + describe_value(v));
+    return v.get<std::string>();
+  }
+
+  const json& array(const json& v, const std::string& path, const char* what) const {
+    if (!v.is_array()) fail(path, std::string("expected an array") + what + ", got " + describe_value(v));
+    return v;
+  }
+
+  Vec2 vec2(const json& v, const std::string& path) const {
+    if (!v.is_array() || v.size() != 2) fail(path, "expected [x, y] (an array of 2 numbers), got " + describe_value(v) +
+                                                       (v.is_array() ? " of " + std::to_string(v.size()) : ""));
+    return {number(v[0], index_path(path, 0)), number(v[1], index_path(path, 1))};
+  }
+
+  template <typename E>
+  E choice(const json& v, const std::string& path, std::initializer_list<std::pair<const char*, E>> options) const {
+    const std::string s = string(v, path);
+    std::string list;
+    for (const auto& [name, value] : options) {
+      if (s == name) return value;
+      list += std::string(list.empty() ? "" : ", ") + "\"" + name + "\"";
+    }
+    fail(path, "unknown value \"" + s + "\"; expected one of " + list);
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+// ---------------------------------------------------------------------------
+// Parsing: JSON syntax, duplicate keys, and where an overflowing number was.
+
+class PathTracker {
+ public:
+  // The path of the element being parsed now (the last key of the innermost
+  // object, or the next index of the innermost array).
+  std::string current() const {
+    if (stack_.empty()) return "";
+    const Frame& f = stack_.back();
+    return f.array ? index_path(f.path, f.index) : join_path(f.path, f.key);
+  }
+
+  void event(json::parse_event_t ev, const json& parsed, const Reader& reader) {
+    switch (ev) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start: {
+        Frame f;
+        f.array = ev == json::parse_event_t::array_start;
+        f.path = current();
+        stack_.push_back(std::move(f));
+        break;
+      }
+      case json::parse_event_t::key: {
+        Frame& f = stack_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second) reader.fail(current(), "duplicate key");
+        break;
+      }
+      case json::parse_event_t::value:
+        if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        stack_.pop_back();
+        if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+        break;
+    }
+  }
+
+ private:
+  struct Frame {
+    bool array = false;
+    std::string path;
+    std::size_t index = 0;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::vector<Frame> stack_;
+};
+
+// 1-based line and column of the 1-based byte position `byte` in `text`.
+std::pair<std::size_t, std::size_t> line_column(const std::string& text, std::size_t byte) {
+  const std::size_t pos = std::min(byte > 0 ? byte - 1 : 0, text.size());  // 0-based
+  std::size_t line = 1, line_start = 0;
+  for (std::size_t i = 0; i < pos; ++i)
+    if (text[i] == '\n') ++line, line_start = i + 1;
+  return {line, pos - line_start + 1};
+}
+
+json parse_json(const std::string& text, const Reader& reader) {
+  PathTracker tracker;
+  try {
+    return json::parse(text, [&](int, json::parse_event_t ev, json& parsed) {
+      tracker.event(ev, parsed, reader);
+      return true;
+    });
+  } catch (const json::parse_error& e) {
+    // e.what(): "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error while ..."
+    std::string detail = e.what();
+    const std::size_t colon = detail.find(": ");
+    if (colon != std::string::npos) detail = detail.substr(colon + 2);
+    if (detail.rfind("syntax error", 0) == 0) detail = "JSON " + detail;
+    const auto [line, col] = line_column(text, e.byte);
+    const std::string where = tracker.current();
+    throw SceneFileError(reader.file() + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " +
+                         (where.empty() ? "" : "near " + where + ": ") + detail);
+  } catch (const json::out_of_range& e) {
+    // A number beyond the double range ("1e400"): JSON has no infinity/NaN.
+    std::string detail = e.what();
+    const std::size_t b = detail.find("] ");
+    if (b != std::string::npos) detail = detail.substr(b + 2);
+    reader.fail(tracker.current(), detail + " (not representable as a finite double)");
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Sections
+
+struct Names {
+  std::vector<std::string> materials;  // optional material names
+};
+
+std::vector<Vec2> rect_vertices(const Reader& r, const json& v, const std::string& path) {
+  if (!v.is_array() || v.size() != 4)
+    r.fail(path, "expected [x0, y0, width, height] (an array of 4 numbers), got " + describe_value(v));
+  double a[4];
+  for (std::size_t i = 0; i < 4; ++i) a[i] = r.number(v[i], index_path(path, i));
+  if (!(a[2] > 0.0 && a[3] > 0.0)) r.fail(path, "width and height must be positive");
+  return {{a[0], a[1]}, {a[0] + a[2], a[1]}, {a[0] + a[2], a[1] + a[3]}, {a[0], a[1] + a[3]}};
+}
+
+Material read_material(const Reader& r, const json& v, const std::string& path, std::string& name) {
+  r.object(v, path, {"name", "density", "young", "poisson"});
+  Material m;
+  if (const json* n = Reader::find(v, "name")) name = r.string(*n, join_path(path, "name"));
+  m.density = r.number(r.need(v, path, "density"), join_path(path, "density"));
+  m.young = r.number(r.need(v, path, "young"), join_path(path, "young"));
+  m.poisson = r.number(r.need(v, path, "poisson"), join_path(path, "poisson"));
+  return m;
+}
+
+BlockSpec read_block(const Reader& r, const json& v, const std::string& path, const Names& names) {
+  r.object(v, path,
+           {"name", "vertices", "rect", "rotate_deg", "about", "velocity", "spin", "fixed", "material", "group"});
+  BlockSpec b;
+  const json* verts = Reader::find(v, "vertices");
+  const json* rect = Reader::find(v, "rect");
+  if (verts && rect) r.fail(path, "give either 'vertices' or 'rect', not both");
+  if (!verts && !rect) r.fail(join_path(path, "vertices"), "missing required key (or give 'rect')");
+  if (verts) {
+    const std::string vp = join_path(path, "vertices");
+    r.array(*verts, vp, " of [x, y] points");
+    for (std::size_t i = 0; i < verts->size(); ++i) b.vertices.push_back(r.vec2((*verts)[i], index_path(vp, i)));
+  } else {
+    b.vertices = rect_vertices(r, *rect, join_path(path, "rect"));
+  }
+  const json* rot = Reader::find(v, "rotate_deg");
+  const json* about = Reader::find(v, "about");
+  if (about && !rot) r.fail(join_path(path, "about"), "only used with 'rotate_deg'");
+  if (rot) {
+    const double deg = r.number(*rot, join_path(path, "rotate_deg"));
+    Vec2 pivot{};
+    if (about) {
+      pivot = r.vec2(*about, join_path(path, "about"));
+    } else if (!b.vertices.empty()) {
+      for (const Vec2& p : b.vertices) pivot += p;
+      pivot = pivot / static_cast<double>(b.vertices.size());
+    }
+    const double a = deg * kPi / 180.0;
+    for (Vec2& p : b.vertices) p = pivot + rotate(p - pivot, a);
+  }
+  if (const json* x = Reader::find(v, "name")) b.name = r.string(*x, join_path(path, "name"));
+  if (const json* x = Reader::find(v, "velocity")) b.velocity = r.vec2(*x, join_path(path, "velocity"));
+  if (const json* x = Reader::find(v, "spin")) b.spin = r.number(*x, join_path(path, "spin"));
+  if (const json* x = Reader::find(v, "fixed")) b.fixed = r.boolean(*x, join_path(path, "fixed"));
+  if (const json* x = Reader::find(v, "group")) b.group = r.integer(*x, join_path(path, "group"));
+  if (const json* x = Reader::find(v, "material")) {
+    const std::string mp = join_path(path, "material");
+    if (x->is_string()) {
+      const std::string name = x->get<std::string>();
+      const auto it = std::find(names.materials.begin(), names.materials.end(), name);
+      if (it == names.materials.end()) r.fail(mp, "no material named \"" + name + "\"");
+      if (std::find(it + 1, names.materials.end(), name) != names.materials.end())
+        r.fail(mp, "material name \"" + name + "\" is ambiguous (several materials have it)");
+      b.material = static_cast<int>(it - names.materials.begin());
+    } else if (x->is_number()) {
+      b.material = r.integer(*x, mp);
+    } else {
+      r.fail(mp, "expected a material index or name, got " + describe_value(*x));
+    }
+  }
+  if (b.fixed && (b.velocity != Vec2{} || b.spin != 0.0))
+    r.fail(join_path(path, Reader::find(v, "velocity") ? "velocity" : "spin"),
+           "a fixed block never moves: give it no velocity or spin");
+  return b;
+}
+
+BoundarySegment read_boundary(const Reader& r, const json& v, const std::string& path) {
+  r.object(v, path, {"a", "b", "depth", "group"});
+  BoundarySegment s;
+  s.a = r.vec2(r.need(v, path, "a"), join_path(path, "a"));
+  s.b = r.vec2(r.need(v, path, "b"), join_path(path, "b"));
+  if (const json* x = Reader::find(v, "depth")) s.depth = r.number(*x, join_path(path, "depth"));
+  if (const json* x = Reader::find(v, "group")) s.group = r.integer(*x, join_path(path, "group"));
+  return s;
+}
+
+ContactParams read_contact(const Reader& r, const json& v, const std::string& path) {
+  r.object(v, path,
+           {"kn", "kt", "friction_deg", "friction_rules", "h_rule", "h", "integration", "small_edge_fraction"});
+  ContactParams c;
+  c.kn = r.number(r.need(v, path, "kn"), join_path(path, "kn"));
+  if (const json* x = Reader::find(v, "kt")) c.kt = r.number(*x, join_path(path, "kt"));
+  if (const json* x = Reader::find(v, "friction_deg")) c.friction_deg = r.number(*x, join_path(path, "friction_deg"));
+  if (const json* x = Reader::find(v, "friction_rules")) {
+    const std::string rp = join_path(path, "friction_rules");
+    r.array(*x, rp, " of {\"groups\": [a, b], \"friction_deg\": phi}");
+    for (std::size_t i = 0; i < x->size(); ++i) {
+      const json& e = (*x)[i];
+      const std::string ep = index_path(rp, i);
+      r.object(e, ep, {"groups", "friction_deg"});
+      const json& g = r.need(e, ep, "groups");
+      const std::string gp = join_path(ep, "groups");
+      if (!g.is_array() || g.size() != 2) r.fail(gp, "expected [a, b] (two group numbers), got " + describe_value(g));
+      FrictionRule rule;
+      rule.group_a = r.integer(g[0], index_path(gp, 0));
+      rule.group_b = r.integer(g[1], index_path(gp, 1));
+      rule.friction_deg = r.number(r.need(e, ep, "friction_deg"), join_path(ep, "friction_deg"));
+      c.friction_rules.push_back(rule);
+    }
+  }
+  if (const json* x = Reader::find(v, "h_rule"))
+    c.h_rule = r.choice<HRule>(*x, join_path(path, "h_rule"),
+                               {{"min_max_edge", HRule::kMinMaxEdge},
+                                {"mean_edge", HRule::kMeanEdge},
+                                {"given", HRule::kGiven},
+                                {"inscribed_radius", HRule::kInscribedRadius}});
+  if (const json* x = Reader::find(v, "h")) {
+    if (c.h_rule != HRule::kGiven) r.fail(join_path(path, "h"), "only used with \"h_rule\": \"given\"");
+    c.h = r.number(*x, join_path(path, "h"));
+  }
+  if (const json* x = Reader::find(v, "integration"))
+    c.integration = r.choice<Integration>(
+        *x, join_path(path, "integration"),
+        {{"paper_bisector", Integration::kPaperBisector}, {"exact_envelope", Integration::kExactEnvelope}});
+  if (const json* x = Reader::find(v, "small_edge_fraction"))
+    c.small_edge_fraction = r.number(*x, join_path(path, "small_edge_fraction"));
+  return c;
+}
+
+OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
+  OutputSpec out;
+  const std::string path = "output";
+  const std::vector<double> default_snapshots =
+      scene.duration > 0.0 ? std::vector<double>{0.0, scene.duration} : std::vector<double>{0.0};
+  if (!v) {
+    out.snapshot_times = default_snapshots;
+    return out;
+  }
+  r.object(*v, path, {"every", "snapshots", "tracked_blocks"});
+  if (const json* x = Reader::find(*v, "every")) {
+    out.every = r.integer(*x, "output.every");
+    if (out.every < 1) r.fail("output.every", "must be >= 1 (steps between time-series rows)");
+  }
+  if (const json* x = Reader::find(*v, "snapshots")) {
+    r.array(*x, "output.snapshots", " of times");
+    for (std::size_t i = 0; i < x->size(); ++i) {
+      const std::string p = index_path("output.snapshots", i);
+      const double t = r.number((*x)[i], p);
+      if (!(t >= 0.0 && t <= scene.duration))
+        r.fail(p, "snapshot time must lie in [0, duration] = [0, " + format_number(scene.duration) + "] s");
+      out.snapshot_times.push_back(t);
+    }
+    std::sort(out.snapshot_times.begin(), out.snapshot_times.end());
+  } else {
+    out.snapshot_times = default_snapshots;
+  }
+  if (const json* x = Reader::find(*v, "tracked_blocks")) {
+    r.array(*x, "output.tracked_blocks", " of block indices or names");
+    const int n = static_cast<int>(scene.blocks.size());
+    for (std::size_t i = 0; i < x->size(); ++i) {
+      const json& e = (*x)[i];
+      const std::string p = index_path("output.tracked_blocks", i);
+      int id = -1;
+      if (e.is_string()) {
+        const std::string name = e.get<std::string>();
+        for (int k = 0; k < n; ++k)
+          if (scene.blocks[static_cast<std::size_t>(k)].name == name) {
+            if (id >= 0) r.fail(p, "block name \"" + name + "\" is ambiguous (several blocks have it)");
+            id = k;
+          }
+        if (id < 0) r.fail(p, "no block named \"" + name + "\"");
+      } else if (e.is_number()) {
+        id = r.integer(e, p);
+        if (id < 0 || id >= n)
+          r.fail(p, "no block " + std::to_string(id) + " (the scene has " + std::to_string(n) + " blocks)");
+      } else {
+        r.fail(p, "expected a block index or name, got " + describe_value(e));
+      }
+      if (std::find(out.tracked_blocks.begin(), out.tracked_blocks.end(), id) != out.tracked_blocks.end())
+        r.fail(p, "block " + std::to_string(id) + " is listed twice");
+      out.tracked_blocks.push_back(id);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+SceneFile parse_scene(const std::string& json_text, const std::string& file_label) {
+  const Reader r(file_label);
+  const json root = parse_json(json_text, r);
+  if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
+  r.object(root, "",
+           {"name", "description", "materials", "blocks", "boundaries", "contact", "gravity", "strains",
+            "broad_phase", "initial_overlap", "dt", "duration", "output"});
+
+  SceneFile f;
+  Scene& s = f.scene;
+  if (const json* x = Reader::find(root, "name")) s.name = r.string(*x, "name");
+  if (const json* x = Reader::find(root, "description")) r.string(*x, "description");
+
+  Names names;
+  const json& mats = r.array(r.need(root, "", "materials"), "materials", " of materials");
+  s.materials.clear();
+  for (std::size_t i = 0; i < mats.size(); ++i) {
+    names.materials.emplace_back();
+    s.materials.push_back(read_material(r, mats[i], index_path("materials", i), names.materials.back()));
+  }
+  const json& blocks = r.array(r.need(root, "", "blocks"), "blocks", " of blocks");
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    s.blocks.push_back(read_block(r, blocks[i], index_path("blocks", i), names));
+  if (const json* x = Reader::find(root, "boundaries")) {
+    r.array(*x, "boundaries", " of segments");
+    for (std::size_t i = 0; i < x->size(); ++i)
+      s.boundaries.push_back(read_boundary(r, (*x)[i], index_path("boundaries", i)));
+  }
+  s.contact = read_contact(r, r.need(root, "", "contact"), "contact");
+  if (const json* x = Reader::find(root, "gravity")) s.gravity = r.vec2(*x, "gravity");
+  if (const json* x = Reader::find(root, "strains")) s.strains = r.boolean(*x, "strains");
+  if (const json* x = Reader::find(root, "broad_phase"))
+    s.broad_phase = r.choice<BroadPhase>(*x, "broad_phase", {{"none", BroadPhase::kNone}, {"sweep", BroadPhase::kSweep}});
+  if (const json* x = Reader::find(root, "initial_overlap")) s.initial_overlap = r.number(*x, "initial_overlap");
+  s.dt = r.number(r.need(root, "", "dt"), "dt");
+  s.duration = r.number(r.need(root, "", "duration"), "duration");
+
+  // The kernel's semantic checks (polygons, ranges, overlaps at t = 0).
+  try {
+    check_scene(s);
+  } catch (const SceneError& e) {
+    throw SceneFileError(file_label + ": " + e.what());
+  }
+  // Consistency that only matters for a file: a friction angle that would be
+  // silently ignored.
+  if (!s.contact.friction()) {
+    if (s.contact.friction_deg > 0.0)
+      r.fail("contact.friction_deg", "has no effect with contact.kt = 0 (kt > 0 switches friction on)");
+    if (!s.contact.friction_rules.empty())
+      r.fail("contact.friction_rules", "have no effect with contact.kt = 0 (kt > 0 switches friction on)");
+  }
+  f.output = read_output(r, Reader::find(root, "output"), s);
+  return f;
+}
+
+SceneFile load_scene_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneFileError(path + ": cannot open: " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneFileError(path + ": read error");
+  return parse_scene(text.str(), path);
+}
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson vec2_json(Vec2 v) { return ojson::array({v.x, v.y}); }
+
+const char* name_of(HRule h) {
+  switch (h) {
+    case HRule::kMinMaxEdge: return "min_max_edge";
+    case HRule::kMeanEdge: return "mean_edge";
+    case HRule::kGiven: return "given";
+    case HRule::kInscribedRadius: return "inscribed_radius";
+  }
+  return "min_max_edge";
+}
+
+}  // namespace
+
+std::string write_scene(const SceneFile& file) {
+  const Scene& s = file.scene;
+  ojson root = ojson::object();
+  if (!s.name.empty()) root["name"] = s.name;
+  ojson mats = ojson::array();
+  for (const Material& m : s.materials)
+    mats.push_back({{"density", m.density}, {"young", m.young}, {"poisson", m.poisson}});
+  root["materials"] = mats;
+  ojson blocks = ojson::array();
+  for (const BlockSpec& b : s.blocks) {
+    ojson jb = ojson::object();
+    if (!b.name.empty()) jb["name"] = b.name;
+    ojson verts = ojson::array();
+    for (const Vec2& p : b.vertices) verts.push_back(vec2_json(p));
+    jb["vertices"] = verts;
+    jb["velocity"] = vec2_json(b.velocity);
+    jb["spin"] = b.spin;
+    jb["fixed"] = b.fixed;
+    jb["material"] = b.material;
+    jb["group"] = b.group;
+    blocks.push_back(jb);
+  }
+  root["blocks"] = blocks;
+  ojson bounds = ojson::array();
+  for (const BoundarySegment& g : s.boundaries)
+    bounds.push_back({{"a", vec2_json(g.a)}, {"b", vec2_json(g.b)}, {"depth", g.depth}, {"group", g.group}});
+  root["boundaries"] = bounds;
+  const ContactParams& c = s.contact;
+  ojson contact = {{"kn", c.kn},
+                  {"kt", c.kt},
+                  {"friction_deg", c.friction_deg},
+                  {"h_rule", name_of(c.h_rule)},
+                  {"integration", c.integration == Integration::kExactEnvelope ? "exact_envelope" : "paper_bisector"},
+                  {"small_edge_fraction", c.small_edge_fraction}};
+  ojson rules = ojson::array();
+  for (const FrictionRule& fr : c.friction_rules)
+    rules.push_back({{"groups", {fr.group_a, fr.group_b}}, {"friction_deg", fr.friction_deg}});
+  contact["friction_rules"] = rules;
+  if (c.h_rule == HRule::kGiven) contact["h"] = c.h;
+  root["contact"] = contact;
+  root["gravity"] = vec2_json(s.gravity);
+  root["strains"] = s.strains;
+  root["broad_phase"] = s.broad_phase == BroadPhase::kSweep ? "sweep" : "none";
+  root["initial_overlap"] = s.initial_overlap;
+  root["dt"] = s.dt;
+  root["duration"] = s.duration;
+  root["output"] = {{"every", file.output.every},
+                    {"snapshots", file.output.snapshot_times},
+                    {"tracked_blocks", file.output.tracked_blocks}};
+  return root.dump(2) + "\n";
+}
+
+void save_scene_file(const std::string& path, const SceneFile& file) { write_file_atomic(path, write_scene(file)); }
+
+}  // namespace dda::io
