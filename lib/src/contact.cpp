@@ -9,7 +9,7 @@ namespace {
 
 // Demarcation points on one IP edge, as parameters t in [0, 1].
 struct Breaks {
-  std::array<double, 4 * kMaxVertices + 8> t{};
+  std::array<double, 4 * kMaxVertices + 8> t;  // left uninitialised: filled by add()
   int count = 0;
   void add(double x) {
     if (count < static_cast<int>(t.size()) && x >= 0.0 && x <= 1.0) t[count++] = x;
@@ -49,10 +49,13 @@ void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Breaks& out) {
   }
 }
 
-void add_bisector_breaks(const Polygon& poly, double small_edge, Vec2 a, Vec2 b, Breaks& out) {
-  std::array<Ray, kMaxVertices> rays;
-  const int n = bisector_rays(poly, small_edge, rays.data());
-  for (int r = 0; r < n; ++r) out.add(segment_ray_crossing(a, b, rays[r]));
+struct RaySet {
+  std::array<Ray, kMaxVertices> ray;
+  int count = 0;
+};
+
+void add_bisector_breaks(const RaySet& rays, Vec2 a, Vec2 b, Breaks& out) {
+  for (int r = 0; r < rays.count; ++r) out.add(segment_ray_crossing(a, b, rays.ray[r]));
 }
 
 double side_potential(const PotentialSide& side, Vec2 p) {
@@ -72,6 +75,14 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
   const Vec2 c = am.centroid;
   Vec2 force{};
   double moment = 0.0;  // about the IP centroid
+  // Bisector rays, once per call (paper rule only). Thread-local scratch:
+  // a RaySet is 2 KB of Vec2s that would otherwise be zeroed on every call.
+  static thread_local RaySet rays_cp, rays_tp;
+  rays_cp.count = rays_tp.count = 0;
+  if (rule == Integration::kPaperBisector) {
+    rays_cp.count = bisector_rays(*cp.poly, cp.small_edge, rays_cp.ray.data());
+    rays_tp.count = bisector_rays(*tp.poly, tp.small_edge, rays_tp.ray.data());
+  }
   for (int e = 0; e < ip.count; ++e) {
     const Vec2 a = ip.vertex(e), b = ip.vertex(ip.next(e));
     const Vec2 n = ip.normal(e);
@@ -87,8 +98,8 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     const bool on_cp = exit_distance(*cp.poly, mid) <= tol;
     const bool on_tp = exit_distance(*tp.poly, mid) <= tol;
     if (rule == Integration::kPaperBisector) {
-      if (!on_cp) add_bisector_breaks(*cp.poly, cp.small_edge, a, b, br);
-      if (!on_tp) add_bisector_breaks(*tp.poly, tp.small_edge, a, b, br);
+      if (!on_cp) add_bisector_breaks(rays_cp, a, b, br);
+      if (!on_tp) add_bisector_breaks(rays_tp, a, b, br);
     } else {
       if (!on_cp) add_envelope_breaks(*cp.poly, a, b, br);
       if (!on_tp) add_envelope_breaks(*tp.poly, a, b, br);

@@ -73,26 +73,40 @@ EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0) {
 OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
   if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
   if (tol < 0.0) tol = pair_tolerance(a, b);
-  // a0: any point of A works; its centroid (Paper A) keeps E near the origin
-  // scale of the inputs. Computed cheaply as the vertex mean (inside A).
-  Vec2 a0{};
-  for (int i = 0; i < a.count; ++i) a0 += a.vertex(i);
-  a0 = a0 / static_cast<double>(a.count);
-  const EntranceBlock e = entrance_block(a, b, a0);
-  switch (locate_point(e.poly, a0, tol)) {
-    case PointLocation::kInside: return OverlapState::kOverlapping;
-    case PointLocation::kOnBoundary: return OverlapState::kTouching;
-    case PointLocation::kOutside: return OverlapState::kSeparate;
+  // a0 in E(A, B) (Table 2), evaluated on E's edge lines without building E:
+  // every edge of E has the outward normal N of an edge of B or of -A and
+  // passes through its support point, so the signed distance of a0 to it is
+  //   edge j of B  (N = n_j):  min_i n_j . a_i - n_j . b_j
+  //   edge i of -A (N = -n_i): min_j n_i . b_j - n_i . a_i
+  // (a0 cancels: the verdict does not depend on the reference point). a0 is
+  // inside E iff all are negative: the same half-planes entrance_block()
+  // builds, in O(n m) with no construction; d = their maximum.
+  double d = -DBL_MAX;
+  for (int j = 0; j < b.count; ++j) {
+    const Vec2 n = b.normal(j);
+    double lo = DBL_MAX;
+    for (int i = 0; i < a.count; ++i) lo = std::min(lo, dot(n, a.vertex(i)));
+    d = std::max(d, lo - dot(n, b.vertex(j)));
+    if (d > tol) return OverlapState::kSeparate;
   }
-  return OverlapState::kSeparate;
+  for (int i = 0; i < a.count; ++i) {
+    const Vec2 n = a.normal(i);
+    double lo = DBL_MAX;
+    for (int j = 0; j < b.count; ++j) lo = std::min(lo, dot(n, b.vertex(j)));
+    d = std::max(d, lo - dot(n, a.vertex(i)));
+    if (d > tol) return OverlapState::kSeparate;
+  }
+  return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
 }
 
-Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol) {
+void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& result) {
   if (tol < 0.0) tol = pair_tolerance(contact, target);
   // Two buffers, ping-ponged: each cut of a convex polygon by a half-plane
-  // adds at most one vertex, so n + m fits in kMaxVertices.
-  Polygon buf[2];
-  buf[0] = target;
+  // adds at most one vertex, so n + m fits in kMaxVertices. Thread-local
+  // scratch: a Polygon is 1 KB that would otherwise be zeroed on every call.
+  static thread_local Polygon buf[2];
+  buf[0].count = target.count;
+  for (int i = 0; i < target.count; ++i) buf[0].v[i] = target.v[i];
   int cur = 0;
   for (int c = 0; c < contact.count && buf[cur].count >= 3; ++c) {
     const Polygon& in = buf[cur];
@@ -116,6 +130,16 @@ Polygon intersection_polygon(const Polygon& contact, const Polygon& target, doub
   }
   Polygon& ip = buf[cur];
   clean_polygon(ip, tol);
+  result.count = ip.count;
+  for (int i = 0; i < ip.count; ++i) {
+    result.v[i] = ip.v[i];
+    result.n[i] = ip.n[i];
+  }
+}
+
+Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol) {
+  Polygon ip;
+  intersection_polygon(contact, target, tol, ip);
   return ip;
 }
 

@@ -163,6 +163,7 @@ void Simulation::build_blocks() {
   stress_.assign(n, Vec3::Zero());
   density_.assign(n, 0.0);
   mass_.assign(n, 0.0);
+  tol_.assign(n, 0.0);
   h_.assign(n, 0.0);
   elastic_.assign(n, Mat3::Zero());
   fixed_.assign(n, 1);
@@ -281,6 +282,7 @@ void Simulation::update_geometry() {
     update_normals(poly_[i]);
     moments_[i] = area_moments(poly_[i]);
     boxes_[i] = bounds(poly_[i]);
+    tol_[i] = geometric_tolerance(poly_[i]);
     // Mass is conserved: the density follows the strained area.
     if (steps_ == 0) mass_[i] = density_[i] * moments_[i].area;
     density_[i] = mass_[i] / moments_[i].area;
@@ -337,65 +339,94 @@ void Simulation::compute_forces() {
     if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
   }
   find_candidate_pairs();
+
+  // 1. Each candidate takes over its pair's history (friction only): both
+  //    lists are sorted by key, so one merge pass.
+  const std::size_t nc = candidates_.size();
+  results_.resize(nc);
+  if (friction_) {
+    std::size_t h = 0;
+    for (std::size_t k = 0; k < nc; ++k) {
+      const auto [i, j] = candidates_[k];
+      const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
+      while (h < history_.size() && history_[h].key < key) ++h;
+      PairHistory& hist = results_[k].history;
+      if (h < history_.size() && history_[h].key == key) {
+        hist = history_[h];
+      } else {
+        hist = PairHistory{};
+        hist.key = key;
+      }
+    }
+  }
+  // 2. Pair forces, independent of each other: in parallel when threads > 1.
+  const long n = static_cast<long>(nc);
+#if defined(DDA_HAVE_OPENMP)
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads_) if (threads_ > 1 && n > 64)
+#endif
+  for (long k = 0; k < n; ++k) {
+    PairResult& r = results_[static_cast<std::size_t>(k)];
+    r.active = pair_force(candidates_[static_cast<std::size_t>(k)].first,
+                          candidates_[static_cast<std::size_t>(k)].second, r);
+  }
+  // 3. Scatter in candidate order: the sums are the same bits for any
+  //    thread count. A pair that does not touch forgets its history.
   contact_info_.clear();
   next_history_.clear();
-  std::size_t h = 0;
-  for (const auto& [i, j] : candidates_) {
-    PairHistory* hist = nullptr;
-    if (friction_) {
-      const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
-      while (h < history_.size() && history_[h].key < key) ++h;  // both sorted by key
-      PairHistory fresh;
-      fresh.key = key;
-      next_history_.push_back(h < history_.size() && history_[h].key == key ? history_[h] : fresh);
-      hist = &next_history_.back();
-    }
-    const std::size_t before = contact_info_.size();
-    add_contact_force(i, j, hist);
-    // A pair that does not touch forgets its history (zero on next touch).
-    if (friction_ && contact_info_.size() == before) next_history_.pop_back();
+  for (std::size_t k = 0; k < nc; ++k) {
+    const PairResult& r = results_[k];
+    if (!r.active) continue;
+    const ContactInfo& info = r.info;
+    const Vec2 f = info.normal_force + info.tangential_force;
+    // Eqs. 22-23 and 28-29: into both blocks through T(pg)^T.
+    if (!fixed_[info.cp]) force_[info.cp] += point_load(moments_[info.cp].centroid, info.point, f);
+    if (!fixed_[info.tp]) force_[info.tp] -= point_load(moments_[info.tp].centroid, info.point, f);
+    contact_info_.push_back(info);
+    if (friction_) next_history_.push_back(r.history);
   }
   if (friction_) history_.swap(next_history_);
 }
 
-void Simulation::add_contact_force(int cp, int tp, PairHistory* hist) {
+bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
   const Polygon& a = poly_[cp];
   const Polygon& b = poly_[tp];
-  const double tol = pair_tolerance(a, b);
-  if (overlap_state(a, b, tol) != OverlapState::kOverlapping) return;  // Sect. 3.1.2
-  const Polygon ip = intersection_polygon(a, b, tol);                   // Sect. 3.1.3
-  if (ip.count < 3) return;
+  const double tol = std::max(tol_[cp], tol_[tp]);
+  if (overlap_state(a, b, tol) != OverlapState::kOverlapping) return false;  // Sect. 3.1.2
+  static thread_local Polygon ip;
+  intersection_polygon(a, b, tol, ip);  // Sect. 3.1.3
+  if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
   const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp]};
   const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp]};
   const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol);  // Eqs. 11-20
-  if (!nf.valid) return;
+  if (!nf.valid) return false;
 
-  ContactInfo info;
+  ContactInfo& info = r.info;
+  info = ContactInfo{};
   info.cp = cp;
   info.tp = tp;
   info.normal_force = nf.force;
   info.point = nf.point;
   info.ip_area = nf.ip_area;
   info.ip_length = 0.5 * perimeter(ip);
-  Vec2 f = nf.force;
-  if (hist) {
+  if (friction_) {
     // Coulomb friction with stick/slide history, Eqs. 24-26.
+    PairHistory& hist = r.history;
     const double fn = length(nf.force);
     const Vec2 ng = nf.force / fn;
-    const Vec2 dtan = hist->d - dot(hist->d, ng) * ng;
+    const Vec2 dtan = hist.d - dot(hist.d, ng) * ng;
     const double lt = length(dtan);
     const Vec2 s = lt > 0.0 ? dtan / lt : Vec2{};
     const double limit = fn * friction_tan(cp, tp);
     Vec2 ft{};
-    if (!hist->sliding) {
+    if (!hist.sliding) {
       if (c.kt * lt < limit) {
         ft = -c.kt * dtan;
       } else {
         ft = -limit * s;
-        hist->sliding = true;
+        hist.sliding = true;
       }
-    } else if (dot(hist->slide_dir, dtan) > 0.0) {
+    } else if (dot(hist.slide_dir, dtan) > 0.0) {
       // Eq. 26 keeps sliding while f_t(n-1) . d_tan < 0. With f_t(n-1) =
       // -limit s(n-1) that is s(n-1) . d_tan > 0, the form used here: it
       // stays defined when the limit is zero (phi = 0 or fn = 0), where the
@@ -403,18 +434,14 @@ void Simulation::add_contact_force(int cp, int tp, PairHistory* hist) {
       ft = -limit * s;
     } else {
       ft = -c.kt * dtan;
-      hist->sliding = false;
+      hist.sliding = false;
     }
-    if (hist->sliding && lt > 0.0) hist->slide_dir = s;
-    hist->point = nf.point;
+    if (hist.sliding && lt > 0.0) hist.slide_dir = s;
+    hist.point = nf.point;
     info.tangential_force = ft;
-    info.sliding = hist->sliding;
-    f += ft;
+    info.sliding = hist.sliding;
   }
-  // Eqs. 22-23 and 28-29: into both blocks through T(pg)^T.
-  if (!fixed_[cp]) force_[cp] += point_load(moments_[cp].centroid, nf.point, f);
-  if (!fixed_[tp]) force_[tp] -= point_load(moments_[tp].centroid, nf.point, f);
-  contact_info_.push_back(info);
+  return true;
 }
 
 void Simulation::kick() {

@@ -31,7 +31,9 @@ enum class OverlapState { kSeparate, kTouching, kOverlapping };
 
 // A and B overlap iff a0 lies inside E(A,B) (Table 2). a0 on E's boundary
 // (within tol) is touching: boundaries meet, interiors do not. tol < 0 means
-// the geometric tolerance of the two inputs.
+// the geometric tolerance of the two inputs. Evaluated on E's edge lines
+// directly (see the source), which is what entrance_block() + locate_point()
+// decide, without building E; the property tests check both against CGAL.
 OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol = -1.0);
 inline bool overlaps(const Polygon& a, const Polygon& b) {
   return overlap_state(a, b) == OverlapState::kOverlapping;
@@ -43,6 +45,8 @@ inline bool overlaps(const Polygon& a, const Polygon& b) {
 // a vertex or along an edge makes no duplicate vertex or zero-length edge.
 // Returns an empty polygon (count 0) when the interiors do not overlap.
 Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol = -1.0);
+// The same, into `out` (no 1 KB Polygon constructed: for the hot path).
+void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& out);
 
 // Tolerance used for a pair: the larger of the two polygons' tolerances.
 double pair_tolerance(const Polygon& a, const Polygon& b);

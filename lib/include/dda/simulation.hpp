@@ -58,6 +58,10 @@ class Simulation {
   double time() const { return time_; }
   std::int64_t step_count() const { return steps_; }
   double dt() const { return dt_; }
+  // Threads for the contact loop (OpenMP builds; 1 otherwise). Results are
+  // bit-identical for any count: pair forces are summed in a fixed order.
+  void set_threads(int n) { threads_ = n < 1 ? 1 : n; }
+  int threads() const { return threads_; }
   const Scene& scene() const { return scene_; }
 
   int block_count() const { return static_cast<int>(poly_.size()); }
@@ -108,7 +112,13 @@ class Simulation {
   void update_geometry();
   void compute_forces();
   void find_candidate_pairs();
-  void add_contact_force(int cp, int tp, PairHistory* history);
+  // One candidate pair's contact, computed independently of all others.
+  struct PairResult {
+    bool active = false;
+    ContactInfo info;
+    PairHistory history;
+  };
+  bool pair_force(int cp, int tp, PairResult& r) const;
   void kick();
   void check_state();
   void predict_critical_step();
@@ -131,7 +141,7 @@ class Simulation {
   std::vector<Vec3> stress_;
 
   // Per-block constants and bookkeeping.
-  std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
+  std::vector<double> density_, mass_, h_, tol_;  // density follows area: mass_ is conserved
   std::vector<Mat3> elastic_;
   std::vector<char> fixed_;
   std::vector<int> group_;
@@ -146,6 +156,8 @@ class Simulation {
   // Contacts.
   std::vector<std::pair<int, int>> candidates_;
   std::vector<PairHistory> history_, next_history_;
+  std::vector<PairResult> results_;
+  int threads_ = 1;
   std::vector<ContactInfo> contact_info_;
   std::vector<Aabb> boxes_;
   std::vector<int> order_;
