@@ -50,7 +50,7 @@ void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Breaks& out) {
 }
 
 struct RaySet {
-  std::array<Ray, kMaxVertices> ray;
+  std::array<Ray, 2 * kMaxVertices> ray;
   int count = 0;
 };
 
@@ -80,8 +80,8 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
   static thread_local RaySet rays_cp, rays_tp;
   rays_cp.count = rays_tp.count = 0;
   if (rule == Integration::kPaperBisector) {
-    rays_cp.count = bisector_rays(*cp.poly, cp.small_edge, rays_cp.ray.data());
-    rays_tp.count = bisector_rays(*tp.poly, tp.small_edge, rays_tp.ray.data());
+    rays_cp.count = bisector_rays(*cp.poly, cp.small_edge, cp.small_edge_rays, rays_cp.ray.data());
+    rays_tp.count = bisector_rays(*tp.poly, tp.small_edge, tp.small_edge_rays, rays_tp.ray.data());
   }
   for (int e = 0; e < ip.count; ++e) {
     const Vec2 a = ip.vertex(e), b = ip.vertex(ip.next(e));

@@ -56,7 +56,7 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
   return best;
 }
 
-int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
+int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out) {
   const int n = poly.count;
   int count = 0;
   // Inward bisector at vertex i, between edges i-1 and i.
@@ -76,7 +76,7 @@ int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
     const double s = cross(pb - pa, db) / den;
     const Vec2 node = pa + s * da;
     const Vec2 dir = normalized(-(poly.normal(poly.prev(a)) + poly.normal(b)));
-    replaced[a] = replaced[b] = true;
+    if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced[a] = replaced[b] = true;
     out[count++] = {node, dir};
   }
   for (int i = 0; i < n; ++i)

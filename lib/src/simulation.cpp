@@ -164,6 +164,7 @@ void Simulation::build_blocks() {
   density_.assign(n, 0.0);
   mass_.assign(n, 0.0);
   tol_.assign(n, 0.0);
+  radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
   elastic_.assign(n, Mat3::Zero());
   fixed_.assign(n, 1);
@@ -396,8 +397,8 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
   intersection_polygon(a, b, tol, ip);  // Sect. 3.1.3
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
-  const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp]};
-  const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp]};
+  const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays};
+  const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays};
   const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol);  // Eqs. 11-20
   if (!nf.valid) return false;
 
@@ -426,11 +427,12 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
         ft = -limit * s;
         hist.sliding = true;
       }
-    } else if (dot(hist.slide_dir, dtan) > 0.0) {
+    } else if (limit <= 0.0 || dot(hist.slide_dir, dtan) > 0.0) {
       // Eq. 26 keeps sliding while f_t(n-1) . d_tan < 0. With f_t(n-1) =
       // -limit s(n-1) that is s(n-1) . d_tan > 0, the form used here: it
-      // stays defined when the limit is zero (phi = 0 or fn = 0), where the
-      // literal test would stick every other step.
+      // stays defined when the limit is zero (phi = 0), where the literal
+      // test would stick every other step: a zero limit keeps sliding with
+      // zero force (it has no sliding direction yet when it started at rest).
       ft = -limit * s;
     } else {
       ft = -c.kt * dtan;
@@ -484,8 +486,16 @@ void Simulation::kick() {
 }
 
 void Simulation::check_state() {
-  const double motion_limit = scene_.guards.max_step_motion * min_inscribed_radius_;
+  // The step-motion limit of a block uses the thinnest block within its
+  // reach (itself and its broad-phase candidates): a block in free flight is
+  // not stopped because a thin plate exists somewhere else.
+  reach_radius_ = radius_;
+  for (const auto& [i, j] : candidates_) {
+    reach_radius_[i] = std::min(reach_radius_[i], radius_[j]);
+    reach_radius_[j] = std::min(reach_radius_[j], radius_[i]);
+  }
   for (int i = 0; i < block_count(); ++i) {
+    const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
     if (fixed_[i]) continue;
     const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
                         std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
@@ -503,7 +513,7 @@ void Simulation::check_state() {
     if (motion > motion_limit) {
       std::ostringstream s;
       s << "a vertex moved " << motion << " m in one step, more than " << scene_.guards.max_step_motion
-        << " of the smallest inscribed radius (" << min_inscribed_radius_ << " m)";
+        << " of the smallest inscribed radius within reach (" << reach_radius_[i] << " m)";
       stop(i, s.str());
     }
   }
@@ -542,39 +552,87 @@ double Simulation::block_strain_omega2(int i) const {
   return es.eigenvalues().maxCoeff();
 }
 
+namespace {
+
+// Point compliance of a block: the largest displacement per unit force of a
+// point of the block loaded there, max over p of lambda_max(T(p) M^-1 T(p)^T)
+// (Eqs. 1-3, 5a). It is a convex function of p, so the maximum is at a
+// vertex. Without strains M acts on (u, v, r) only. A contact of stiffness k
+// anywhere on the block adds at most k times this to omega^2.
+double point_compliance(const Polygon& poly, const AreaMoments& m, double density, bool strains) {
+  const Mat6 mm = mass_matrix(m, density);
+  Mat6 inv = Mat6::Zero();
+  if (strains) {
+    inv = mm.ldlt().solve(Mat6::Identity());
+  } else {
+    inv(0, 0) = 1.0 / mm(0, 0);
+    inv(1, 1) = 1.0 / mm(1, 1);
+    inv(2, 2) = 1.0 / mm(2, 2);
+  }
+  double c = 0.0;
+  for (int v = 0; v < poly.count; ++v) {
+    const double xt = poly.v[v].x - m.centroid.x, yt = poly.v[v].y - m.centroid.y;
+    Eigen::Matrix<double, 2, 6> t;
+    t << 1.0, 0.0, -yt, xt, 0.0, 0.5 * yt, 0.0, 1.0, xt, 0.0, yt, 0.5 * xt;
+    const Eigen::Matrix2d a = t * inv * t.transpose();
+    const double mean = 0.5 * (a(0, 0) + a(1, 1)), half = 0.5 * (a(0, 0) - a(1, 1));
+    c = std::max(c, mean + std::sqrt(half * half + a(0, 1) * a(0, 1)));
+  }
+  return c;
+}
+
+}  // namespace
+
 void Simulation::predict_critical_step() {
-  // Before any contact: each block pressed along its longest edge L by an
-  // identical block, k = kn L (1/H + 1/H), with translation k / m and the
-  // rotational mode k r^2 / I (r the largest centroid-vertex distance).
-  double w2 = 0.0;
+  // Before any contact: each block pressed along its longest edge L by a
+  // block with the smallest H of the assembly, k = kn L (1/H_i + 1/H_min)
+  // (+ kt with friction), at the block's most compliant point: omega^2 <=
+  // k c_i, twice that if the partner may be a free block as compliant as
+  // this one (more than one free block), plus the block's own strain modes
+  // (stiffnesses add: omega^2 of a sum <= the sum of the omega^2).
+  double w2 = 0.0, h_min = DBL_MAX;
+  int free_blocks = 0;
   min_inscribed_radius_ = DBL_MAX;
   for (int i = 0; i < block_count(); ++i) {
-    min_inscribed_radius_ = std::min(min_inscribed_radius_, inscribed_circle(poly_[i]).radius);
+    radius_[i] = inscribed_circle(poly_[i]).radius;
+    min_inscribed_radius_ = std::min(min_inscribed_radius_, radius_[i]);
+    h_min = std::min(h_min, h_[i]);
+    if (!fixed_[i]) ++free_blocks;
+  }
+  const double partner = free_blocks > 1 ? 2.0 : 1.0;
+  const double kt = friction_ ? scene_.contact.kt : 0.0;
+  for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
-    const double k = scene_.contact.kn * max_edge_length(poly_[i]) * 2.0 / h_[i];
-    double r2 = 0.0;
-    for (int v = 0; v < poly_[i].count; ++v) r2 = std::max(r2, length_squared(poly_[i].v[v] - moments_[i].centroid));
-    const double inertia = density_[i] * (moments_[i].sxx + moments_[i].syy);
-    w2 = std::max({w2, k / mass_[i] + k * r2 / inertia, block_strain_omega2(i)});
+    const double k = scene_.contact.kn * max_edge_length(poly_[i]) * (1.0 / h_[i] + 1.0 / h_min) + kt;
+    const double c = point_compliance(poly_[i], moments_[i], density_[i], strains_);
+    w2 = std::max(w2, partner * k * c + block_strain_omega2(i));
   }
   dt_crit_prior_ = w2 > 0.0 ? 2.0 / std::sqrt(w2) : DBL_MAX;
 }
 
 double Simulation::critical_time_step() const {
-  // Contact stiffness summed per block from the current contacts.
-  std::vector<double> kt(poly_.size(), 0.0), kr(poly_.size(), 0.0);
+  // Each current contact is a spring k = kn L (1/H_cp + 1/H_tp) (+ kt with
+  // friction), L its length, between the two blocks. Block Gershgorin bound
+  // on the largest eigenvalue of M^-1 K: omega^2 <= max over blocks i of
+  // strain_i + sum over i's contacts of k (c_i + sqrt(c_i c_j)), c the point
+  // compliance (0 for a fixed block).
+  std::vector<double> comp(poly_.size(), -1.0), row(poly_.size(), 0.0);
+  auto compliance = [&](int b) {
+    if (fixed_[b]) return 0.0;
+    if (comp[b] < 0.0) comp[b] = point_compliance(poly_[b], moments_[b], density_[b], strains_);
+    return comp[b];
+  };
+  const double kt = friction_ ? scene_.contact.kt : 0.0;
   for (const ContactInfo& c : contact_info_) {
-    const double k = scene_.contact.kn * c.ip_length * (1.0 / h_[c.cp] + 1.0 / h_[c.tp]);
-    for (int b : {c.cp, c.tp}) {
-      kt[b] += k;
-      kr[b] += k * length_squared(c.point - moments_[b].centroid);
-    }
+    const double k = scene_.contact.kn * c.ip_length * (1.0 / h_[c.cp] + 1.0 / h_[c.tp]) + kt;
+    const double ca = compliance(c.cp), cb = compliance(c.tp), cross = std::sqrt(ca * cb);
+    row[c.cp] += k * (ca + cross);
+    row[c.tp] += k * (cb + cross);
   }
   double w2 = 0.0;
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
-    const double inertia = density_[i] * (moments_[i].sxx + moments_[i].syy);
-    const double wi = std::max(kt[i] / mass_[i] + kr[i] / inertia, block_strain_omega2(i));
+    const double wi = row[i] + block_strain_omega2(i);
     if (!std::isfinite(wi)) return std::numeric_limits<double>::quiet_NaN();
     w2 = std::max(w2, wi);
   }

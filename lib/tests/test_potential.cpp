@@ -52,3 +52,13 @@ TEST_CASE("bisector rays and the virtual node of a small edge", "[potential]") {
   CHECK(rays[0].dir.y == Approx(-std::sqrt(0.5)));
   CHECK(segment_ray_crossing({0, 0.5}, {1, 0.5}, rays[0]) == Approx(0.5));
 }
+
+TEST_CASE("a small edge's virtual node adds to or replaces the vertex rays", "[potential]") {
+  const double c = 0.01 / std::sqrt(2.0);
+  const Vec2 p[5] = {{0, 0}, {1, 0}, {1, 1 - c}, {1 - c, 1}, {0, 1}};
+  const Polygon cut = make_polygon(p, 5);
+  Ray rays[2 * kMaxVertices];
+  CHECK(bisector_rays(cut, 0.05, SmallEdgeRays::kVirtualAndVertex, rays) == 6);     // 5 vertices + 1 node
+  CHECK(bisector_rays(cut, 0.05, SmallEdgeRays::kVirtualReplacesVertex, rays) == 4);  // 3 vertices + 1 node
+  CHECK(bisector_rays(cut, 0.001, SmallEdgeRays::kVirtualAndVertex, rays) == 5);    // no small edge
+}

@@ -228,3 +228,35 @@ TEST_CASE("the contact loop gives the same bits on 1 and 2 threads", "[simulatio
   CHECK(one.contacts().size() > 80);  // above the parallel threshold of 64 candidate pairs
   CHECK(state_hash(one) == state_hash(two));
 }
+
+TEST_CASE("a zero friction angle never produces a tangential force, whatever kt", "[simulation]") {
+  // A square lands obliquely on a fixed slab with phi = 0 and kt > 0. A pair
+  // that starts sliding with no sliding direction must not fall back to a
+  // stick spring on the next step.
+  Scene s;
+  s.materials = {{2000.0, 1e9, 0.25}};
+  s.contact.kn = 1e7;
+  s.contact.kt = 1e7;
+  s.contact.friction_deg = 0.0;
+  s.gravity = {0.0, -9.81};
+  s.dt = 1e-4;
+  BlockSpec slab, box;
+  slab.vertices = rect(-5, -1, 10, 1);
+  slab.fixed = true;
+  box.vertices = rect(0, 0.01, 1, 1);
+  box.velocity = {2.0, -1.0};
+  s.blocks = {slab, box};
+  Simulation sim(s);
+  double worst = 0.0;
+  int contact_steps = 0;
+  while (sim.time() < 0.3) {
+    sim.step();
+    for (const ContactInfo& c : sim.contacts()) {
+      worst = std::max(worst, length(c.tangential_force));
+      ++contact_steps;
+    }
+  }
+  CHECK(contact_steps > 100);
+  CHECK(worst == 0.0);
+  CHECK(sim.velocity(1)[0] == Approx(2.0).epsilon(1e-9));  // no friction: x-velocity kept
+}

@@ -23,6 +23,7 @@ struct PotentialSide {
   const Polygon* poly = nullptr;
   double kn_over_h = 0.0;   // kn / H, Pa / m
   double small_edge = 0.0;  // edges shorter than this get a virtual node, m
+  SmallEdgeRays small_edge_rays = SmallEdgeRays::kVirtualAndVertex;
 };
 
 // Global normal force on CP (f_TP = -force) and where it acts.

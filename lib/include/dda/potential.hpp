@@ -35,13 +35,28 @@ struct Ray {
   Vec2 dir{};
 };
 
+// What a virtual node does to the rays of a small edge's two vertices.
+enum class SmallEdgeRays {
+  // Paper A Sect. 3.2.3 as printed: "Both the real nodes and virtual nodes
+  // of CP or TP are used in locating the demarcation points."
+  kVirtualAndVertex,
+  // SPEC.md's reading: the virtual node "replaces its two vertices as ray
+  // origins". Kept as an option: the difference is a measured result.
+  kVirtualReplacesVertex,
+};
+
 // Angle-bisector rays of Sect. 3.2.3. From every vertex, the inward bisector
-// of its angle. An edge shorter than `small_edge` has its two vertex rays
-// replaced by one ray from a virtual node: the crossing of the two vertex
-// bisectors, pointing along the bisector of the two neighbouring edges (the
-// direction in which the potential stays equidistant from them). Returns the
-// number of rays written to `out` (at most poly.count).
-int bisector_rays(const Polygon& poly, double small_edge, Ray* out);
+// of its angle. An edge shorter than `small_edge` gets one more ray from a
+// virtual node: the crossing of the two vertex bisectors, pointing along the
+// bisector of the two neighbouring edges (the direction in which the
+// potential stays equidistant from them); with kVirtualReplacesVertex it
+// replaces the two vertex rays. Returns the number of rays written to `out`,
+// at most 2 * poly.count (out must hold that many).
+int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out);
+// The replacing form (at most poly.count rays).
+inline int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
+  return bisector_rays(poly, small_edge, SmallEdgeRays::kVirtualReplacesVertex, out);
+}
 
 // Parameter t in [0, 1] where segment a->b meets the ray, or -1 if it does not.
 double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray);

@@ -58,6 +58,8 @@ struct ContactParams {
   Integration integration = Integration::kPaperBisector;
   // Edges shorter than this fraction of H get a virtual node (Sect. 3.2.3).
   double small_edge_fraction = 0.05;
+  // Whether a virtual node adds to or replaces its edge's vertex rays.
+  SmallEdgeRays small_edge_rays = SmallEdgeRays::kVirtualAndVertex;
   bool friction() const { return kt > 0.0; }
 };
 

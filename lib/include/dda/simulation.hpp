@@ -2,6 +2,8 @@
 // potential-based contact of Sect. 3. The library does no I/O: callers read
 // state through the accessors and write it where they like.
 #pragma once
+#include <cfloat>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -81,15 +83,25 @@ class Simulation {
   // The H used for block i's potential.
   double potential_length(int i) const { return h_[i]; }
 
-  // Critical step of velocity Verlet, 2 / omega_max, from the stiffest mode
-  // of any block: its current contacts (stiffness kn L (1/H_cp + 1/H_tp) per
-  // contact of length L, summed per block, with the rotational mode k r^2 / I)
-  // and its own strain modes (generalised eigenvalues of S D against the mass
-  // matrix). predicted_critical_step assumes every block is pressed along its
-  // longest edge by an identical block: an a-priori bound usable before any
-  // contact exists.
+  // Critical step of velocity Verlet, 2 / omega_max, from an upper bound on
+  // the stiffest mode: each contact is a spring k = kn L (1/H_cp + 1/H_tp)
+  // (+ kt with friction), L its length, acting at the most compliant point
+  // of each block (point compliance c = max over the vertices of
+  // lambda_max(T M^-1 T^T)); block Gershgorin over the contacts,
+  // omega^2 <= max_i [strain_i + sum_c k (c_i + sqrt(c_i c_j))], plus the
+  // block's own strain modes (generalised eigenvalues of S D against M).
+  // Never above the linearised system's 2 / omega_max (checked against it by
+  // repro/S2_stability_maps). predicted_critical_step assumes every block
+  // pressed along its longest edge by a block with the smallest H of the
+  // assembly, free (factor 2) when there is more than one free block: an
+  // a-priori bound usable before any contact exists.
   double critical_time_step() const;
   double predicted_critical_step() const { return dt_crit_prior_; }
+  // 2 / omega of block i's stiffest own strain mode (infinite without strains).
+  double strain_critical_step(int i) const {
+    const double w2 = block_strain_omega2(i);
+    return w2 > 0.0 ? 2.0 / std::sqrt(w2) : DBL_MAX;
+  }
 
   Vec2 momentum() const;
   Energy energy() const;  // recomputes contact energy: call at output time
@@ -150,6 +162,7 @@ class Simulation {
 
   // Guards.
   double min_inscribed_radius_ = 0.0;
+  std::vector<double> radius_, reach_radius_;  // inscribed radii at t = 0; per-step reach
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
 
