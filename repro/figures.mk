@@ -69,3 +69,70 @@ $(OUT)/figures/fig12_incline.png: $(OUT)/data/incline/.done figures/fig12_inclin
 
 FIGS += $(OUT)/figures/fig12_incline.png
 $(OUT)/report.md: $(OUT)/data/incline/.done
+
+# --- Paper A Sect. 3.2.2: Fig. 4a, previous sub-polygon potential (reconstructed) --
+$(OUT)/data/previous_potential/.done: $(BIN)/previous_potential
+	$(BIN)/previous_potential --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig04a_previous_potential.png: $(OUT)/data/previous_potential/.done figures/fig04a_previous_potential.py figures/potential_common.py
+	$(PY) figures/fig04a_previous_potential.py $(OUT)/data/previous_potential $@
+
+FIGS += $(OUT)/figures/fig04a_previous_potential.png
+$(OUT)/report.md: $(OUT)/data/previous_potential/.done
+
+# --- Paper A Sect. 5.1: bouncing block, Fig. 14 --------------------------------
+$(OUT)/data/bouncing_block/.done: $(BIN)/bouncing_block
+	$(BIN)/bouncing_block --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig14_bouncing_block.png: $(OUT)/data/bouncing_block/.done figures/fig14_bouncing_block.py figures/potential_common.py
+	$(PY) figures/fig14_bouncing_block.py $(OUT)/data/bouncing_block $@
+
+FIGS += $(OUT)/figures/fig14_bouncing_block.png
+$(OUT)/report.md: $(OUT)/data/bouncing_block/.done
+
+# --- Paper A Sect. 5.2: small-angle triangles, Fig. 16 -------------------------
+$(OUT)/data/small_angles/.done: $(BIN)/small_angles
+	$(BIN)/small_angles --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig16_small_angles.png: $(OUT)/data/small_angles/.done figures/fig16_small_angles.py figures/potential_common.py
+	$(PY) figures/fig16_small_angles.py $(OUT)/data/small_angles $@
+
+FIGS += $(OUT)/figures/fig16_small_angles.png
+$(OUT)/report.md: $(OUT)/data/small_angles/.done
+
+# --- Paper A Sect. 5.3: small edges, Fig. 18 -----------------------------------
+$(OUT)/data/small_edges/.done: $(BIN)/small_edges
+	$(BIN)/small_edges --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig18_small_edges.png: $(OUT)/data/small_edges/.done figures/fig18_small_edges.py figures/potential_common.py
+	$(PY) figures/fig18_small_edges.py $(OUT)/data/small_edges $@
+
+FIGS += $(OUT)/figures/fig18_small_edges.png
+$(OUT)/report.md: $(OUT)/data/small_edges/.done
+
+# --- Beyond Sect. 5: extreme geometry table (report rows only) -----------------
+$(OUT)/data/extreme_geometry/.done: $(BIN)/extreme_geometry
+	$(BIN)/extreme_geometry --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/extreme_geometry.png: $(OUT)/data/extreme_geometry/.done figures/fig_extreme_geometry.py figures/potential_common.py
+	$(PY) figures/fig_extreme_geometry.py $(OUT)/data/extreme_geometry $@
+
+FIGS += $(OUT)/figures/extreme_geometry.png
+$(OUT)/report.md: $(OUT)/data/extreme_geometry/.done
+
+# --- Beyond Sect. 3.2.3: is the paper's segmentation exact? --------------------
+$(OUT)/data/segmentation/.done: $(BIN)/segmentation
+	$(BIN)/segmentation --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/segmentation_study.png: $(OUT)/data/segmentation/.done figures/fig_segmentation_study.py figures/potential_common.py
+	$(PY) figures/fig_segmentation_study.py $(OUT)/data/segmentation $@
+
+FIGS += $(OUT)/figures/segmentation_study.png
+$(OUT)/report.md: $(OUT)/data/segmentation/.done
+

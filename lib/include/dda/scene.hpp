@@ -69,8 +69,9 @@ enum class BroadPhase { kNone, kSweep };
 // SimulationError naming the step, time, block, pair and dt/dt_crit.
 struct StabilityGuards {
   // Largest vertex displacement in one step, as a fraction of the smallest
-  // inscribed radius in the assembly: beyond it a vertex can pass through a
-  // thin block between two contact checks (flip-through).
+  // inscribed radius within the block's reach (itself and its broad-phase
+  // candidates): beyond it a vertex can pass through a thin block between
+  // two contact checks (flip-through).
   double max_step_motion = 0.25;
   // Largest growth of the total energy above its initial value, relative to
   // the largest mechanical (kinetic + strain + contact) energy seen so far.
