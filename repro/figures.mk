@@ -136,3 +136,27 @@ $(OUT)/figures/segmentation_study.png: $(OUT)/data/segmentation/.done figures/fi
 FIGS += $(OUT)/figures/segmentation_study.png
 $(OUT)/report.md: $(OUT)/data/segmentation/.done
 
+# --- Paper B Sect. 6: two prisms, two-scale contact, Figs. 13-16 -------------
+$(OUT)/data/B_6_two_prisms/.done: $(BIN)/B_6_two_prisms
+	$(BIN)/B_6_two_prisms --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/figB13_15_prisms.png: $(OUT)/data/B_6_two_prisms/.done figures/figB13_15_prisms.py figures/cdem_common.py figures/potential_common.py
+	$(PY) figures/figB13_15_prisms.py $(OUT)/data/B_6_two_prisms $@
+
+$(OUT)/figures/figB16_displacement.png: $(OUT)/data/B_6_two_prisms/.done figures/figB16_displacement.py figures/cdem_common.py figures/potential_common.py
+	$(PY) figures/figB16_displacement.py $(OUT)/data/B_6_two_prisms $@
+
+FIGS += $(OUT)/figures/figB13_15_prisms.png $(OUT)/figures/figB16_displacement.png
+$(OUT)/report.md: $(OUT)/data/B_6_two_prisms/.done
+
+# --- Paper A vs Paper B contact on the same collisions (dt sweeps) -----------
+$(OUT)/data/B_7_contact_comparison/.done: $(BIN)/B_7_contact_comparison
+	$(BIN)/B_7_contact_comparison --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/figB_comparison.png: $(OUT)/data/B_7_contact_comparison/.done figures/figB_comparison.py figures/cdem_common.py figures/potential_common.py
+	$(PY) figures/figB_comparison.py $(OUT)/data/B_7_contact_comparison $@
+
+FIGS += $(OUT)/figures/figB_comparison.png
+$(OUT)/report.md: $(OUT)/data/B_7_contact_comparison/.done

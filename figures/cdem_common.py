@@ -1,0 +1,42 @@
+"""Reading helpers for the Paper B (CDEM) figures: CSV tables with text columns.
+
+potential_common.read_csv reads numeric tables only; the CDEM drivers also
+write text columns (labels, scene and model names). save_atomic is reused.
+"""
+import csv
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from potential_common import plt, read_csv, save_atomic  # noqa: E402,F401
+
+
+def read_table(path, text=()):
+    """Returns (comment lines, {column: array}); columns named in `text` stay
+    strings, the others are floats and must be finite."""
+    comments, rows, header = [], [], None
+    with open(path, newline="") as f:
+        for rec in csv.reader(f):
+            if not rec:
+                continue
+            if header is None and rec[0].startswith("#"):
+                comments.append(",".join(rec).lstrip("# ").rstrip())
+            elif header is None:
+                header = rec
+            else:
+                rows.append(rec)
+    if header is None or not rows:
+        raise SystemExit(f"{path}: no header or no data rows")
+    cols = {}
+    for i, name in enumerate(header):
+        vals = [r[i] for r in rows]
+        if name in text:
+            cols[name] = np.array(vals, dtype=object)
+        else:
+            a = np.array([float(v) for v in vals])
+            if not np.all(np.isfinite(a)):
+                raise SystemExit(f"{path}: non-finite values in column {name}")
+            cols[name] = a
+    return comments, cols

@@ -1,0 +1,93 @@
+"""Paper A's penalty contact vs Paper B's two-scale contact on the same collisions:
+velocity histories and error against run time over a dt sweep.
+
+usage: figB_comparison.py DATA_DIR OUT_PNG   (DATA_DIR from B_7_contact_comparison)
+"""
+import os
+import sys
+import textwrap
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cdem_common import plt, read_table, save_atomic  # noqa: E402
+import numpy as np  # noqa: E402
+
+if len(sys.argv) != 3:
+    raise SystemExit(__doc__)
+notes, sw = read_table(os.path.join(sys.argv[1], "sweep.csv"), text=("scene", "model"))
+_, hi = read_table(os.path.join(sys.argv[1], "history.csv"), text=("scene", "model"))
+STYLE = {"A": ("C0", "o", "A: penalty (Paper A, 6-DOF DDA)"),
+         "B": ("C3", "s", "B: clone node + subdivision (Paper B, CDEM)"),
+         "B0": ("C2", "^", "B0: clone node, no subdivision")}
+FLOOR = 1e-16  # exact zeros drawn at this level on log axes
+scenes = ["prisms", "squares"]
+fig, axes = plt.subplots(2, 4, figsize=(17, 9.0), layout="constrained")
+fig.get_layout_engine().set(rect=(0.0, 0.07, 1.0, 0.93))  # room for the verdict below
+for r, scene in enumerate(scenes):
+    ax = axes[r, 0]
+    for model, (col, _, lab) in STYLE.items():
+        m = (hi["scene"] == scene) & (hi["model"] == model)
+        ax.plot(hi["time"][m], hi["vx_i"][m], color=col, lw=1.0, label=lab)
+        ax.plot(hi["time"][m], hi["vx_j"][m], color=col, lw=1.0, ls="--")
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("block x-velocity (m/s)  (solid i, dashed j)")
+    ax.set_title(f"{scene}: velocities at the base dt", fontsize=10)
+    ax.grid(alpha=0.3)
+    if r == 0:
+        ax.legend(fontsize=7)
+    panels = [("touch_err", "|touch time error| (s)", "touch time vs gap/speed"),
+              ("energy_err_end", "|E_end / E0 - 1|", "energy error (end of run)"),
+              ("vj_err_exchange", "|v_j - v0| / v0  (dotted: vs own finest dt)", "final v_j vs rigid exchange")]
+    for k, (col_name, ylab, title) in enumerate(panels, start=1):
+        ax = axes[r, k]
+        for model, (col, mk, lab) in STYLE.items():
+            m = (sw["scene"] == scene) & (sw["model"] == model)
+            x = sw["wall_s"][m]
+            y = np.maximum(np.abs(sw[col_name][m]), FLOOR)
+            ax.loglog(x, y, marker=mk, color=col, label=lab)
+            if col_name == "vj_err_exchange":
+                ys = np.maximum(np.abs(sw["vj_err_self"][m]), FLOOR)
+                ax.loglog(x[:-1], ys[:-1], marker=mk, color=col, ls=":", mfc="none")
+            if model == "A" and col_name == "touch_err":
+                for idx in (0, len(x) - 1):
+                    ax.annotate(f"dt={sw['dt'][m][idx]:.3g}", (x[idx], y[idx]), fontsize=6, xytext=(3, 3),
+                                textcoords="offset points")
+        ax.set_xlabel("run time (s)")
+        ax.set_ylabel(ylab)
+        ax.set_title(f"{scene}: {title}", fontsize=9)
+        ax.grid(alpha=0.3, which="both")
+    mom = {mdl: np.max(sw["momentum_err"][(sw["scene"] == scene) & (sw["model"] == mdl)]) for mdl in STYLE}
+    axes[r, 1].text(0.02, 0.02, "max momentum error: " + ", ".join(f"{k} {v:.1e}" for k, v in mom.items()),
+                    transform=axes[r, 1].transAxes, fontsize=7, color="0.3")
+axes[0, 1].text(0.02, 0.1, f"zeros drawn at {FLOOR:g}", transform=axes[0, 1].transAxes, fontsize=7, color="0.4")
+fig.suptitle("Paper A penalty vs Paper B two-scale contact on the same collisions "
+             "(prisms: Paper B Sect. 6, rebuilt; squares: Paper A Sect. 4.1)", fontsize=11)
+
+
+def base(scene, model, col):
+    m = (sw["scene"] == scene) & (sw["model"] == model)
+    return sw[col][m][0]
+
+
+def duration(scene, model):
+    return base(scene, model, "contact_end") - base(scene, model, "contact_start")
+
+
+def worst(scene, model, col):
+    m = (sw["scene"] == scene) & (sw["model"] == model)
+    return np.max(np.abs(sw[col][m]))
+
+
+bar = 2.0 * 1.0 / np.sqrt(1e9 / 2000.0)  # two 1 m elastic bars, Paper A Sect. 4.1 material
+verdict = (f"Where each is better: B finds the touch time exactly at any dt (A is late by up to one step) and needs no "
+           f"contact stiffness; its contact lasts as long as the elastic wave ({1e3 * duration('squares', 'B'):.2f} ms for "
+           f"the squares vs 2L/c = {1e3 * bar:.2f} ms), A's as long as kn makes it ({1e3 * duration('squares', 'A'):.1f} ms; "
+           f"{1e3 * duration('prisms', 'A'):.0f} ms on the prisms vs {1e3 * duration('prisms', 'B'):.1f} ms for B). "
+           f"A keeps energy (|dE/E0| <= {max(worst('prisms', 'A', 'energy_err_end'), worst('squares', 'A', 'energy_err_end')):.0e}) "
+           f"and exchanges the velocities like rigid blocks, and is cheaper per run; B loses "
+           f"{100 * min(worst('prisms', 'B', 'energy_err_end'), worst('squares', 'B', 'energy_err_end')):.1f}-"
+           f"{100 * max(worst('prisms', 'B', 'energy_err_end'), worst('squares', 'B', 'energy_err_end')):.1f} % "
+           f"(clone impact, patch remaps) and its meshes keep vibration energy, so v_j falls short of the rigid "
+           f"exchange. Momentum: both exact to round-off.")
+fig.text(0.01, 0.005, textwrap.fill(verdict + " " + (notes[0] if notes else ""), 230), fontsize=7.5, color="0.2",
+         va="bottom")
+save_atomic(fig, sys.argv[2])

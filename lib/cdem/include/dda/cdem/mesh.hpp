@@ -1,0 +1,37 @@
+// Constant-strain-triangle meshes of convex polygons for the CDEM body model
+// (Paper B Sect. 2: in CDEM each block is a finite-element mesh). Pure
+// functions, no I/O.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "dda/vec2.hpp"
+
+namespace dda::cdem {
+
+struct TriMesh {
+  std::vector<Vec2> nodes;
+  std::vector<std::array<int, 3>> triangles;  // node indices, counter-clockwise
+};
+
+// Nodes of the regular lattice of a triangle split k times per edge:
+// (k + 1)(k + 2) / 2 points P(i, j) = v0 + i/k (v1 - v0) + j/k (v2 - v0),
+// i, j >= 0, i + j <= k, numbered row by row (j outer, i inner).
+inline constexpr int lattice_count(int k) { return (k + 1) * (k + 2) / 2; }
+inline constexpr int lattice_index(int i, int j, int k) { return j * (k + 1) - j * (j - 1) / 2 + i; }
+
+// The k^2 sub-triangles of that lattice as lattice indices, each with the
+// orientation of the parent: for every (i, j) the 'up' triangle
+// (i,j),(i+1,j),(i,j+1) and, where it fits, the 'down' triangle
+// (i+1,j),(i+1,j+1),(i,j+1).
+std::vector<std::array<int, 3>> lattice_triangles(int k);
+
+// Meshes a convex CCW polygon (check it with dda::validate_polygon first).
+// A triangle is split directly into divisions^2 similar triangles (its
+// vertices and, for even divisions, its edge midpoints are nodes); any other
+// polygon is fanned from its centroid and each fan triangle split the same
+// way. Edges shared by two fan triangles get the same nodes (conforming).
+// Throws std::invalid_argument for fewer than 3 points or divisions < 1.
+TriMesh mesh_convex_polygon(const std::vector<Vec2>& outline, int divisions);
+
+}  // namespace dda::cdem

@@ -1,0 +1,364 @@
+// Paper B's two-scale contact model on node-based deformable blocks: a
+// compact CDEM-style body model beside the 6-DOF DDA block (dda::Simulation).
+//
+// Bodies (Paper B Sect. 2): each block is a mesh of constant-strain
+// triangles with lumped nodal masses, integrated by explicit central
+// differences (Eq. 1, M u'' + C u' = F + P, C = alpha M) in kick-drift-kick
+// form; element forces come from the strain matrix B of the current
+// configuration, incrementally (Eqs. 2-3): d_eps = B d_u, d_sigma = D d_eps,
+// sigma += d_sigma (rotated with the element's incremental rotation),
+// F = -A B^T sigma.
+//
+// Contact, without any penalty spring:
+//  * detection (Sect. 2, 2D): boundary nodes of one block against boundary
+//    edges of another; a pair is a candidate when the node ends the step
+//    closer to the edge than the contact tolerance d_tol;
+//  * two time stages (Sect. 3): the touch time on the collision path (the
+//    relative node-edge motion over the step, solved exactly) splits the step
+//    into dt1 (free motion) and dt2 (contact);
+//  * clone node (Sect. 4): the touching node and the touched point become one
+//    node (summed mass and force; for a point inside an edge the edge's
+//    nodes share it with their linear weights), its velocity set by
+//    perfectly inelastic momentum conservation (Eq. 4, energy loss Eq. 5);
+//    the interaction force (Eq. 11) is checked against the tensile limit
+//    (Eq. 6) and the Mohr-Coulomb shear limit (Eqs. 7-10) for separation;
+//  * local subdivision (Sect. 5): at a touch, the elements within c dt2 of
+//    the contact point (c = sqrt(E/rho) of each block) are refined k x k
+//    (k = ceil(h_e / (c dt2)), clamped), mass and momentum moved exactly;
+//    the patch (its elements and the coarse elements touching its nodes) is
+//    integrated with steps dt/n, the coarse nodes around it moving with
+//    their coarse-step velocity (the velocity boundary condition of
+//    Eq. 12); the patch forces on those coarse nodes are returned to them
+//    (centred kicks plus an O(dt^3) correction at the step end, so that
+//    momentum stays exact). Edges between refined and unrefined elements
+//    carry hanging nodes tied linearly to the edge. The clone is formed
+//    between patch nodes, so its masses (Eq. 5 loss) are the small patch
+//    masses. The patch is deleted (restricted back to the coarse elements,
+//    momentum exact, stress area-averaged) when its clone nodes separated.
+//
+// Approximations relative to Paper B (which gives no algorithm tables):
+// the tie is node-to-node or node-to-edge-point (the point shares its mass
+// and force with the edge's nodes by their linear weights); a clone released
+// in shear is removed (as Sect. 4.2 says) and the node may touch again one
+// step later, so sliding is a sequence of stick, release and re-touch; touches
+// inside a patch step split that step for all patch nodes (the coarse step
+// is split for the touching nodes only, as in Sect. 3); one k per run.
+//
+// The library does no I/O. Errors: dda::SceneError for a bad scene (also
+// when dt exceeds the mesh's critical step), dda::SimulationError for a run
+// that goes wrong (inverted element, non-finite state).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "dda/block.hpp"
+#include "dda/scene.hpp"
+#include "dda/simulation.hpp"
+#include "dda/vec2.hpp"
+
+namespace dda::cdem {
+
+// Strength of a clone node (per unit thickness the contact 'area' A_c is
+// the clone's tributary boundary length, m).
+struct CloneStrength {
+  double tensile = 0.0;        // sigma_t of Eq. 6, Pa: 0 separates at any tension
+  double cohesion = 0.0;       // c of Eq. 7, Pa
+  double friction_deg = 30.0;  // phi of Eq. 7, degrees
+};
+
+struct CdemOptions {
+  double tolerance = 5e-3;  // contact tolerance d_tol, m (Paper B Sect. 6)
+  CloneStrength strength;
+  bool subdivision = true;  // Sect. 5 local subdivision; off: clones of coarse nodes
+  // Refinement k x k of an element in the contact zone: k = ceil(h_e / (c dt2))
+  // (h_e = sqrt(2 A_e), the element's length scale), clamped to this range.
+  // One k per run, fixed by the first touch, so that refined neighbours share
+  // their edge nodes.
+  int min_subdivision = 2;
+  int max_subdivision = 6;
+  double substep_safety = 0.9;           // patch step dt/n <= safety * element-bound critical step
+  double mass_damping = 0.0;             // alpha of C = alpha M, 1/s
+  bool check_stability = true;           // SceneError if dt exceeds the coarse mesh's critical step
+  bool capture_touch_snapshots = false;  // store a Snapshot in every TouchRecord
+};
+
+struct CdemBlock {
+  std::vector<Vec2> outline;  // convex, counter-clockwise
+  int divisions = 1;          // mesh_convex_polygon divisions
+  Vec2 velocity{};            // initial velocity of every node, m/s
+  bool fixed = false;         // nodes never move (infinite mass)
+  int material = 0;           // index into CdemScene::materials
+  std::string name;
+};
+
+struct CdemScene {
+  std::string name;
+  std::vector<Material> materials{Material{}};
+  std::vector<CdemBlock> blocks;
+  Vec2 gravity{};
+  double dt = 1e-4;
+  double duration = 1.0;
+  CdemOptions options;
+};
+
+// A DDA scene's blocks, materials, gravity, dt and duration as a CDEM scene
+// (each block meshed with `divisions`); the penalty parameters are dropped.
+CdemScene from_dda_scene(const dda::Scene& scene, int divisions, const CdemOptions& options = {});
+
+enum class NodeKind : std::uint8_t {
+  kCoarse,   // corner of unrefined elements only: integrated with dt
+  kFine,     // corner of a patch element: integrated with dt/n
+  kHanging,  // on an edge between a refined and an unrefined element: follows the edge linearly
+  kDead,     // removed with its patch
+};
+
+enum class SeparationCriterion : std::uint8_t { kTension, kShear };
+
+struct Snapshot {
+  struct Tri {
+    std::array<Vec2, 3> x;
+    Vec2 velocity;  // mean of the corner velocities
+    int block = 0;
+    bool fine = false;
+  };
+  double time = 0.0;
+  std::vector<Tri> tris;
+  std::vector<Vec2> clone_points;
+};
+
+// One touch: a node reaching an edge within a step (Sects. 3-4).
+struct TouchRecord {
+  double time = 0.0;  // touch time t0 + dt1
+  double step_start = 0.0, step_end = 0.0;
+  double dt1 = 0.0, dt2 = 0.0;  // free-motion and contact parts of the step
+  bool fine = false;            // found inside a refined patch (patch step)
+  int main_node = -1, main_block = -1, target_block = -1;
+  bool node_to_node = false;                  // the touched point is a node of the target
+  Vec2 point{};                               // contact point
+  double mass_main = 0.0, mass_target = 0.0;  // target: effective mass at the point
+  Vec2 v_main{}, v_target{}, v_clone{};       // before the impact / clone after (Eq. 4)
+  double energy_loss_eq5 = 0.0;               // Eq. 5 with these masses, J/m
+  double energy_loss = 0.0;                   // measured kinetic-energy drop of the projection, J/m
+  int subdivision = 0;                        // k used (0: none)
+  double radius = 0.0;                        // refinement radius c dt2, m
+  int refined_elements = 0;                   // coarse elements refined at this touch
+  std::vector<Snapshot> snapshot;             // 0 or 1 entries (CdemOptions::capture_touch_snapshots)
+};
+
+struct SeparationRecord {
+  double time = 0.0;
+  int main_node = -1, main_block = -1, target_block = -1;
+  SeparationCriterion criterion = SeparationCriterion::kTension;
+  double normal_force = 0.0;  // N/m, > 0 compression
+  double shear_force = 0.0;   // N/m
+  double limit = 0.0;         // sigma_t A_c (tension) or F_n tan(phi) + c A_c (shear)
+  double contact_area = 0.0;  // A_c, m (per unit thickness)
+  bool fine = false;
+};
+
+struct CloneView {
+  int main_node = -1;
+  std::array<int, 2> target{-1, -1};
+  std::array<double, 2> weight{0.0, 0.0};
+  Vec2 point{};
+  Vec2 force{};  // interaction force on the main node, N/m (Eq. 11)
+  bool fine = false;
+};
+
+struct CdemEnergy {
+  double kinetic = 0.0;
+  double strain = 0.0;
+  double gravity = 0.0;
+  double total() const { return kinetic + strain + gravity; }
+};
+
+class Model {
+ public:
+  explicit Model(const CdemScene& scene);
+
+  void step();
+  void advance_to(double t);  // steps until time() >= t - dt/2
+
+  double time() const { return time_; }
+  double dt() const { return dt_; }
+  std::int64_t step_count() const { return steps_; }
+  const CdemScene& scene() const { return scene_; }
+
+  // Critical step of the coarse mesh: 2 / omega_max of M^-1 K (power
+  // iteration), and the element bound min_e 2 / omega_max(e) (Irons).
+  double critical_dt() const { return critical_dt_; }
+  double element_critical_dt() const { return element_critical_dt_; }
+
+  int block_count() const { return static_cast<int>(blocks_.size()); }
+  double block_mass(int b) const;
+  Vec2 block_momentum(int b) const;
+  Vec2 block_velocity(int b) const;          // momentum / mass
+  Vec2 block_mean_position(int b) const;     // mass-weighted mean node position
+  Vec2 block_displacement(int b) const;      // mean position minus its initial value
+  double block_max_velocity_x(int b) const;  // largest nodal x-velocity
+  double block_min_velocity_x(int b) const;
+  std::vector<Vec2> block_outline(int b) const;  // current positions of the outline vertices
+
+  Vec2 momentum() const;
+  CdemEnergy energy() const;
+  double impact_energy_loss() const { return impact_loss_; }    // sum over touches, measured
+  double remap_energy_change() const { return remap_change_; }  // refine + delete patches
+
+  const std::vector<TouchRecord>& touches() const { return touches_; }
+  const std::vector<SeparationRecord>& separations() const { return separations_; }
+  std::vector<CloneView> clones() const;
+  int subdivision_level() const { return k_; }
+  int patch_substeps() const { return substeps_; }
+  int active_elements(bool fine) const;
+  std::int64_t patch_substeps_taken() const { return substeps_taken_; }
+
+  int node_count() const { return static_cast<int>(x_.size()); }
+  Vec2 node_position(int i) const { return x_[i]; }
+  Vec2 node_velocity(int i) const { return v_[i]; }
+  double node_mass(int i) const { return m_[i]; }
+  NodeKind node_kind(int i) const { return kind_[i]; }
+  int node_block(int i) const { return node_block_[i]; }
+
+  Snapshot snapshot() const;
+
+ private:
+  struct Elem {
+    std::array<int, 3> n{};
+    int block = 0;
+    int level = 0;     // 0 coarse, 1 patch
+    int parent = -1;   // for patch elements
+    int lattice = -1;  // for refined coarse elements: index into lattices_
+    bool active = true;
+    Vec3 stress = Vec3::Zero();
+    std::array<Vec2, 3> last{};  // node positions at the last force evaluation
+    double mass = 0.0;
+  };
+  struct Lattice {
+    int elem = -1, k = 0;
+    std::vector<int> nodes;     // lattice_index -> node
+    std::vector<int> children;  // element ids
+  };
+  struct EdgeInfo {
+    int lo = -1, hi = -1;  // coarse node ids, lo < hi
+    std::array<int, 2> elems{-1, -1};
+    std::vector<int> nodes;  // k - 1 nodes from lo to hi while refined on a side
+  };
+  struct BEdge {  // a boundary edge, CCW (outward normal perp_right(b - a))
+    int a = -1, b = -1, block = 0;
+    bool fine = false;  // a sub-edge of a refined element
+  };
+  struct Clone {
+    int main = -1;
+    std::array<int, 2> t{-1, -1};
+    std::array<double, 2> w{0.0, 0.0};
+    int ea = -1, eb = -1;  // the touched edge (for the normal)
+    double area = 0.0;     // A_c
+    bool fine = false;
+    bool release = false;  // shear-limited: removed after this force evaluation
+    Vec2 lambda{};
+  };
+  struct Touch {     // a detected touch, not yet processed
+    double s = 0.0;  // fraction of the interval
+    int node = -1, ea = -1, eb = -1;
+    double xi = 0.0;
+  };
+  struct Block {
+    std::vector<int> nodes;    // every node ever made for the block
+    std::vector<int> outline;  // coarse outline vertex nodes, CCW
+    int material = 0;
+    bool fixed = false;
+    Vec2 initial_mean{};
+  };
+
+  // set-up
+  void build(const CdemScene& scene);
+  void compute_critical_steps();
+  // topology
+  std::uint64_t edge_key(int a, int b) const;
+  void classify();
+  void rebuild_lists();
+  void rebuild_boundary();
+  std::vector<double> lumped_masses() const;
+  void refine(const std::vector<int>& elems);
+  void unrefine(const std::vector<int>& parents);
+  void update_substeps();
+  double element_omega_max(const Elem& e) const;
+  // kinematics and forces
+  void sync_positions(double t);
+  void add_node_force(int n, Vec2 f, bool patch_eval);
+  void element_force(Elem& e, bool patch_eval);
+  void compute_coarse_forces();
+  void compute_patch_forces(double t);
+  void solve_clones(bool fine, double t);
+  std::vector<int> clone_component(int ci) const;
+  double project_component(int ci);
+  void kick_patch(double h);
+  bool locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const;
+  // contact
+  std::vector<Touch> find_touches(bool coarse_level, double t_start, const std::vector<Vec2>& p0,
+                                  const std::vector<Vec2>& p1) const;
+  bool process_touch(const Touch& touch, bool fine_level, double t, double t0, double t1);
+  bool dissolve_free_patches();
+  double tributary_length(int node) const;
+  Vec2 vertex_normal(int node) const;
+  Vec2 clone_normal(const Clone& c) const;
+  bool in_clone(int node) const;
+  // stepping
+  void literal_two_stage(const std::vector<Touch>& touches, double t0);
+  void patch_loop(double t0, double t1, std::vector<Touch> coarse_touches);
+  void check_state() const;
+  double kinetic_energy() const;
+  Elem& elem(int e) { return elems_[static_cast<std::size_t>(e)]; }
+  const Elem& elem(int e) const { return elems_[static_cast<std::size_t>(e)]; }
+
+  CdemScene scene_;
+  CdemOptions opt_;
+  double dt_ = 0.0, time_ = 0.0, step_t0_ = 0.0;
+  std::int64_t steps_ = 0, substeps_taken_ = 0;
+  double critical_dt_ = 0.0, element_critical_dt_ = 0.0;
+
+  std::vector<Mat3> d_, c_;         // per material: elastic and compliance matrices
+  std::vector<double> wave_speed_;  // per material sqrt(E / rho)
+  std::vector<Block> blocks_;
+
+  // nodes (structure of arrays)
+  // x, v: position and velocity; xs: coarse position at the step start;
+  // f: force of the last evaluation at the node's level; iface: force of
+  // the patch-evaluated elements on coarse nodes (last patch evaluation);
+  // iface0: its value in the first half-kick of the step; iimp: its impulse
+  // integrated over the patch steps of the current step (see step()).
+  std::vector<Vec2> x_, v_, xs_, f_, iface_, iface0_, iimp_, scratch_;
+  std::vector<double> m_, inv_m_;
+  std::vector<int> node_block_;
+  std::vector<NodeKind> kind_;
+  std::vector<int> hang_a_, hang_b_;
+  std::vector<double> hang_w_;  // weight of hang_b_
+  std::vector<int> clone_count_;
+  std::vector<double> released_at_;  // time the node's last clone was removed
+
+  std::vector<Elem> elems_;
+  std::vector<Lattice> lattices_;
+  std::unordered_map<std::uint64_t, EdgeInfo> edges_;
+  std::vector<BEdge> coarse_bedges_;  // outline edges of the coarse mesh
+  std::vector<int> coarse_bedge_elem_;
+  std::vector<BEdge> bedges_;
+  std::vector<std::vector<int>> block_bedges_;  // indices into bedges_ per block
+  std::vector<int> bnodes_;
+  // active coarse / patch elements; elements evaluated at the coarse step
+  // (all corners coarse) and at the patch steps (patch elements and coarse
+  // elements with a patch-integrated corner)
+  std::vector<int> coarse_elems_, fine_elems_, coarse_eval_, patch_eval_;
+  std::vector<int> coarse_dofs_, fine_dofs_, hanging_;
+
+  std::vector<Clone> clones_;
+  std::vector<TouchRecord> touches_;
+  std::vector<SeparationRecord> separations_;
+  int k_ = 0;         // subdivision level of this run (0 until the first refinement)
+  int substeps_ = 1;  // n of dt/n in patches
+  double impact_loss_ = 0.0, remap_change_ = 0.0;
+};
+
+}  // namespace dda::cdem

@@ -1,0 +1,93 @@
+#include "dda/cdem/mesh.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace dda::cdem {
+
+std::vector<std::array<int, 3>> lattice_triangles(int k) {
+  std::vector<std::array<int, 3>> t;
+  t.reserve(static_cast<std::size_t>(k * k));
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i + j < k; ++i) {
+      t.push_back({lattice_index(i, j, k), lattice_index(i + 1, j, k), lattice_index(i, j + 1, k)});
+      if (i + j + 2 <= k)
+        t.push_back({lattice_index(i + 1, j, k), lattice_index(i + 1, j + 1, k), lattice_index(i, j + 1, k)});
+    }
+  return t;
+}
+
+TriMesh mesh_convex_polygon(const std::vector<Vec2>& outline, int divisions) {
+  const int n = static_cast<int>(outline.size());
+  if (n < 3) throw std::invalid_argument("mesh_convex_polygon: fewer than 3 points");
+  if (divisions < 1) throw std::invalid_argument("mesh_convex_polygon: divisions must be >= 1");
+  const int k = divisions;
+  TriMesh mesh;
+  mesh.nodes = outline;
+  std::vector<std::array<int, 3>> base;
+  if (n == 3) {
+    base.push_back({0, 1, 2});
+  } else {
+    Vec2 c{};
+    for (const Vec2& p : outline) c += p;  // vertex mean: inside a convex polygon
+    mesh.nodes.push_back(c / static_cast<double>(n));
+    for (int i = 0; i < n; ++i) base.push_back({n, i, (i + 1) % n});
+  }
+  // Interior nodes of each base edge, ordered from the lower to the higher id.
+  std::map<std::pair<int, int>, std::vector<int>> edge_nodes;
+  auto edge = [&](int a, int b) -> std::vector<int> {
+    const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+    auto it = edge_nodes.find(key);
+    if (it == edge_nodes.end()) {
+      std::vector<int> ids;
+      const Vec2 p = mesh.nodes[static_cast<std::size_t>(key.first)];
+      const Vec2 q = mesh.nodes[static_cast<std::size_t>(key.second)];
+      for (int t = 1; t < k; ++t) {
+        ids.push_back(static_cast<int>(mesh.nodes.size()));
+        mesh.nodes.push_back(lerp(p, q, static_cast<double>(t) / k));
+      }
+      it = edge_nodes.emplace(key, std::move(ids)).first;
+    }
+    std::vector<int> ids = it->second;
+    if (a > b) std::reverse(ids.begin(), ids.end());
+    return ids;
+  };
+  const auto sub = lattice_triangles(k);
+  for (const auto& tri : base) {
+    const Vec2 v0 = mesh.nodes[static_cast<std::size_t>(tri[0])];
+    const Vec2 v1 = mesh.nodes[static_cast<std::size_t>(tri[1])];
+    const Vec2 v2 = mesh.nodes[static_cast<std::size_t>(tri[2])];
+    const std::vector<int> e01 = edge(tri[0], tri[1]), e12 = edge(tri[1], tri[2]), e02 = edge(tri[0], tri[2]);
+    std::vector<int> lat(static_cast<std::size_t>(lattice_count(k)));
+    for (int j = 0; j <= k; ++j)
+      for (int i = 0; i + j <= k; ++i) {
+        int id;
+        if (i == 0 && j == 0)
+          id = tri[0];
+        else if (i == k)
+          id = tri[1];
+        else if (j == k)
+          id = tri[2];
+        else if (j == 0)
+          id = e01[static_cast<std::size_t>(i - 1)];
+        else if (i == 0)
+          id = e02[static_cast<std::size_t>(j - 1)];
+        else if (i + j == k)
+          id = e12[static_cast<std::size_t>(j - 1)];
+        else {
+          id = static_cast<int>(mesh.nodes.size());
+          mesh.nodes.push_back(v0 + (static_cast<double>(i) / k) * (v1 - v0) +
+                               (static_cast<double>(j) / k) * (v2 - v0));
+        }
+        lat[static_cast<std::size_t>(lattice_index(i, j, k))] = id;
+      }
+    for (const auto& s : sub)
+      mesh.triangles.push_back({lat[static_cast<std::size_t>(s[0])], lat[static_cast<std::size_t>(s[1])],
+                                lat[static_cast<std::size_t>(s[2])]});
+  }
+  return mesh;
+}
+
+}  // namespace dda::cdem
