@@ -160,3 +160,48 @@ $(OUT)/figures/figB_comparison.png: $(OUT)/data/B_7_contact_comparison/.done fig
 
 FIGS += $(OUT)/figures/figB_comparison.png
 $(OUT)/report.md: $(OUT)/data/B_7_contact_comparison/.done
+
+# --- S1: work precision, error against run time (issue: stiff/extreme) -----
+$(OUT)/data/work_precision/.done: $(BIN)/work_precision
+	$(BIN)/work_precision --out $(OUT)
+	@touch $@
+
+S1_DEPS := $(OUT)/data/work_precision/.done figures/figS1_work_precision.py figures/potential_common.py
+$(OUT)/figures/figS1a_two_squares.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ 4.1
+$(OUT)/figures/figS1b_incline.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ 4.3
+$(OUT)/figures/figS1c_resting_block.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ resting
+$(OUT)/figures/figS1d_triangles.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ 5.2
+$(OUT)/figures/figS1e_bouncing_block.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ 5.1
+$(OUT)/figures/figS1f_small_edge.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ 5.3
+$(OUT)/figures/figS1g_free_rotation.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ free
+
+FIGS += $(OUT)/figures/figS1a_two_squares.png $(OUT)/figures/figS1b_incline.png \
+        $(OUT)/figures/figS1c_resting_block.png $(OUT)/figures/figS1d_triangles.png \
+        $(OUT)/figures/figS1e_bouncing_block.png $(OUT)/figures/figS1f_small_edge.png \
+        $(OUT)/figures/figS1g_free_rotation.png
+$(OUT)/report.md: $(OUT)/data/work_precision/.done
+
+# --- S2: stability maps (kn x dt) and the dt_crit check ---------------------
+$(OUT)/data/stability_maps/.done: $(BIN)/stability_maps
+	$(BIN)/stability_maps --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/figS2_stability_maps.png: $(OUT)/data/stability_maps/.done figures/figS2_stability_maps.py figures/potential_common.py
+	$(PY) figures/figS2_stability_maps.py $(OUT)/data/stability_maps $@
+
+FIGS += $(OUT)/figures/figS2_stability_maps.png
+$(OUT)/report.md: $(OUT)/data/stability_maps/.done
+
+# --- S3: extreme cases (table in the report; no figure) ---------------------
+$(OUT)/data/extreme_cases/.done: $(BIN)/extreme_cases
+	$(BIN)/extreme_cases --out $(OUT)
+	@touch $@
+
+$(OUT)/report.md: $(OUT)/data/extreme_cases/.done

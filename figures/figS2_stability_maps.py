@@ -1,0 +1,95 @@
+"""Stability maps (S2): run class over (kn, dt) with the dt_crit lines.
+
+usage: figS2_stability_maps.py DATA_DIR OUT_PNG
+  DATA_DIR from the stability_maps driver: map_<name>.csv and
+  boundary_<name>.csv for two_squares, bouncing_unified, bouncing_inscribed,
+  and dt_crit_check.csv.
+
+Left three panels: one per map, a marker per run (stable, energy growth
+> 1 %, flip-through, blow-up), the solver's predicted dt_crit (after this
+issue's fix), the estimate before it, and the linearised 2/omega_max at
+the peak contact force (independent check). Right panel: the dt_crit check
+on resting contacts, each estimate divided by the linearised limit.
+"""
+import csv
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from potential_common import plt, save_atomic  # noqa: E402
+
+MAPS = [("two_squares", "4.1 two squares, 1 m/s, unified H"),
+        ("bouncing_unified", "5.1 bouncing block case 1, unified H"),
+        ("bouncing_inscribed", "5.1 bouncing block case 1, inscribed-radius H")]
+CLASSES = [("stable", "o", "tab:green", 18), ("energy growth > 1%", "^", "tab:orange", 26),
+           ("flip-through", "D", "tab:purple", 24), ("blow-up", "x", "tab:red", 30)]
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    if not rows:
+        raise SystemExit(f"{path}: no rows")
+    return rows
+
+
+def f(text):
+    x = float(text)
+    if not math.isfinite(x):
+        raise SystemExit(f"non-finite value {text!r}")
+    return x
+
+
+def main(argv):
+    if len(argv) != 3:
+        raise SystemExit(__doc__)
+    data, out_png = argv[1], argv[2]
+    fig, grid = plt.subplots(2, 2, figsize=(15, 11.5))
+    axes = list(grid.flat)
+    for ax, (name, title) in zip(axes, MAPS):
+        runs = read_rows(os.path.join(data, f"map_{name}.csv"))
+        bnd = read_rows(os.path.join(data, f"boundary_{name}.csv"))
+        for cls, marker, color, size in CLASSES:
+            pts = [(f(r["kn"]), f(r["dt"])) for r in runs if r["class"] == cls]
+            if pts:
+                ax.scatter([p[0] for p in pts], [p[1] for p in pts], marker=marker, c=color, s=size,
+                           label=f"{cls} ({len(pts)})", zorder=3)
+        kn = [f(b["kn"]) for b in bnd]
+        ax.plot(kn, [f(b["predicted"]) for b in bnd], "k-", lw=2, label="predicted dt_crit (solver)", zorder=4)
+        ax.plot(kn, [f(b["linearized_at_peak"]) for b in bnd], "b--", lw=1.3,
+                label="linearised 2/omega at peak force", zorder=4)
+        ax.plot(kn, [f(b["old_estimate"]) for b in bnd], ":", color="0.45", lw=1.5,
+                label="estimate before this issue", zorder=4)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("kn (Pa)")
+        ax.set_ylabel("dt (s)")
+        ax.set_title(title, fontsize=10)
+        ax.grid(alpha=0.3, which="major")
+        ax.legend(fontsize=7, loc="lower left", framealpha=0.9)
+    ax = axes[3]
+    check = read_rows(os.path.join(data, "dt_crit_check.csv"))
+    y = list(range(len(check)))
+    for key, marker, color, label in [("empirical_over_linearized", "o", "tab:green", "empirical (bisection)"),
+                                      ("current_over_linearized", "s", "k", "solver: critical_time_step()"),
+                                      ("predicted_over_linearized", "^", "tab:blue", "solver: predicted"),
+                                      ("old_over_linearized", "x", "tab:red", "estimate before this issue")]:
+        ax.scatter([f(r[key]) for r in check], y, marker=marker, c=color, label=label, zorder=3,
+                   facecolors="none" if marker in "s^" else None)
+    ax.axvline(1.0, color="0.3", lw=1)
+    ax.set_yticks(y)
+    ax.set_yticklabels([r["case"].replace("1 m square on a ", "").replace(" Pa", "") for r in check], fontsize=6)
+    ax.invert_yaxis()
+    ax.set_xlabel("dt_crit / linearised 2/omega_max (resting contact)")
+    ax.set_title("dt_crit check: > 1 is unsafe", fontsize=10)
+    ax.grid(alpha=0.3, axis="x")
+    ax.legend(fontsize=7, loc="lower right")
+    fig.suptitle("S2 stability maps: collision window only (2 ms + 4 contact half-periods, <= 0.4 s, >= 10 steps);\n"
+                 "deformable blocks, rho 2000 kg/m3, E 1 GPa, frictionless", fontsize=11)
+    fig.tight_layout()
+    save_atomic(fig, out_png)
+
+
+if __name__ == "__main__":
+    main(sys.argv)

@@ -1,0 +1,418 @@
+// Stability maps and a check of the critical time step.
+//
+// 1. dt_crit check. The solver's critical_time_step() (current contacts)
+//    and predicted_critical_step() (a priori) are compared with an
+//    independent value: 2 / omega_max of the linearised system (stiffness by
+//    central differences of the library's contact force, DDA mass matrices;
+//    repro/S_common), and with the empirical limit found by bisection on dt
+//    for a block resting at its static penetration (unstable: the
+//    mechanical energy grows 10-fold over 20000 steps, or a guard stops the
+//    run). Expected: empirical = linearised where the contact stays closed
+//    (rigid blocks, or kn well below E); the solver's values at or below
+//    it (a bound). The "old" column is the estimate before this issue
+//    (kn L 2 / H_i on k/m + k r^2/I, max with the strain modes).
+// 2. Stability maps: kn 1e6 .. 1e12 Pa (half decades) x dt 1e-6 .. 1e-2 s
+//    (quarter decades), Table 4/5 material (rho 2000, E 1 GPa, nu 0.25),
+//    deformable blocks, frictionless. Shortened runs, the collision window
+//    only: (a) Sect. 4.1's two squares, A at 1 m/s, starting 1 mm apart;
+//    (b) Sect. 5.1's bouncing block, case 1 (B 0.1 m high), A starting 1 mm
+//    above B at the 3.13 m/s it reaches after its 0.5 m fall, gravity on,
+//    with the unified H and with the inscribed-radius H. Run length: 2 ms +
+//    4 contact half-periods pi/omega (omega from the flat contact on the
+//    relative mass), at most 0.4 s (written per run). Each run is
+//    classified: blow-up (the solver stops: non-finite state, energy guard,
+//    or the step-motion guard after energy grew), flip-through (the blocks
+//    end with their centroids in the wrong order along the approach axis,
+//    or the step-motion guard stops a run whose energy had not grown),
+//    energy growth > 1 % (total energy at the end of the window above the
+//    start by more than 1 % of the impact energy), else stable. Expected:
+//    stable below min(contact limit ~ kn^-1/2, strain limit 7e-4 s); the
+//    solver's prediction at or below the empirical boundary; above it,
+//    short contacts (a few steps) can end in growth without blowing up.
+//
+// Output: data/stability_maps/dt_crit_check.csv, map_<name>.csv,
+// boundary_<name>.csv; claims/S2_stability_maps.csv.
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "dda/paper_scenes.hpp"
+#include "dda/robustness_scenes.hpp"
+#include "dda/simulation.hpp"
+#include "repro/S_common/stability.hpp"
+#include "repro/common/common.hpp"
+
+namespace {
+using dda::Vec2;
+using repro::format_short;
+using repro::stab::RunClass;
+constexpr double kG = 9.81;
+
+std::string num(double x) { return repro::format_full(x); }
+
+std::vector<Vec2> rect(double x0, double y0, double w, double h) {
+  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
+}
+
+// The solver's estimate before this issue, recomputed here for comparison:
+// per free block k = kn L_max 2 / H_i, omega^2 = max(k/m + k r^2 / I,
+// strain modes).
+double old_prior(const dda::Simulation& sim) {
+  double w2 = 0.0;
+  for (int i = 0; i < sim.block_count(); ++i) {
+    if (sim.fixed(i)) continue;
+    const dda::Polygon& p = sim.polygon(i);
+    const dda::AreaMoments m = dda::area_moments(p);
+    const double rho = sim.mass(i) / m.area;
+    const double k = sim.scene().contact.kn * dda::max_edge_length(p) * 2.0 / sim.potential_length(i);
+    double r2 = 0.0;
+    for (int v = 0; v < p.count; ++v) r2 = std::max(r2, dda::length_squared(p.vertex(v) - m.centroid));
+    double ws = 0.0;
+    if (sim.scene().strains) {
+      const double d = sim.strain_critical_step(i);
+      ws = 4.0 / (d * d);
+    }
+    w2 = std::max({w2, k / sim.mass(i) + k * r2 / (rho * (m.sxx + m.syy)), ws});
+  }
+  return w2 > 0.0 ? 2.0 / std::sqrt(w2) : std::numeric_limits<double>::infinity();
+}
+
+// ---- 1. dt_crit check on resting contacts ----------------------------------
+
+struct RestCase {
+  std::string name;
+  dda::Scene scene;
+};
+
+// Static penetration of a flat contact of length L carrying weight w:
+// kn [L d (1/H_a + 1/H_b) - d^2 / H_a] = w (see S1's resting block).
+double static_pen(double kn, double w, double len, double h_a, double h_b) {
+  const double s = 1.0 / h_a + 1.0 / h_b;
+  return 0.5 * h_a * (len * s - std::sqrt(len * len * s * s - 4.0 * w / (kn * h_a)));
+}
+
+// A 1 m square A (two_high: on a free 2 m x 1 m block on) a fixed 4 m x 0.1 m
+// block, each at its static penetration. H: unified (min-max edge) or
+// inscribed radius.
+RestCase resting(double kn, bool inscribed, bool strains, bool two_high) {
+  RestCase rc;
+  dda::Scene& s = rc.scene;
+  s.materials = {{2000.0, 1e9, 0.25}};
+  s.contact.kn = kn;
+  s.contact.h_rule = inscribed ? dda::HRule::kInscribedRadius : dda::HRule::kMinMaxEdge;
+  s.gravity = {0.0, -kG};
+  s.strains = strains;
+  s.guards.energy_check_every = 0;
+  const double hu = 0.5 * (4.0 + 0.1);  // unified: (largest + smallest edge) / 2
+  const double w1 = 2000.0 * kG;        // weight of the 1 m square per unit thickness
+  dda::BlockSpec base;
+  base.vertices = rect(-2.0, -0.1, 4.0, 0.1);
+  base.fixed = true;
+  s.blocks = {base};
+  if (!two_high) {
+    const double d = static_pen(kn, w1, 1.0, inscribed ? 0.5 : hu, inscribed ? 0.05 : hu);
+    dda::BlockSpec a;
+    a.vertices = rect(-0.5, -d, 1.0, 1.0);
+    s.blocks.push_back(a);
+    s.initial_overlap = 2.0 * d * (1.0 + 1e-9);
+  } else {
+    const double d1 = static_pen(kn, 3.0 * w1, 2.0, inscribed ? 0.5 : hu, inscribed ? 0.05 : hu);
+    const double d2 = static_pen(kn, w1, 1.0, inscribed ? 0.5 : hu, inscribed ? 0.5 : hu);
+    dda::BlockSpec l, u;
+    l.vertices = rect(-1.0, -d1, 2.0, 1.0);
+    u.vertices = rect(-0.5, 1.0 - d1 - d2, 1.0, 1.0);
+    s.blocks.push_back(l);
+    s.blocks.push_back(u);
+    s.initial_overlap = 2.0 * std::max(d1, d2) * (1.0 + 1e-9);
+  }
+  rc.name = std::string(two_high ? "1 m square on a free 2 m block on a fixed block" : "1 m square on a fixed block") +
+            ", " + (strains ? "deformable" : "rigid") + ", " + (inscribed ? "H inscribed radius" : "H unified") +
+            ", kn " + format_short(kn) + " Pa";
+  return rc;
+}
+
+bool grows(dda::Scene s, double dt, int steps) {
+  s.dt = dt;
+  try {
+    dda::Simulation sim(s);
+    double early = 0.0, late = 0.0;
+    for (int k = 0; k < steps; ++k) {
+      sim.step();
+      if (k % 50 != 0) continue;
+      const dda::Energy e = sim.energy();
+      const double m = e.kinetic + e.strain + e.contact;
+      if (k < steps / 10) early = std::max(early, m);
+      if (k >= steps - steps / 10) late = std::max(late, m);
+    }
+    return late > 10.0 * early;
+  } catch (const dda::SimulationError&) {
+    return true;
+  }
+}
+
+// ---- 2. maps ----------------------------------------------------------------
+
+struct MapScene {
+  std::string name, title;
+  dda::Scene scene;
+  int a = 0, b = 1;          // approach: b's centroid - a's centroid > 0 while in order
+  Vec2 axis{1.0, 0.0};       // approach axis
+  double rel_mass = 0.0;     // mass of the relative mode, kg
+  double impact_energy = 0.0;  // J
+  double contact_length = 1.0, h_sum_inv = 0.0;  // flat contact: L, 1/H_a + 1/H_b
+};
+
+MapScene two_squares_map() {
+  MapScene m;
+  m.name = "two_squares";
+  m.title = "4.1 two squares (1 m/s, unified H)";
+  m.scene = dda::paper::two_squares();
+  m.scene.blocks[0].vertices = rect(-1.001, -0.5, 1.0, 1.0);  // 1 mm gap
+  m.a = 0;
+  m.b = 1;
+  m.axis = {1.0, 0.0};
+  m.rel_mass = 1000.0;
+  m.impact_energy = 0.5 * 2000.0 * 1.0;
+  m.h_sum_inv = 2.0;  // H = 1 m
+  return m;
+}
+
+MapScene bouncing_map(dda::HRule h) {
+  MapScene m;
+  const bool ins = h == dda::HRule::kInscribedRadius;
+  m.name = ins ? "bouncing_inscribed" : "bouncing_unified";
+  m.title = std::string("5.1 bouncing block, case 1 (3.13 m/s, ") + (ins ? "inscribed-radius H)" : "unified H)");
+  dda::paper::BouncingBlock bb = dda::paper::bouncing_block(0.1, h, 1.0);
+  m.scene = bb.scene;
+  const double v = std::sqrt(2.0 * kG * bb.drop);
+  for (Vec2& p : m.scene.blocks[1].vertices) p.y -= bb.drop - 0.001;  // 1 mm above B
+  m.scene.blocks[1].velocity = {0.0, -v};
+  m.a = 1;  // A above B: B's centroid - A's centroid along -y is negative... use axis -y
+  m.b = 0;
+  m.axis = {0.0, -1.0};
+  m.rel_mass = 2000.0;
+  m.impact_energy = 0.5 * 2000.0 * v * v;
+  m.h_sum_inv = ins ? 1.0 / 0.5 + 1.0 / 0.05 : 2.0 / 2.05;
+  return m;
+}
+
+// Run length: 2 ms (the 1 mm gap) + 4 contact half-periods pi/omega, at most
+// 0.4 s, and never fewer than 10 steps.
+double window(const MapScene& m, double kn, double dt) {
+  const double omega = std::sqrt(kn * m.contact_length * m.h_sum_inv / m.rel_mass);
+  return std::max(std::min(0.4, 0.002 + 4.0 * 3.14159265358979 / omega), 10.0 * dt);
+}
+
+struct MapRun {
+  RunClass cls = RunClass::kStable;
+  double window = 0.0, energy_change = 0.0, max_growth = 0.0;
+  double ratio0 = 0.0, ratio_max = 0.0;  // dt / predicted, max dt / current
+  std::string message;
+};
+
+MapRun map_run(const MapScene& m, double kn, double dt) {
+  MapRun r;
+  dda::Scene s = m.scene;
+  s.contact.kn = kn;
+  s.dt = dt;
+  r.window = window(m, kn, dt);
+  s.duration = r.window;
+  dda::Simulation sim(s);
+  r.ratio0 = dt / sim.predicted_critical_step();
+  r.ratio_max = r.ratio0;
+  const double e0 = sim.energy().total();
+  try {
+    while (sim.time() < r.window - 0.5 * dt) {
+      sim.step();
+      const double growth = (sim.energy().total() - e0) / m.impact_energy;
+      r.max_growth = std::max(r.max_growth, growth);
+      if (!sim.contacts().empty()) r.ratio_max = std::max(r.ratio_max, dt / sim.critical_time_step());
+    }
+  } catch (const dda::SimulationError& e) {
+    r.message = e.what();
+    const bool motion = r.message.find("a vertex moved") != std::string::npos;
+    r.cls = motion && r.max_growth <= 0.01 ? RunClass::kFlipThrough : RunClass::kBlowUp;
+    return r;
+  }
+  r.energy_change = (sim.energy().total() - e0) / m.impact_energy;
+  const double order = dda::dot(sim.centroid(m.b) - sim.centroid(m.a), m.axis);
+  if (order < 0.0) {
+    r.cls = RunClass::kFlipThrough;
+  } else if (r.energy_change > 0.01) {
+    r.cls = RunClass::kEnergyGrowth;
+  }
+  return r;
+}
+
+// dt_crit lines for one kn: the solver's prediction, the old estimate, and
+// the linearised system at the peak contact force of a resolved run.
+struct Lines {
+  double predicted = 0.0, old = 0.0, linearized = 0.0, current_min = 0.0;
+};
+
+Lines lines_for(const MapScene& m, double kn) {
+  Lines l;
+  dda::Scene s = m.scene;
+  s.contact.kn = kn;
+  dda::Simulation probe(s);
+  l.predicted = probe.predicted_critical_step();
+  l.old = old_prior(probe);
+  s.dt = 0.05 * l.predicted;
+  s.duration = window(m, kn, s.dt);
+  dda::Simulation sim(s);
+  double fmax = 0.0;
+  long peak = -1;
+  l.current_min = std::numeric_limits<double>::infinity();
+  while (sim.time() < s.duration - 0.5 * s.dt) {
+    sim.step();
+    double f = 0.0;
+    for (const dda::ContactInfo& c : sim.contacts()) f += dda::length(c.normal_force);
+    if (f > fmax) {
+      fmax = f;
+      peak = sim.step_count();
+    }
+    if (!sim.contacts().empty()) l.current_min = std::min(l.current_min, sim.critical_time_step());
+  }
+  dda::Simulation at(s);
+  while (at.step_count() < peak) at.step();
+  l.linearized = repro::stab::linearized_critical_step(at).dt_crit;
+  return l;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string out = repro::out_dir(argc, argv);
+  const repro::Progress progress("S2 stability maps");
+  const std::string dir = out + "/data/stability_maps";
+  std::vector<repro::Claim> claims;
+
+  // ---- 1. dt_crit check ------------------------------------------------------
+  {
+    repro::CsvWriter csv(dir + "/dt_crit_check.csv",
+                         {"case", "kn", "linearized", "empirical", "solver_current", "solver_predicted",
+                          "old_estimate", "empirical_over_linearized", "current_over_linearized",
+                          "predicted_over_linearized", "old_over_linearized"},
+                         {"dt_crit (s) of a resting contact: linearised 2/omega_max (independent), empirical "
+                          "(bisection, 14 halvings of the log interval, 20000 steps), solver's current and "
+                          "a-priori estimates, and the estimate before this issue"});
+    std::vector<RestCase> cases;
+    for (double kn : {1e6, 1e7, 1e8, 1e9}) cases.push_back(resting(kn, false, false, false));
+    // (kn 1e9 with the inscribed radius: delta_s ~ 1e-6 m, the unstable mode
+    // opens the contact before it grows: no sharp limit; left out.)
+    for (double kn : {1e6, 1e7, 1e8}) cases.push_back(resting(kn, true, false, false));
+    for (double kn : {1e8, 1e9}) cases.push_back(resting(kn, false, false, true));
+    for (double kn : {1e7, 1e8, 1e9}) cases.push_back(resting(kn, false, true, false));
+    for (double kn : {1e7, 1e8}) cases.push_back(resting(kn, true, true, false));
+    double worst_emp = 0.0, worst_cur = 0.0, worst_pred = 0.0, worst_old = 0.0, best_cur = 1e300;
+    for (const RestCase& rc : cases) {
+      dda::Simulation sim(rc.scene);
+      const double lin = repro::stab::linearized_critical_step(sim).dt_crit;
+      double lo = 0.3 * lin, hi = 3.0 * lin;
+      for (int it = 0; it < 14; ++it) {
+        const double mid = std::sqrt(lo * hi);
+        (grows(rc.scene, mid, 20000) ? hi : lo) = mid;
+      }
+      const double emp = std::sqrt(lo * hi);
+      const double cur = sim.critical_time_step(), pred = sim.predicted_critical_step(), old = old_prior(sim);
+      csv.row(std::vector<std::string>{rc.name, num(rc.scene.contact.kn), num(lin), num(emp), num(cur), num(pred),
+                                       num(old), num(emp / lin), num(cur / lin), num(pred / lin), num(old / lin)});
+      worst_emp = std::max(worst_emp, std::fabs(emp / lin - 1.0));
+      worst_cur = std::max(worst_cur, cur / lin);
+      best_cur = std::min(best_cur, cur / lin);
+      worst_pred = std::max(worst_pred, pred / lin);
+      worst_old = std::max(worst_old, old / lin);
+    }
+    csv.commit();
+    claims.push_back({"S2 / dt_crit", "the linearised dt_crit (independent check) is the empirical stability limit "
+                                      "of a resting contact",
+                      "velocity Verlet: stable iff dt < 2 / omega_max",
+                      "largest |empirical / linearised - 1| over " + std::to_string(cases.size()) +
+                          " cases (kn 1e6..1e9, rigid and deformable, unified and inscribed H, one and two free "
+                          "blocks) = " + format_short(worst_emp, 3),
+                      "< 0.02", worst_emp < 0.02});
+    claims.push_back({"S2 / dt_crit", "the solver's critical_time_step() never exceeds the linearised limit",
+                      "a critical step must be safe",
+                      "current / linearised in [" + format_short(best_cur, 3) + ", " + format_short(worst_cur, 3) +
+                          "]; predicted / linearised <= " + format_short(worst_pred, 3) +
+                          "; the estimate before this issue reached " + format_short(worst_old, 3),
+                      "current and predicted <= 1.0", worst_cur <= 1.0 && worst_pred <= 1.0});
+    progress("dt_crit check done");
+  }
+
+  // ---- 2. maps ----------------------------------------------------------------
+  std::vector<double> kns, dts;
+  for (int i = 0; i <= 12; ++i) kns.push_back(std::pow(10.0, 6.0 + 0.5 * i));
+  for (int i = 0; i <= 16; ++i) dts.push_back(std::pow(10.0, -6.0 + 0.25 * i));
+  for (const MapScene& m : {two_squares_map(), bouncing_map(dda::HRule::kMinMaxEdge),
+                            bouncing_map(dda::HRule::kInscribedRadius)}) {
+    repro::CsvWriter map(dir + "/map_" + m.name + ".csv",
+                         {"kn", "dt", "class", "window_s", "dt_over_predicted", "max_dt_over_current",
+                          "energy_change", "max_energy_growth", "message"},
+                         {m.title + ": one run per (kn, dt); energy relative to the impact energy"});
+    repro::CsvWriter bnd(dir + "/boundary_" + m.name + ".csv",
+                         {"kn", "predicted", "old_estimate", "linearized_at_peak", "current_min",
+                          "largest_stable_below_first_failure", "smallest_not_stable", "smallest_blowup"},
+                         {m.title + ": dt_crit lines (s) and the empirical boundary per kn"});
+    // Per class, below (dt <= predicted) and above the prediction.
+    int below[4] = {0, 0, 0, 0}, above[4] = {0, 0, 0, 0}, old_blowups_below = 0;
+    double min_blowup_ratio = 1e300, max_blowup_ratio = 0.0;  // first blow-up dt / predicted, over kn
+    double growth_ratio = 1e300;  // smallest dt/predicted of an 'energy growth' run
+    std::vector<double> flip_below;  // kn with a flip-through at dt <= predicted
+    for (double kn : kns) {
+      const Lines l = lines_for(m, kn);
+      double first_bad = std::numeric_limits<double>::infinity(), first_blowup = first_bad, last_good = 0.0;
+      for (double dt : dts) {
+        const MapRun r = map_run(m, kn, dt);
+        map.row(std::vector<std::string>{num(kn), num(dt), repro::stab::class_name(r.cls), num(r.window),
+                                         num(r.ratio0), num(r.ratio_max), num(r.energy_change), num(r.max_growth),
+                                         r.message});
+        const int c = static_cast<int>(r.cls);
+        ++(dt <= l.predicted ? below : above)[c];
+        if (r.cls == RunClass::kBlowUp) {
+          first_blowup = std::min(first_blowup, dt);
+          if (dt <= l.old) ++old_blowups_below;
+        }
+        if (r.cls == RunClass::kEnergyGrowth) growth_ratio = std::min(growth_ratio, dt / l.predicted);
+        if (r.cls == RunClass::kFlipThrough && dt <= l.predicted && (flip_below.empty() || flip_below.back() != kn))
+          flip_below.push_back(kn);
+        if (r.cls != RunClass::kStable) first_bad = std::min(first_bad, dt);
+      }
+      for (double dt : dts)
+        if (dt < first_bad) last_good = dt;
+      bnd.row({kn, l.predicted, l.old, l.linearized, l.current_min, last_good,
+               std::isfinite(first_bad) ? first_bad : 0.0, std::isfinite(first_blowup) ? first_blowup : 0.0});
+      if (std::isfinite(first_blowup)) {
+        min_blowup_ratio = std::min(min_blowup_ratio, first_blowup / l.predicted);
+        max_blowup_ratio = std::max(max_blowup_ratio, first_blowup / l.predicted);
+      }
+    }
+    map.commit();
+    bnd.commit();
+    auto counts = [](const int* n) {
+      return std::to_string(n[0]) + " stable, " + std::to_string(n[1]) + " energy growth, " + std::to_string(n[2]) +
+             " flip-through, " + std::to_string(n[3]) + " blow-up";
+    };
+    std::string flip_note;
+    for (double kn : flip_below) flip_note += (flip_note.empty() ? "" : ", ") + format_short(kn);
+    const std::string summary = "at dt <= predicted: " + counts(below) + "; above: " + counts(above);
+    claims.push_back({"S2 / map", m.title + ": no blow-up at dt <= the predicted dt_crit",
+                      "the user: check stability on stiff cases against the predicted critical step",
+                      summary + "; first blow-up at " + format_short(min_blowup_ratio, 3) + " to " +
+                          format_short(max_blowup_ratio, 3) + " x predicted over kn; estimate before this issue: " +
+                          std::to_string(old_blowups_below) + " blow-ups at or below it",
+                      "0 blow-ups at dt <= predicted", below[3] == 0});
+    claims.push_back({"S2 / map", m.title + ": energy created by under-resolved impacts below the prediction",
+                      "not discussed in the paper",
+                      "smallest dt / predicted of an 'energy growth > 1 %' run: " + format_short(growth_ratio, 3) +
+                          (flip_note.empty() ? std::string("")
+                                             : "; flip-through at dt <= predicted (penetration deeper than half "
+                                               "the thin block, not a time-step effect) for kn = " + flip_note + " Pa"),
+                      "information: an accuracy limit (few steps per contact), not a stability limit", true});
+    progress(m.title + ": " + summary);
+  }
+  repro::write_claims(repro::claims_path(out, "S2_stability_maps"), claims);
+  progress("done");
+  return 0;
+}
