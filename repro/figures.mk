@@ -161,6 +161,39 @@ $(OUT)/figures/figB_comparison.png: $(OUT)/data/B_7_contact_comparison/.done fig
 FIGS += $(OUT)/figures/figB_comparison.png
 $(OUT)/report.md: $(OUT)/data/B_7_contact_comparison/.done
 
+# --- Paper A Sect. 6.1: collapse of a jointed rock column, Fig. 20 ----------
+# ~75,000 steps per case (two cases): the longest driver; it prints progress.
+$(OUT)/data/collapse/.done: $(BIN)/collapse
+	$(BIN)/collapse --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig20_collapse.png: $(OUT)/data/collapse/.done figures/fig20_collapse.py figures/blocks_common.py figures/potential_common.py
+	$(PY) figures/fig20_collapse.py $(OUT)/data/collapse $@
+
+$(OUT)/figures/fig20_collapse_runout.png: $(OUT)/data/collapse/.done figures/fig20_collapse.py figures/blocks_common.py figures/potential_common.py
+	$(PY) figures/fig20_collapse.py --runout $(OUT)/data/collapse $@
+
+$(OUT)/figures/anim_collapse_case1.gif: $(OUT)/data/collapse/.done figures/anim_collapse.py figures/blocks_common.py figures/potential_common.py
+	$(PY) figures/anim_collapse.py $(OUT)/data/collapse case1 $@
+
+$(OUT)/figures/anim_collapse_case2.gif: $(OUT)/data/collapse/.done figures/anim_collapse.py figures/blocks_common.py figures/potential_common.py
+	$(PY) figures/anim_collapse.py $(OUT)/data/collapse case2 $@
+
+FIGS += $(OUT)/figures/fig20_collapse.png $(OUT)/figures/fig20_collapse_runout.png \
+        $(OUT)/figures/anim_collapse_case1.gif $(OUT)/figures/anim_collapse_case2.gif
+$(OUT)/report.md: $(OUT)/data/collapse/.done
+
+# --- Paper A Sect. 6.2: toppling and slumping valley slopes, Fig. 22 --------
+$(OUT)/data/toppling_slumping/.done: $(BIN)/toppling_slumping
+	$(BIN)/toppling_slumping --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig22_toppling.png: $(OUT)/data/toppling_slumping/.done figures/fig22_toppling.py figures/blocks_common.py figures/potential_common.py
+	$(PY) figures/fig22_toppling.py $(OUT)/data/toppling_slumping $@
+
+FIGS += $(OUT)/figures/fig22_toppling.png
+$(OUT)/report.md: $(OUT)/data/toppling_slumping/.done
+
 # --- S1: work precision, error against run time (issue: stiff/extreme) -----
 $(OUT)/data/work_precision/.done: $(BIN)/work_precision
 	$(BIN)/work_precision --out $(OUT)

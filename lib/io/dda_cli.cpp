@@ -59,7 +59,12 @@ int cmd_check(const std::vector<std::string>& args) {
       const dda::io::SceneFile f = dda::io::load_scene_file(path);
       const double steps = std::round(f.scene.duration / f.scene.dt);
       std::cout << path << ": ok: " << f.scene.blocks.size() << " blocks, " << f.scene.boundaries.size()
-                << " boundary segments, " << steps << " steps of " << f.scene.dt << " s\n";
+                << " boundary segments, " << steps << " steps of " << f.scene.dt << " s";
+      for (std::size_t g = 0; g < f.generated.size(); ++g)
+        std::cout << (g == 0 ? " (" : "; ") << f.generated[g].count << " blocks generated from region " << g << ", "
+                  << f.generated[g].dropped << " slivers dropped (" << f.generated[g].dropped_area << " m^2)"
+                  << (g + 1 == f.generated.size() ? ")" : "");
+      std::cout << "\n";
     } catch (const dda::io::SceneFileError& e) {
       std::cerr << e.what() << "\n";
       rc = kBadInput;

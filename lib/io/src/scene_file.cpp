@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dda/io/csv.hpp"
+#include "dda/joint_sets.hpp"
 #include "dda/simulation.hpp"
 
 namespace dda::io {
@@ -281,6 +282,20 @@ Material read_material(const Reader& r, const json& v, const std::string& path, 
   return m;
 }
 
+// A material given by index or by name.
+int material_ref(const Reader& r, const json& x, const std::string& mp, const Names& names) {
+  if (x.is_string()) {
+    const std::string name = x.get<std::string>();
+    const auto it = std::find(names.materials.begin(), names.materials.end(), name);
+    if (it == names.materials.end()) r.fail(mp, "no material named \"" + name + "\"");
+    if (std::find(it + 1, names.materials.end(), name) != names.materials.end())
+      r.fail(mp, "material name \"" + name + "\" is ambiguous (several materials have it)");
+    return static_cast<int>(it - names.materials.begin());
+  }
+  if (x.is_number()) return r.integer(x, mp);
+  r.fail(mp, "expected a material index or name, got " + describe_value(x));
+}
+
 BlockSpec read_block(const Reader& r, const json& v, const std::string& path, const Names& names) {
   r.object(v, path,
            {"name", "vertices", "rect", "rotate_deg", "about", "velocity", "spin", "fixed", "material", "group"});
@@ -316,21 +331,7 @@ BlockSpec read_block(const Reader& r, const json& v, const std::string& path, co
   if (const json* x = Reader::find(v, "spin")) b.spin = r.number(*x, join_path(path, "spin"));
   if (const json* x = Reader::find(v, "fixed")) b.fixed = r.boolean(*x, join_path(path, "fixed"));
   if (const json* x = Reader::find(v, "group")) b.group = r.integer(*x, join_path(path, "group"));
-  if (const json* x = Reader::find(v, "material")) {
-    const std::string mp = join_path(path, "material");
-    if (x->is_string()) {
-      const std::string name = x->get<std::string>();
-      const auto it = std::find(names.materials.begin(), names.materials.end(), name);
-      if (it == names.materials.end()) r.fail(mp, "no material named \"" + name + "\"");
-      if (std::find(it + 1, names.materials.end(), name) != names.materials.end())
-        r.fail(mp, "material name \"" + name + "\" is ambiguous (several materials have it)");
-      b.material = static_cast<int>(it - names.materials.begin());
-    } else if (x->is_number()) {
-      b.material = r.integer(*x, mp);
-    } else {
-      r.fail(mp, "expected a material index or name, got " + describe_value(*x));
-    }
-  }
+  if (const json* x = Reader::find(v, "material")) b.material = material_ref(r, *x, join_path(path, "material"), names);
   if (b.fixed && (b.velocity != Vec2{} || b.spin != 0.0))
     r.fail(join_path(path, Reader::find(v, "velocity") ? "velocity" : "spin"),
            "a fixed block never moves: give it no velocity or spin");
@@ -345,6 +346,60 @@ BoundarySegment read_boundary(const Reader& r, const json& v, const std::string&
   if (const json* x = Reader::find(v, "depth")) s.depth = r.number(*x, join_path(path, "depth"));
   if (const json* x = Reader::find(v, "group")) s.group = r.integer(*x, join_path(path, "group"));
   return s;
+}
+
+// A "generated" entry: a region cut into convex blocks by joint sets
+// (dda::generate_blocks); appends the blocks to `blocks`.
+GeneratedRegion read_generated(const Reader& r, const json& v, const std::string& path, const Names& names,
+                               std::vector<BlockSpec>& blocks) {
+  r.object(v, path, {"name", "region", "joint_sets", "min_area", "material", "group"});
+  const std::string rp = join_path(path, "region");
+  const json& reg = r.array(r.need(v, path, "region"), rp, " of [x, y] points");
+  std::vector<Vec2> region;
+  for (std::size_t i = 0; i < reg.size(); ++i) region.push_back(r.vec2(reg[i], index_path(rp, i)));
+  const std::string jp = join_path(path, "joint_sets");
+  const json& js = r.array(r.need(v, path, "joint_sets"), jp, " of {\"dip_deg\", \"spacing\", \"origin\"}");
+  std::vector<JointSet> sets;
+  for (std::size_t i = 0; i < js.size(); ++i) {
+    const std::string ep = index_path(jp, i);
+    r.object(js[i], ep, {"dip_deg", "spacing", "origin"});
+    JointSet j;
+    j.dip_deg = r.number(r.need(js[i], ep, "dip_deg"), join_path(ep, "dip_deg"));
+    j.spacing = r.number(r.need(js[i], ep, "spacing"), join_path(ep, "spacing"));
+    if (const json* x = Reader::find(js[i], "origin")) j.origin = r.vec2(*x, join_path(ep, "origin"));
+    sets.push_back(j);
+  }
+  double min_area = 0.0;
+  if (const json* x = Reader::find(v, "min_area")) {
+    min_area = r.number(*x, join_path(path, "min_area"));
+    if (!(min_area >= 0.0)) r.fail(join_path(path, "min_area"), "must be >= 0 (m^2)");
+  }
+  BlockSpec proto;
+  if (const json* x = Reader::find(v, "material")) proto.material = material_ref(r, *x, join_path(path, "material"), names);
+  if (const json* x = Reader::find(v, "group")) proto.group = r.integer(*x, join_path(path, "group"));
+  std::string name;
+  if (const json* x = Reader::find(v, "name")) name = r.string(*x, join_path(path, "name"));
+  GeneratedBlocks g;
+  try {
+    g = generate_blocks(region, sets, min_area);
+  } catch (const std::invalid_argument& e) {
+    // The generator names "region..." or "joint_sets[k]..." first.
+    const std::string m = e.what();
+    if (m.rfind("region", 0) == 0 || m.rfind("joint_sets", 0) == 0) r.fail("", path + "." + m);
+    r.fail(path, m);
+  }
+  GeneratedRegion out;
+  out.first_block = static_cast<int>(blocks.size());
+  out.count = static_cast<int>(g.blocks.size());
+  out.dropped = g.dropped;
+  out.dropped_area = g.dropped_area;
+  for (std::size_t k = 0; k < g.blocks.size(); ++k) {
+    BlockSpec b = proto;
+    b.vertices.assign(g.blocks[k].v.begin(), g.blocks[k].v.begin() + g.blocks[k].count);
+    if (!name.empty()) b.name = name + "_" + std::to_string(k);
+    blocks.push_back(std::move(b));
+  }
+  return out;
 }
 
 ContactParams read_contact(const Reader& r, const json& v, const std::string& path) {
@@ -447,6 +502,35 @@ OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
   return out;
 }
 
+// " (blocks[7] is block 2 of generated[0])" for a kernel message about a
+// generated block, so that the file's author can find it; "" otherwise.
+std::string generated_note(const std::string& message, const std::vector<GeneratedRegion>& generated,
+                           const std::vector<std::string>& paths) {
+  if (generated.empty()) return "";
+  std::string note;
+  std::size_t pos = 0;
+  while ((pos = message.find("blocks[", pos)) != std::string::npos) {
+    const std::size_t end = message.find(']', pos);
+    if (end == std::string::npos) break;
+    int id = -1;
+    try {
+      id = std::stoi(message.substr(pos + 7, end - pos - 7));
+    } catch (const std::exception&) {
+      break;
+    }
+    for (std::size_t g = 0; g < generated.size(); ++g) {
+      const GeneratedRegion& gr = generated[g];
+      if (id >= gr.first_block && id < gr.first_block + gr.count) {
+        const std::string& where = paths[g];
+        note += std::string(note.empty() ? " (" : "; ") + "blocks[" + std::to_string(id) + "] is block " +
+                std::to_string(id - gr.first_block) + " of " + where;
+      }
+    }
+    pos = end;
+  }
+  return note.empty() ? "" : note + ")";
+}
+
 }  // namespace
 
 SceneFile parse_scene(const std::string& json_text, const std::string& file_label) {
@@ -454,7 +538,7 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   const json root = parse_json(json_text, r);
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
-           {"name", "description", "materials", "blocks", "boundaries", "contact", "gravity", "strains",
+           {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
             "broad_phase", "initial_overlap", "dt", "duration", "output"});
 
   SceneFile f;
@@ -472,6 +556,19 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   const json& blocks = r.array(r.need(root, "", "blocks"), "blocks", " of blocks");
   for (std::size_t i = 0; i < blocks.size(); ++i)
     s.blocks.push_back(read_block(r, blocks[i], index_path("blocks", i), names));
+  std::vector<std::string> generated_paths;
+  if (const json* x = Reader::find(root, "generated")) {
+    // One generator object, or an array of them.
+    if (x->is_object()) {
+      generated_paths.push_back("generated");
+    } else {
+      r.array(*x, "generated", " of generated regions (or one object)");
+      for (std::size_t i = 0; i < x->size(); ++i) generated_paths.push_back(index_path("generated", i));
+    }
+    for (std::size_t i = 0; i < generated_paths.size(); ++i)
+      f.generated.push_back(
+          read_generated(r, x->is_object() ? *x : (*x)[i], generated_paths[i], names, s.blocks));
+  }
   if (const json* x = Reader::find(root, "boundaries")) {
     r.array(*x, "boundaries", " of segments");
     for (std::size_t i = 0; i < x->size(); ++i)
@@ -490,7 +587,7 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   try {
     check_scene(s);
   } catch (const SceneError& e) {
-    throw SceneFileError(file_label + ": " + e.what());
+    throw SceneFileError(file_label + ": " + e.what() + generated_note(e.what(), f.generated, generated_paths));
   }
   // Consistency that only matters for a file: a friction angle that would be
   // silently ignored.

@@ -20,9 +20,20 @@ struct OutputSpec {
   std::vector<int> tracked_blocks;     // scene block indices in the time series; empty = all
 };
 
+// One "generated" entry of a scene file: a region cut into blocks by joint
+// sets (dda::generate_blocks). Its blocks are scene.blocks[first_block] to
+// scene.blocks[first_block + count - 1], after the listed blocks.
+struct GeneratedRegion {
+  int first_block = 0;
+  int count = 0;
+  int dropped = 0;            // slivers below min_area, not in the scene
+  double dropped_area = 0.0;  // m^2
+};
+
 struct SceneFile {
   dda::Scene scene;
   OutputSpec output;
+  std::vector<GeneratedRegion> generated;  // empty if the file has no "generated" section
 };
 
 // Any problem with a scene file: unreadable, not JSON, not the schema, or a
@@ -40,7 +51,9 @@ SceneFile load_scene_file(const std::string& path);
 SceneFile parse_scene(const std::string& json_text, const std::string& file_label);
 
 // The JSON text of a scene file (vertices written out explicitly, numbers in
-// shortest round-trip form): parse_scene(write_scene(f), ...) gives back f.
+// shortest round-trip form): parse_scene(write_scene(f), ...) gives back f's
+// scene and output (generated blocks come back as listed blocks, so
+// `generated` comes back empty).
 std::string write_scene(const SceneFile& file);
 
 // Writes write_scene(file) to `path` atomically ("<path>.tmp", then rename).

@@ -1,0 +1,93 @@
+"""Paper A Fig. 20: collapse of the jointed rock column (Sect. 6.1).
+
+usage: fig20_collapse.py DATA_DIR OUT_PNG            (DATA_DIR from the collapse driver)
+       fig20_collapse.py --runout DATA_DIR OUT_PNG
+
+Default: the block system at 2.5, 5.0 and 7.5 s (rows) for case 1 (joint
+friction 15 deg) and case 2 (30 deg) (columns), blocks coloured by speed on
+one colour scale, as the paper's panels a-f (times beyond a shortened run are
+left out). --runout: front position, mean centroid drop and runout mass
+versus time for both cases.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from blocks_common import Frames, draw_blocks, draw_boundaries, np, plt, read_boundaries, read_csv, save_atomic  # noqa: E402
+import matplotlib.colors  # noqa: E402
+
+args = sys.argv[1:]
+runout = bool(args) and args[0] == "--runout"
+if runout:
+    args = args[1:]
+if len(args) != 2:
+    raise SystemExit(__doc__)
+data, out_png = args
+cases = [("case1", "case 1: joint friction 15 deg"), ("case2", "case 2: joint friction 30 deg")]
+
+
+def runout_figure():
+    fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(13, 4))
+    for c, label in cases:
+        _, s = read_csv(os.path.join(data, c, "series.csv"))
+        a1.plot(s["time"], s["front_x"], label=label)
+        a2.plot(s["time"], s["mean_drop"], label=label)
+        a3.plot(s["time"], 100.0 * s["runout_mass"], label=label)
+    for t in (2.5, 5.0, 7.5):
+        for a in (a1, a2, a3):
+            a.axvline(t, color="0.8", lw=0.8, ls=":")
+    a1.set_ylabel("front: largest block x (m)")
+    a2.set_ylabel("mass-weighted mean centroid drop (m)")
+    a3.set_ylabel("runout mass: centroid beyond x = 20 m (%)")
+    for a in (a1, a2, a3):
+        a.set_xlabel("time (s)")
+        a.grid(alpha=0.3)
+    a1.legend()
+    fig.suptitle("Sect. 6.1 collapse (reconstructed geometry): front, mean drop and runout mass", fontsize=10)
+    fig.tight_layout()
+    save_atomic(fig, out_png)
+
+
+if runout:
+    runout_figure()
+    sys.exit(0)
+
+frames = {c: Frames(os.path.join(data, c)) for c, _ in cases}
+bounds = read_boundaries(os.path.join(data, "boundaries.csv"))
+t_end = min(f.times[-1] for f in frames.values())
+times = [t for t in (2.5, 5.0, 7.5) if t <= t_end + 1e-9] or [t_end]
+
+# One speed scale for every panel: the 99th percentile of all shown speeds.
+speeds = np.concatenate([frames[c].state(t, "speed") for c, _ in cases for t in times])
+vmax = max(float(np.percentile(speeds, 99)), 1e-3)
+norm = matplotlib.colors.Normalize(0.0, vmax)
+xmax = max(max(p[:, 0].max() for p in frames[c].polygons(t)) for c, _ in cases for t in times)
+xmax = max(xmax + 5.0, 40.0)
+
+panel_w = 7.0  # inches per panel; the height follows the equal-aspect data box
+panel_h = panel_w * 59.0 / (xmax + 6.0) + 0.55
+fig, axes = plt.subplots(len(times), 2, figsize=(2 * panel_w + 1.4, panel_h * len(times) + 0.7), squeeze=False,
+                         sharex=True, sharey=True)
+letters = "abcdef"
+for r, t in enumerate(times):
+    for k, (c, label) in enumerate(cases):
+        ax = axes[r][k]
+        draw_boundaries(ax, bounds, shade=2.0)
+        for p in frames[c].polygons(0.0):
+            ax.add_patch(plt.Polygon(p, closed=True, fill=False, edgecolor="0.75", lw=0.3, zorder=1.5))
+        pc = draw_blocks(ax, frames[c].polygons(t), frames[c].state(t, "speed"), norm, cmap="plasma", lw=0.25)
+        ax.set_xlim(-6.0, xmax)
+        ax.set_ylim(-3.0, 56.0)
+        ax.set_aspect("equal")
+        ax.set_title("(%s) %s, t = %.1f s" % (letters[2 * r + k], label, frames[c].nearest(t)), fontsize=9)
+        if r == len(times) - 1:
+            ax.set_xlabel("x (m)")
+        if k == 0:
+            ax.set_ylabel("y (m)")
+fig.suptitle("Fig. 20 (geometry reconstructed, Fig. 19 lost): 20 m x 50 m column, joints dip 80/40 deg, "
+             "spacing 1.5/2.5 m; grey: t = 0", fontsize=10)
+fig.tight_layout(rect=(0, 0, 0.92, 0.97))
+cax = fig.add_axes((0.93, 0.15, 0.015, 0.7))
+cb = fig.colorbar(pc, cax=cax)
+cb.set_label("block speed (m/s)")
+save_atomic(fig, out_png)

@@ -1,0 +1,389 @@
+// Paper A, Sect. 6.2 "Rock toppling and rock slumping" (Figs. 21-22).
+//
+// GEOMETRY RECONSTRUCTED: Fig. 21 (the model) is lost. The paper: valley
+// slopes cut by one joint set (dip 75 deg, spacing 3 m) on a sliding base
+// inclined at 30 deg; base friction 32 deg (each slope alone would stand as
+// one block), joint friction 22 deg. Ours (dda::paper::toppling_slumping):
+// a valley with a flat floor |x| < 8 m and two fixed sliding bases dipping
+// 30 deg toward the axis, each carrying a 24 m high rock wedge with a
+// horizontal top. One joint set of fixed orientation (dip 75 deg toward +x)
+// cuts both wedges, so on the LEFT slope the joints dip toward the valley
+// (slabs leaning back into the hill) and on the RIGHT slope they dip into
+// the hill (columns leaning 15 deg out over the valley).
+// rho 2700, E 2 GPa, nu 0.3, kn 0.5 GPa, kt 1e8 N/m, dt 1e-4 s, 3.5 s.
+//
+// Expected (paper, Fig. 22 at 3.5 s): "The left part will fail in slumping
+// pattern, while the right part will fail with toppling pattern."
+// Measured per side, mass-weighted over its blocks: the rotation toward the
+// valley ("outward": clockwise on the left, counter-clockwise on the right),
+// the slip of each block's base (the midpoint of the edge that lay on the
+// sliding base at t = 0) along the base, down-dip, and the centroid
+// displacement along the base. A block topples when it rotates outward about
+// its toe: rotation, not base slip, carries its top; it slumps when it
+// slides down the base with small rotation (see the claims for the numbers).
+//
+// Options: --out DIR, --duration S (default: the scene's 3.5 s), --threads N
+// (default 1).
+//
+// Controls (claims only): the same model with the joints locked (friction
+// 80 deg), and each slope as ONE block -- the paper's premise that each
+// slope alone is stable on its base.
+//
+// Output under data/toppling_slumping/: series.csv (per-side measures every
+// 0.01 s), frames.csv (polygons every 0.05 s), blocks.csv (per-block state at
+// the same times), sides.csv (block, side, length along the joints),
+// boundaries.csv, summary.csv (model and controls), vtk/t<T>.vtk;
+// claims/6_2_toppling_slumping.csv.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "dda/rock_scenes.hpp"
+#include "dda/simulation.hpp"
+#include "repro/common/common.hpp"
+#include "repro/common/options.hpp"
+#include "repro/common/sim_output.hpp"
+#include "repro/common/vtk_output.hpp"
+
+namespace {
+using repro::format_short;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kSeriesEvery = 0.01;  // s
+constexpr double kFrameEvery = 0.05;   // s
+
+// Per-side measures, mass-weighted means over the side's blocks.
+struct SideState {
+  double outward_rotation = 0.0;  // rad, > 0 toward the valley
+  double abs_rotation = 0.0;      // rad
+  double base_slip = 0.0;         // m, base-edge midpoint along the base, down-dip
+  double centroid_downdip = 0.0;  // m, centroid along the base, down-dip
+  double rotation_travel = 0.0;   // m, |rotation| x block length: the top's travel due to rotation
+  double toppled_share = 0.0;     // share of the side's mass rotated outward by > 10 deg
+};
+
+std::string time_tag(double t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", t);
+  return b;
+}
+
+// Per-side measures of a running simulation of a TopplingSlumping scene (or
+// a variant of it with other blocks on the same bases).
+class Tracker {
+ public:
+  Tracker(const dda::Simulation& sim, const dda::paper::TopplingSlumping& ts, const std::vector<int>& side)
+      : sim_(sim), ts_(ts), side_(side) {
+    const int n = sim.scene_block_count();
+    const double dip = ts.joints.dip_deg * kPi / 180.0;
+    const dda::Vec2 joint_dir{std::cos(dip), -std::sin(dip)};
+    blocks_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      Block& b = blocks_[static_cast<std::size_t>(i)];
+      const int s = side[static_cast<std::size_t>(i)];
+      b.which = s < 0 ? 0 : 1;
+      const dda::Vec2 toe{s < 0 ? -ts.valley_half_width : ts.valley_half_width, 0.0};
+      b.down = s < 0 ? ts.left_downdip : ts.right_downdip;
+      const dda::Polygon& p = sim.polygon(i);
+      double lo = 1e300, hi = -1e300;
+      for (int v = 0; v < p.count; ++v) {
+        const double d = dot(p.vertex(v) - toe, joint_dir);
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+        // On the sliding base at t = 0: within 1e-9 m of its line.
+        if (std::fabs(cross(b.down, p.vertex(v) - toe)) < 1e-9) (b.base_a < 0 ? b.base_a : b.base_b) = v;
+      }
+      if (b.base_b < 0) throw std::runtime_error("block " + std::to_string(i) + " has no edge on the sliding base");
+      b.length = hi - lo;
+      b.mass = sim.mass(i);
+      side_mass_[b.which] += b.mass;
+      b.c0 = sim.centroid(i);
+      b.mid0 = 0.5 * (p.vertex(b.base_a) + p.vertex(b.base_b));
+    }
+  }
+
+  SideState measure(int which) const {  // which: 0 left, 1 right
+    SideState s;
+    for (std::size_t u = 0; u < blocks_.size(); ++u) {
+      const Block& b = blocks_[u];
+      if (b.which != which) continue;
+      const int i = static_cast<int>(u);
+      const double rot = sim_.displacement(i)[2];
+      const double outward = which == 0 ? -rot : rot;
+      const dda::Polygon& p = sim_.polygon(i);
+      const dda::Vec2 mid = 0.5 * (p.vertex(b.base_a) + p.vertex(b.base_b));
+      const double w = b.mass / side_mass_[which];
+      s.outward_rotation += w * outward;
+      s.abs_rotation += w * std::fabs(rot);
+      s.base_slip += w * dot(mid - b.mid0, b.down);
+      s.centroid_downdip += w * dot(sim_.centroid(i) - b.c0, b.down);
+      s.rotation_travel += w * std::fabs(rot) * b.length;
+      if (outward > 10.0 * kPi / 180.0) s.toppled_share += w;
+    }
+    return s;
+  }
+
+  void write_sides(const std::string& path, const std::string& note) const {
+    repro::CsvWriter c(path, {"block", "side", "mass", "length", "base_vertex_a", "base_vertex_b"},
+                       {note, "side -1: left slope, +1: right slope"});
+    for (std::size_t u = 0; u < blocks_.size(); ++u) {
+      const Block& b = blocks_[u];
+      c.row({static_cast<double>(u), b.which == 0 ? -1.0 : 1.0, b.mass, b.length, static_cast<double>(b.base_a),
+             static_cast<double>(b.base_b)});
+    }
+    c.commit();
+  }
+
+ private:
+  struct Block {
+    int which = 0, base_a = -1, base_b = -1;
+    double mass = 0.0, length = 0.0;
+    dda::Vec2 down{}, c0{}, mid0{};
+  };
+  const dda::Simulation& sim_;
+  const dda::paper::TopplingSlumping& ts_;
+  std::vector<int> side_;
+  std::vector<Block> blocks_;
+  double side_mass_[2] = {0.0, 0.0};
+};
+
+// A control run without output: the per-side state at the end.
+struct Control {
+  SideState left, right;
+  double wall = 0.0;
+  long long steps = 0;
+};
+Control run_control(const dda::paper::TopplingSlumping& ts, const dda::Scene& scene, const std::vector<int>& side,
+                    int threads, const std::string& label) {
+  const repro::Progress clock("6.2 control: " + label);
+  dda::Simulation sim(scene);
+  sim.set_threads(threads);
+  const Tracker tr(sim, ts, side);
+  const auto steps = static_cast<long long>(std::llround(scene.duration / sim.dt()));
+  for (long long s = 0; s < steps; ++s) sim.step();
+  Control c;
+  c.left = tr.measure(0);
+  c.right = tr.measure(1);
+  c.wall = clock.elapsed_seconds();
+  c.steps = sim.step_count();
+  clock("done: " + std::to_string(c.steps) + " steps in " + format_short(c.wall, 3) + " s; left base slip " +
+        format_short(c.left.base_slip, 3) + " m, right outward rotation " +
+        format_short(c.right.outward_rotation * 180.0 / kPi, 3) + " deg");
+  return c;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  const std::string out = repro::out_dir(argc, argv);
+  const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
+  const double duration = repro::option_number(argc, argv, "--duration", full.scene.duration);
+  const int threads = repro::option_int(argc, argv, "--threads", 1);
+  if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
+  const dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping(full.min_area, duration);
+  const repro::Progress progress("6.2 toppling/slumping");
+  dda::Simulation sim(ts.scene);
+  sim.set_threads(threads);
+  const int n = sim.scene_block_count();
+  const double dt_ratio0 = sim.dt() / sim.predicted_critical_step();
+  progress(std::to_string(n) + " blocks (" + std::to_string(ts.dropped) + " slivers dropped, " +
+           format_short(ts.dropped_area, 3) + " m^2), H = " + format_short(sim.potential_length(0), 4) +
+           " m, dt/dt_crit = " + format_short(dt_ratio0, 3) + " at start");
+  const std::string dir = out + "/data/toppling_slumping";
+  const std::string note = "Paper A Sect. 6.2, geometry reconstructed (Fig. 21 lost)";
+  const Tracker tracker(sim, ts, ts.side);
+  tracker.write_sides(dir + "/sides.csv", note);
+
+  repro::CsvWriter series(dir + "/series.csv",
+                          {"time", "left_outward_rotation", "left_abs_rotation", "left_base_slip",
+                           "left_centroid_downdip", "left_rotation_travel", "left_toppled_share",
+                           "right_outward_rotation", "right_abs_rotation", "right_base_slip", "right_centroid_downdip",
+                           "right_rotation_travel", "right_toppled_share", "E_kinetic", "E_total", "dt_over_dt_crit"},
+                          {note, "rotations in rad (outward: toward the valley), displacements in m, energy in J/m"});
+  repro::CsvWriter frames(dir + "/frames.csv", repro::snapshot_header(), {note});
+  repro::CsvWriter states(dir + "/blocks.csv",
+                          {"time", "block", "cx", "cy", "vx", "vy", "speed", "dx", "dy", "rotation"}, {note});
+  double e0 = 0.0, rise = 0.0, ratio_max = 0.0;
+  SideState left, right;
+  auto sample = [&] {
+    left = tracker.measure(0);
+    right = tracker.measure(1);
+    const dda::Energy e = sim.energy();
+    if (sim.step_count() == 0) e0 = e.total();
+    rise = std::max(rise, e.total() - e0);
+    const double ratio = sim.dt() / sim.critical_time_step();
+    ratio_max = std::max(ratio_max, ratio);
+    series.row({sim.time(), left.outward_rotation, left.abs_rotation, left.base_slip, left.centroid_downdip,
+                left.rotation_travel, left.toppled_share, right.outward_rotation, right.abs_rotation, right.base_slip,
+                right.centroid_downdip, right.rotation_travel, right.toppled_share, e.kinetic, e.total(), ratio});
+  };
+  auto frame = [&] {
+    repro::write_snapshot(frames, sim);
+    for (int i = 0; i < n; ++i) {
+      const dda::Vec6& v = sim.velocity(i);
+      const dda::Vec6& d = sim.displacement(i);
+      states.row({sim.time(), static_cast<double>(i), sim.centroid(i).x, sim.centroid(i).y, v[0], v[1],
+                  std::hypot(v[0], v[1]), d[0], d[1], d[2]});
+    }
+  };
+  auto vtk = [&] {
+    repro::write_vtk_polydata(dir + "/vtk/t" + time_tag(sim.time()) + ".vtk", sim,
+                              "Paper A 6.2 toppling and slumping t = " + time_tag(sim.time()) + " s", true);
+  };
+
+  const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
+  const auto series_every = static_cast<long long>(std::llround(kSeriesEvery / sim.dt()));
+  const auto frame_every = static_cast<long long>(std::llround(kFrameEvery / sim.dt()));
+  const auto vtk_every = static_cast<long long>(std::llround(1.0 / sim.dt()));
+  sample();
+  frame();
+  vtk();
+  const repro::Progress clock("");
+  double last_report = 0.0;
+  for (long long s = 1; s <= steps; ++s) {
+    sim.step();
+    if (s % series_every == 0 || s == steps) sample();
+    if (s % frame_every == 0 || s == steps) frame();
+    if (s % vtk_every == 0 || s == steps) vtk();
+    if (s % series_every == 0 && clock.elapsed_seconds() - last_report > 5.0) {
+      last_report = clock.elapsed_seconds();
+      progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, right outward rotation " +
+               format_short(right.outward_rotation * 180.0 / kPi, 3) + " deg, left base slip " +
+               format_short(left.base_slip, 3) + " m");
+    }
+  }
+  const double wall = clock.elapsed_seconds();
+  const double sps = static_cast<double>(sim.step_count()) / wall;
+  series.commit();
+  frames.commit();
+  states.commit();
+  progress("done: " + std::to_string(sim.step_count()) + " steps in " + format_short(wall, 4) + " s (" +
+           format_short(sps, 4) + " steps/s)");
+
+  // Controls (no output but the claims): the joints locked (friction 80 deg
+  // instead of 22), and each slope as ONE block (the wedge outline itself),
+  // the paper's premise "both the left slope and right slope will keep
+  // stable as one unique block".
+  dda::Scene locked = ts.scene;
+  locked.contact.friction_deg = 80.0;
+  const Control c_locked = run_control(ts, locked, ts.side, threads, "joints locked (80 deg)");
+  dda::Scene whole = ts.scene;
+  whole.blocks.clear();
+  for (const auto* region : {&ts.left_region, &ts.right_region}) {
+    dda::BlockSpec b;
+    b.vertices = *region;
+    b.group = dda::paper::kRockGroup;
+    whole.blocks.push_back(b);
+  }
+  const Control c_whole = run_control(ts, whole, {-1, +1}, threads, "each slope one block");
+
+  {
+    repro::CsvWriter b(dir + "/boundaries.csv", {"ax", "ay", "bx", "by", "depth"},
+                       {"boundary segments, solid on the right of a -> b"});
+    for (const dda::BoundarySegment& g : ts.scene.boundaries) b.row({g.a.x, g.a.y, g.b.x, g.b.y, g.depth});
+    b.commit();
+  }
+  {
+    repro::CsvWriter sum(dir + "/summary.csv",
+                         {"run", "blocks", "dropped", "dropped_area", "H", "dt", "dt_over_dt_crit_start",
+                          "dt_over_dt_crit_max", "duration", "steps", "wall_s", "steps_per_s", "left_outward_rotation",
+                          "left_base_slip", "right_outward_rotation", "right_base_slip"},
+                         {note, "run 0: the model; 1: joints locked (80 deg); 2: each slope one block"});
+    sum.row({0.0, static_cast<double>(n), static_cast<double>(ts.dropped), ts.dropped_area, sim.potential_length(0),
+             sim.dt(), dt_ratio0, ratio_max, duration, static_cast<double>(sim.step_count()), wall, sps,
+             left.outward_rotation, left.base_slip, right.outward_rotation, right.base_slip});
+    int k = 1;
+    for (const Control* c : {&c_locked, &c_whole}) {
+      sum.row({static_cast<double>(k), k == 1 ? static_cast<double>(n) : 2.0, 0.0, 0.0, 0.0, sim.dt(), 0.0, 0.0,
+               duration, static_cast<double>(c->steps), c->wall, static_cast<double>(c->steps) / c->wall,
+               c->left.outward_rotation, c->left.base_slip, c->right.outward_rotation, c->right.base_slip});
+      ++k;
+    }
+    sum.commit();
+  }
+
+  // ---- claims ------------------------------------------------------------
+  const double deg = 180.0 / kPi;
+  const bool short_run = duration < full.scene.duration - 1e-9;
+  const std::string run_note = short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "";
+  auto describe = [&](const SideState& s) {
+    return "outward rotation " + format_short(s.outward_rotation * deg, 3) + " deg (|rotation| " +
+           format_short(s.abs_rotation * deg, 3) + " deg, top travel from rotation " +
+           format_short(s.rotation_travel, 3) + " m), base slip down-dip " + format_short(s.base_slip, 3) +
+           " m, centroid down-dip " + format_short(s.centroid_downdip, 3) + " m, mass rotated outward > 10 deg " +
+           format_short(100.0 * s.toppled_share, 3) + " %";
+  };
+  std::vector<repro::Claim> claims;
+  claims.push_back({"6.2",
+                    "the reconstructed valley model runs to the end below the stability limit, energy only dissipates" +
+                        run_note,
+                    "explicit DDA, dt 1e-4 s, 3.5 s",
+                    std::to_string(n) + " blocks (" + std::to_string(ts.dropped) + " slivers < " +
+                        format_short(ts.min_area, 3) + " m^2 dropped, " + format_short(ts.dropped_area, 3) +
+                        " m^2); dt/dt_crit " + format_short(dt_ratio0, 3) + " at start, at most " +
+                        format_short(ratio_max, 3) + " during the run; largest rise of the total energy above its start " +
+                        format_short(rise, 3) + " J/m (start " + format_short(e0, 4) + " J/m); " +
+                        std::to_string(sim.step_count()) + " steps in " + format_short(wall, 4) + " s (" +
+                        format_short(sps, 4) + " steps/s)",
+                    "dt/dt_crit < 1 throughout; energy rise < 1e-3 of |E(0)|",
+                    ratio_max < 1.0 && rise < 1e-3 * std::fabs(e0)});
+  // Toppling (right): the blocks rotate toward the valley about their toes:
+  // a mean outward rotation beyond 10 deg (far more than the fraction of a
+  // degree a settling block takes), at least half the side's mass rotated
+  // outward > 10 deg, rotation moving the tops more than twice as far as the
+  // bases slip, and -- the joints' role -- at least twice the rotation of
+  // the locked-joint control.
+  const bool topples = right.outward_rotation > 10.0 / deg && right.toppled_share > 0.5 &&
+                       right.rotation_travel > 2.0 * std::fabs(right.base_slip) &&
+                       right.outward_rotation > 2.0 * c_locked.right.outward_rotation;
+  claims.push_back({"6.2", "the right slope (joints dipping into the slope) topples, through slip on the 22 deg joints" + run_note,
+                    "Fig. 22 (3.5 s): \"the right part will fail with toppling pattern\"",
+                    "right slope at t = " + format_short(sim.time(), 3) + " s: " + describe(right) +
+                        "; with the joints locked (80 deg): outward rotation " +
+                        format_short(c_locked.right.outward_rotation * deg, 3) + " deg",
+                    "mean outward rotation > 10 deg, > 50 % of the mass rotated outward > 10 deg, top travel from "
+                    "rotation > 2 x |base slip|, and outward rotation > 2 x the locked-joint control's",
+                    topples});
+  // Slumping (left), kinematics: the mass moves down the base -- the bases
+  // slip more than 0.5 m (beyond elastic/penalty settling, millimetres) --
+  // with small rotations (mean |rotation| < 10 deg and less than half the
+  // right slope's).
+  const bool slump_kinematics = left.base_slip > 0.5 && left.abs_rotation < 10.0 / deg &&
+                                left.abs_rotation < 0.5 * right.abs_rotation;
+  claims.push_back({"6.2", "the left slope (joints dipping toward the valley) slumps: slides down its base with small rotations" + run_note,
+                    "Fig. 22 (3.5 s): \"the left part will fail in slumping pattern\"",
+                    "left slope at t = " + format_short(sim.time(), 3) + " s: " + describe(left),
+                    "base slip down-dip > 0.5 m; mean |rotation| < 10 deg and < half the right slope's",
+                    slump_kinematics});
+  // Slumping (left), mechanism: the paper attributes the failure to the
+  // 22 deg joints; then locking the joints must stop most of it (slip with
+  // free joints > 2 x slip with locked joints).
+  claims.push_back({"6.2", "the left slope's slumping comes from slip on the 22 deg joints (locking them stops it)" + run_note,
+                    "\"influenced by the joint set with a friction angle of 22 deg, the stable condition ... will be broken\"",
+                    "left base slip at t = " + format_short(sim.time(), 3) + " s: " + format_short(left.base_slip, 3) +
+                        " m with the joints at 22 deg, " + format_short(c_locked.left.base_slip, 3) +
+                        " m with the joints locked at 80 deg (outward rotation " +
+                        format_short(c_locked.left.outward_rotation * deg, 3) + " deg); one block per slope: " +
+                        format_short(c_whole.left.base_slip, 3) + " m (next row)",
+                    "base slip with free joints > 2 x with locked joints",
+                    left.base_slip > 2.0 * c_locked.left.base_slip});
+  // The premise: one block per slope on the 30 deg base with 32 deg friction
+  // is stable (tan 32 > tan 30). Stable: < 0.05 m of slip in 3.5 s (a block
+  // that starts sliding at the 8 % friction margin's deficit would move
+  // metres; elastic and penalty settling is millimetres).
+  claims.push_back({"6.2", "premise: each slope as ONE block stays on its 30 deg base (friction 32 deg)" + run_note,
+                    "\"both the left slope and right slope will keep stable as one unique block\"",
+                    "one block per slope, same parameters, " + format_short(duration, 3) + " s: left slid " +
+                        format_short(c_whole.left.base_slip, 3) + " m (rotation " +
+                        format_short(c_whole.left.outward_rotation * deg, 3) + " deg), right slid " +
+                        format_short(c_whole.right.base_slip, 3) + " m (rotation " +
+                        format_short(c_whole.right.outward_rotation * deg, 3) + " deg)",
+                    "|slip| < 0.05 m on both sides",
+                    std::fabs(c_whole.left.base_slip) < 0.05 && std::fabs(c_whole.right.base_slip) < 0.05});
+  repro::write_claims(repro::claims_path(out, "6_2_toppling_slumping"), claims);
+  return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "toppling_slumping: %s\n", e.what());
+  return 1;
+}
