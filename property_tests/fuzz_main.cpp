@@ -8,6 +8,7 @@
 //               e.g. property_fuzz "[overlap]" runs one group.
 // A failure prints rapidcheck's shrunk counterexample (inputs as C++
 // initialisers, ready for regressions.cpp) and RC_PARAMS to reproduce it.
+#define CATCH_CONFIG_CONSOLE_WIDTH 1000  // counterexamples on one line each, ready to paste
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
