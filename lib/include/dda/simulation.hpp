@@ -106,6 +106,9 @@ class Simulation {
   Vec2 momentum() const;
   Energy energy() const;  // recomputes contact energy: call at output time
   const std::vector<ContactInfo>& contacts() const { return contact_info_; }
+  // Broad-phase candidate pairs of the last force evaluation (touching or
+  // not): with contacts().size() the per-pair cost of a step can be measured.
+  std::size_t candidate_count() const { return candidates_.size(); }
 
  private:
   // Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
