@@ -44,8 +44,13 @@ test: build
 fuzz: build
 	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
 
+# Geometry kernel per polygon pair (Google Benchmark), then the Sect. 6.1
+# collapse's steps per second and the block-count scaling table (1-2 min).
 bench: build
 	$(BIN)/bench_geometry
+	$(BIN)/bench_collapse
+	@mkdir -p $(OUT)/bench
+	$(BIN)/bench_collapse --scaling --csv $(OUT)/bench/scaling.csv
 
 # 'repro' builds the tools, then a sub-make rebuilds only the figures whose
 # driver binary, data or script changed (one rule per figure below).

@@ -10,6 +10,7 @@
 #include "dda/io/csv.hpp"
 #include "dda/io/run.hpp"
 #include "dda/io/scene_file.hpp"
+#include "dda/simulation.hpp"
 
 namespace {
 
@@ -57,9 +58,26 @@ int cmd_check(const std::vector<std::string>& args) {
   for (const std::string& path : args) {
     try {
       const dda::io::SceneFile f = dda::io::load_scene_file(path);
-      const double steps = std::round(f.scene.duration / f.scene.dt);
+      // With dt_fraction > 0 the step is only known once the simulation is
+      // built (a fraction of its predicted critical step).
+      double dt = f.scene.dt, dt_crit = 0.0;
+      if (f.scene.dt_fraction > 0.0) {
+        try {
+          const dda::Simulation sim(f.scene);
+          dt = sim.dt();
+          dt_crit = sim.predicted_critical_step();
+        } catch (const std::exception& e) {
+          std::cerr << path << ": " << e.what() << "\n";
+          rc = kBadInput;
+          continue;
+        }
+      }
+      const double steps = std::round(f.scene.duration / dt);
       std::cout << path << ": ok: " << f.scene.blocks.size() << " blocks, " << f.scene.boundaries.size()
-                << " boundary segments, " << steps << " steps of " << f.scene.dt << " s";
+                << " boundary segments, " << steps << " steps of " << dt << " s";
+      if (f.scene.dt_fraction > 0.0)
+        std::cout << " (dt_fraction " << f.scene.dt_fraction << " of the predicted critical step " << dt_crit
+                  << " s)";
       for (std::size_t g = 0; g < f.generated.size(); ++g)
         std::cout << (g == 0 ? " (" : "; ") << f.generated[g].count << " blocks generated from region " << g << ", "
                   << f.generated[g].dropped << " slivers dropped (" << f.generated[g].dropped_area << " m^2)"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace dda {
 
@@ -13,6 +14,15 @@ struct Breaks {
   int count = 0;
   void add(double x) {
     if (count < static_cast<int>(t.size()) && x >= 0.0 && x <= 1.0) t[count++] = x;
+  }
+  // Insertion sort: a handful of points, mostly in order already.
+  void sort() {
+    for (int i = 1; i < count; ++i) {
+      const double x = t[i];
+      int j = i;
+      for (; j > 0 && t[j - 1] > x; --j) t[j] = t[j - 1];
+      t[j] = x;
+    }
   }
 };
 
@@ -49,18 +59,13 @@ void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Breaks& out) {
   }
 }
 
-struct RaySet {
-  std::array<Ray, 2 * kMaxVertices> ray;
+struct RaySpan {
+  const Ray* ray = nullptr;
   int count = 0;
 };
 
-void add_bisector_breaks(const RaySet& rays, Vec2 a, Vec2 b, Breaks& out) {
+void add_bisector_breaks(RaySpan rays, Vec2 a, Vec2 b, Breaks& out) {
   for (int r = 0; r < rays.count; ++r) out.add(segment_ray_crossing(a, b, rays.ray[r]));
-}
-
-double side_potential(const PotentialSide& side, Vec2 p) {
-  const double d = exit_distance(*side.poly, p);
-  return d > 0.0 ? side.kn_over_h * d : 0.0;
 }
 
 }  // namespace
@@ -69,25 +74,46 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
                                  Integration rule, double tol) {
   NormalForce out;
   if (ip.count < 3) return out;
-  const AreaMoments am = area_moments(ip);
+  const AreaMoments am = area_centroid(ip);
   out.ip_area = am.area;
   out.ip_centroid = am.centroid;
   const Vec2 c = am.centroid;
   Vec2 force{};
   double moment = 0.0;  // about the IP centroid
-  // Bisector rays, once per call (paper rule only). Thread-local scratch:
-  // a RaySet is 2 KB of Vec2s that would otherwise be zeroed on every call.
-  static thread_local RaySet rays_cp, rays_tp;
-  rays_cp.count = rays_tp.count = 0;
+  // Bisector rays (paper rule only): the caller's, or built here into
+  // thread-local scratch (a RaySet is 2 KB that would otherwise be zeroed
+  // on every call).
+  static thread_local RaySet own_cp, own_tp;
+  RaySpan rays_cp{cp.rays, cp.ray_count}, rays_tp{tp.rays, tp.ray_count};
   if (rule == Integration::kPaperBisector) {
-    rays_cp.count = bisector_rays(*cp.poly, cp.small_edge, cp.small_edge_rays, rays_cp.ray.data());
-    rays_tp.count = bisector_rays(*tp.poly, tp.small_edge, tp.small_edge_rays, rays_tp.ray.data());
+    if (!rays_cp.ray) {
+      own_cp.count = bisector_rays(*cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.ray.data());
+      rays_cp = {own_cp.ray.data(), own_cp.count};
+    }
+    if (!rays_tp.ray) {
+      own_tp.count = bisector_rays(*tp.poly, tp.small_edge, tp.small_edge_rays, own_tp.ray.data());
+      rays_tp = {own_tp.ray.data(), own_tp.count};
+    }
   }
+  // Exit distances at the IP vertices, each computed on first use (a vertex
+  // ends one edge and starts the next): bit k of known_* says dv_*[k] is set.
+  std::array<double, kMaxVertices> dv_cp, dv_tp;  // left uninitialised: guarded by the masks
+  std::uint32_t known_cp = 0, known_tp = 0;
+  auto vertex_d = [&ip](const PotentialSide& side, std::array<double, kMaxVertices>& dv, std::uint32_t& known, int k) {
+    const std::uint32_t bit = std::uint32_t{1} << k;
+    if (!(known & bit)) {
+      dv[static_cast<std::size_t>(k)] = exit_distance(*side.poly, ip.vertex(k));
+      known |= bit;
+    }
+    return dv[static_cast<std::size_t>(k)];
+  };
   for (int e = 0; e < ip.count; ++e) {
-    const Vec2 a = ip.vertex(e), b = ip.vertex(ip.next(e));
+    const int e1 = ip.next(e);
+    const Vec2 a = ip.vertex(e), b = ip.vertex(e1);
     const Vec2 n = ip.normal(e);
     const double len = length(b - a);
     if (len <= tol) continue;
+    out.ip_perimeter += len;
     // Demarcation points (Sect. 3.2.3 steps 1-4).
     Breaks br;
     br.add(0.0);
@@ -95,8 +121,9 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     br.add(1.0);
     const Vec2 mid = lerp(a, b, 0.5);
     // An IP edge on the boundary of a polygon carries zero potential of it.
-    const bool on_cp = exit_distance(*cp.poly, mid) <= tol;
-    const bool on_tp = exit_distance(*tp.poly, mid) <= tol;
+    const double mid_cp = exit_distance(*cp.poly, mid), mid_tp = exit_distance(*tp.poly, mid);
+    const bool on_cp = mid_cp <= tol;
+    const bool on_tp = mid_tp <= tol;
     if (rule == Integration::kPaperBisector) {
       if (!on_cp) add_bisector_breaks(rays_cp, a, b, br);
       if (!on_tp) add_bisector_breaks(rays_tp, a, b, br);
@@ -104,19 +131,39 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
       if (!on_cp) add_envelope_breaks(*cp.poly, a, b, br);
       if (!on_tp) add_envelope_breaks(*tp.poly, a, b, br);
     }
-    std::sort(br.t.begin(), br.t.begin() + br.count);
+    br.sort();
+    // Net normal traction phi_CP - phi_TP (Eq. 11) at parameter t; the
+    // end points and the midpoint reuse the distances found above.
+    auto traction = [&](double t, Vec2 p) {
+      double f = 0.0;
+      if (!on_cp) {
+        const double d = t == 0.0 ? vertex_d(cp, dv_cp, known_cp, e)
+                         : t == 1.0 ? vertex_d(cp, dv_cp, known_cp, e1)
+                         : t == 0.5 ? mid_cp
+                                    : exit_distance(*cp.poly, p);
+        f += d > 0.0 ? cp.kn_over_h * d : 0.0;
+      }
+      if (!on_tp) {
+        const double d = t == 0.0 ? vertex_d(tp, dv_tp, known_tp, e)
+                         : t == 1.0 ? vertex_d(tp, dv_tp, known_tp, e1)
+                         : t == 0.5 ? mid_tp
+                                    : exit_distance(*tp.poly, p);
+        f -= d > 0.0 ? tp.kn_over_h * d : 0.0;
+      }
+      return f;
+    };
     // Eqs. 16-17 on each segment. The segment force L (fa + fb) / 2 acts at
     // pk of Eq. 17; its moment about c is taken in the equivalent form
     // L [(fa + fb) / 2 (pa - c) + (fa + 2 fb) / 6 (pb - pa)] x n, which is
     // Eq. 17 times the force but stays finite when fa + fb = 0.
     double t0 = br.t[0];
     Vec2 pa = lerp(a, b, t0);
-    double fa = (on_cp ? 0.0 : side_potential(cp, pa)) - (on_tp ? 0.0 : side_potential(tp, pa));
+    double fa = traction(t0, pa);
     for (int k = 1; k < br.count; ++k) {
       const double t1 = br.t[k];
       if (t1 - t0 <= 0.0) continue;
       const Vec2 pb = lerp(a, b, t1);
-      const double fb = (on_cp ? 0.0 : side_potential(cp, pb)) - (on_tp ? 0.0 : side_potential(tp, pb));
+      const double fb = traction(t1, pb);
       const double l = len * (t1 - t0);
       const double fs = 0.5 * l * (fa + fb);
       force += fs * n;

@@ -104,37 +104,43 @@ void intersection_polygon(const Polygon& contact, const Polygon& target, double 
   // Two buffers, ping-ponged: each cut of a convex polygon by a half-plane
   // adds at most one vertex, so n + m fits in kMaxVertices. Thread-local
   // scratch: a Polygon is 1 KB that would otherwise be zeroed on every call.
+  // The first input is the target itself, and a line that leaves every
+  // vertex inside (the usual case: a shallow contact is cut by one or two
+  // of the contact polygon's edge lines) costs one distance per vertex and
+  // no copy.
   static thread_local Polygon buf[2];
-  buf[0].count = target.count;
-  for (int i = 0; i < target.count; ++i) buf[0].v[i] = target.v[i];
-  int cur = 0;
-  for (int c = 0; c < contact.count && buf[cur].count >= 3; ++c) {
-    const Polygon& in = buf[cur];
-    Polygon& out = buf[1 - cur];
-    out.count = 0;
+  static thread_local std::array<double, kMaxVertices> dist;
+  const Vec2* in = target.v.data();
+  int in_count = target.count;
+  int next_buf = 0;
+  for (int c = 0; c < contact.count && in_count >= 3; ++c) {
     const Vec2 nc = contact.normal(c);
     const Vec2 pc = contact.vertex(c);
-    for (int i = 0; i < in.count; ++i) {
-      const Vec2 p = in.vertex(i);
-      const Vec2 q = in.vertex(in.next(i));
-      double dp = dot(nc, p - pc);
-      double dq = dot(nc, q - pc);
-      if (std::fabs(dp) <= tol) dp = 0.0;
-      if (std::fabs(dq) <= tol) dq = 0.0;
-      if (dp <= 0.0 && out.count < kMaxVertices) out.v[out.count++] = p;
+    bool cuts = false;
+    for (int i = 0; i < in_count; ++i) {
+      double d = dot(nc, in[i] - pc);
+      if (std::fabs(d) <= tol) d = 0.0;  // on the line: no duplicate vertex, no sliver edge
+      dist[static_cast<std::size_t>(i)] = d;
+      cuts = cuts || d > 0.0;
+    }
+    if (!cuts) continue;
+    Polygon& out = buf[next_buf];
+    out.count = 0;
+    for (int i = 0; i < in_count; ++i) {
+      const int k = i + 1 == in_count ? 0 : i + 1;
+      const double dp = dist[static_cast<std::size_t>(i)], dq = dist[static_cast<std::size_t>(k)];
+      if (dp <= 0.0 && out.count < kMaxVertices) out.v[static_cast<std::size_t>(out.count++)] = in[i];
       if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && out.count < kMaxVertices)
-        out.v[out.count++] = lerp(p, q, dp / (dp - dq));
+        out.v[static_cast<std::size_t>(out.count++)] = lerp(in[i], in[k], dp / (dp - dq));
     }
     if (out.count < 3) out.count = 0;
-    cur = 1 - cur;
+    in = out.v.data();
+    in_count = out.count;
+    next_buf = 1 - next_buf;
   }
-  Polygon& ip = buf[cur];
-  clean_polygon(ip, tol);
-  result.count = ip.count;
-  for (int i = 0; i < ip.count; ++i) {
-    result.v[i] = ip.v[i];
-    result.n[i] = ip.n[i];
-  }
+  result.count = in_count;
+  for (int i = 0; i < in_count; ++i) result.v[static_cast<std::size_t>(i)] = in[i];
+  clean_polygon(result, tol);
 }
 
 Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol) {

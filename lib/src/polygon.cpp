@@ -120,6 +120,30 @@ AreaMoments area_moments(const Polygon& poly) {
   return m;
 }
 
+AreaMoments area_centroid(const Polygon& poly) {
+  // The first three sums of area_moments, same operations in the same order
+  // (the same bits), without the second moments.
+  AreaMoments m;
+  if (poly.count < 3) return m;
+  const Vec2 o = poly.v[0];
+  double s = 0, sx = 0, sy = 0;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 a = poly.vertex(i) - o;
+    const Vec2 b = poly.vertex(poly.next(i)) - o;
+    const double c = cross(a, b);
+    s += c;
+    sx += c * (a.x + b.x);
+    sy += c * (a.y + b.y);
+  }
+  s *= 0.5;
+  sx /= 6.0;
+  sy /= 6.0;
+  m.area = s;
+  if (s == 0.0) return m;
+  m.centroid = o + Vec2{sx / s, sy / s};
+  return m;
+}
+
 double area(const Polygon& poly) {
   if (poly.count < 3) return 0.0;
   const Vec2 o = poly.v[0];
@@ -184,6 +208,8 @@ PointLocation locate_point(const Polygon& poly, Vec2 p, double tol) {
 }
 
 void clean_polygon(Polygon& poly, double tol) {
+  // Squared comparisons: no square root per vertex.
+  const double tol2 = tol * tol;
   bool changed = true;
   while (changed && poly.count >= 3) {
     changed = false;
@@ -192,10 +218,12 @@ void clean_polygon(Polygon& poly, double tol) {
       const Vec2 b = poly.vertex(i);
       const Vec2 c = poly.vertex(poly.next(i));
       const Vec2 ac = c - a;
-      const double lac = length(ac);
-      // Repeated vertex, or b within tol of the chord a-c (straight or spike).
-      const bool repeated = distance(a, b) <= tol;
-      const bool straight = lac > tol ? std::fabs(cross(ac, b - a)) / lac <= tol : true;
+      const double lac2 = length_squared(ac);
+      // Repeated vertex, or b within tol of the chord a-c (straight or spike):
+      // |ac x ab| / |ac| <= tol.
+      const bool repeated = length_squared(a - b) <= tol2;
+      const double h = cross(ac, b - a);
+      const bool straight = lac2 > tol2 ? h * h <= tol2 * lac2 : true;
       if (repeated || straight) {
         for (int j = i; j + 1 < poly.count; ++j) poly.v[static_cast<std::size_t>(j)] = poly.v[static_cast<std::size_t>(j + 1)];
         --poly.count;

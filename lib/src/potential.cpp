@@ -5,12 +5,6 @@
 
 namespace dda {
 
-double exit_distance(const Polygon& poly, Vec2 p) {
-  double d = DBL_MAX;
-  for (int i = 0; i < poly.count; ++i) d = std::min(d, dot(poly.normal(i), poly.vertex(i) - p));
-  return d;
-}
-
 Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
   double d = DBL_MAX;
   int best = -1;
@@ -82,17 +76,6 @@ int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ra
   for (int i = 0; i < n; ++i)
     if (!replaced[i]) out[count++] = {poly.vertex(i), vertex_dir(i)};
   return count;
-}
-
-double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray) {
-  // a + t (b - a) = o + s d  ->  t = cross(o - a, d) / cross(b - a, d).
-  const Vec2 ab = b - a;
-  const double den = cross(ab, ray.dir);
-  if (den == 0.0) return -1.0;
-  const double t = cross(ray.origin - a, ray.dir) / den;
-  const double s = cross(ray.origin - a, ab) / den;
-  if (t < 0.0 || t > 1.0 || s < 0.0) return -1.0;
-  return t;
 }
 
 }  // namespace dda

@@ -3,13 +3,28 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <exception>
 #include <sstream>
+
+// OpenMP worksharing inside the phase functions. They are "orphaned"
+// directives: called from run_steps' parallel region they split the work of
+// one team that lives for the whole call (no thread start-up per step);
+// called from anywhere else (the constructor) they run serially.
+#if defined(DDA_HAVE_OPENMP)
+#define DDA_OMP(directive) _Pragma(#directive)
+#else
+#define DDA_OMP(directive)
+#endif
 
 namespace dda {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// Broad-phase skin as a fraction of the mean inscribed radius of the free
+// blocks (dimensionless); see Simulation::choose_broad_phase_skin.
+constexpr double kBroadPhaseSkin = 0.25;
 
 std::string field(const char* name, std::size_t i) {
   std::ostringstream s;
@@ -141,6 +156,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   choose_potential_length();
   update_geometry();
   predict_critical_step();
+  choose_broad_phase_skin();
   if (scene_.dt_fraction > 0.0) dt_ = scene_.dt_fraction * dt_crit_prior_;
   compute_forces();
   kick();  // the first half kick uses a^0; v^0 is restored below
@@ -159,6 +175,7 @@ void Simulation::build_blocks() {
   acc_.assign(n, Vec6::Zero());
   force_.assign(n, Vec6::Zero());
   step_disp_.assign(n, Vec6::Zero());
+  start_centroid_.assign(n, Vec2{});
   disp_.assign(n, Vec6::Zero());
   stress_.assign(n, Vec3::Zero());
   density_.assign(n, 0.0);
@@ -203,6 +220,31 @@ void Simulation::build_blocks() {
     friction_tan_table_[static_cast<std::size_t>(r.group_b * group_count_ + r.group_a)] = t;
   }
   boxes_.resize(n);
+  // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
+  ray_offset_.assign(n, 0);
+  ray_count_.assign(n, 0);
+  int total = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    ray_offset_[i] = total;
+    total += 2 * poly_[i].count;
+  }
+  ray_store_.resize(static_cast<std::size_t>(total));
+}
+
+void Simulation::choose_broad_phase_skin() {
+  // The skin trades list length against rebuild frequency: a quarter of the
+  // mean inscribed radius of the free blocks lets a block move that far (or
+  // deform or turn as much) before the list is rebuilt -- tens of steps at
+  // the fastest motion the step guards allow -- while adding only pairs
+  // whose gap is below half a typical block radius.
+  double sum = 0.0;
+  int free_blocks = 0;
+  for (int i = 0; i < scene_blocks_; ++i)
+    if (!fixed_[i]) {
+      sum += radius_[i];
+      ++free_blocks;
+    }
+  skin_ = free_blocks > 0 ? kBroadPhaseSkin * sum / free_blocks : 0.0;
 }
 
 double Simulation::friction_tan(int a, int b) const {
@@ -234,23 +276,54 @@ void Simulation::choose_potential_length() {
     h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(poly_[i]).radius : h;
 }
 
-void Simulation::step() {
-  kick_and_drift();          // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}
-  update_contact_history();  // relative displacement at the contact points
-  update_geometry();         // centroids, moments, normals of moved blocks
-  compute_forces();          // gravity, initial stress, contacts at t^{n+1}
-  kick();                    // a^{n+1}; v^{n+1} = v^{n+1/2} + h/2 a^{n+1}
-  ++steps_;
-  time_ = static_cast<double>(steps_) * dt_;
-  check_state();
-}
+void Simulation::step() { run_steps(1); }
 
 void Simulation::advance_to(double t) {
-  while (time_ + 0.5 * dt_ < t) step();
+  std::int64_t count = 0;
+  while (static_cast<double>(steps_ + count) * dt_ + 0.5 * dt_ < t) ++count;
+  run_steps(count);
 }
 
-void Simulation::kick_and_drift() {
-  for (int i = 0; i < block_count(); ++i) {
+void Simulation::run_steps(std::int64_t count) {
+  // One parallel region for all `count` steps; every thread runs the loop
+  // and the phases share out their loops (per block, per history entry,
+  // per candidate pair). Each block's and each pair's result is computed by
+  // one thread from the same inputs, and the pair forces are summed in
+  // candidate order by one thread: the same bits for any thread count.
+  // A guard's SimulationError cannot leave a parallel region: it is caught
+  // where it is thrown, every thread stops after that step, and it is
+  // rethrown here.
+  std::exception_ptr error;
+  DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1 && count > 0))
+  {
+    for (std::int64_t k = 0; k < count; ++k) {
+      move_blocks();     // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}; geometry; body forces
+      DDA_OMP(omp single)
+      update_contact_history();  // relative displacement at the contact points
+      contact_forces();  // broad phase, pair forces at t^{n+1}, summed in candidate order
+      kick();            // a^{n+1}; v^{n+1} = v^{n+1/2} + h/2 a^{n+1}
+      DDA_OMP(omp single)
+      {
+        ++steps_;
+        time_ = static_cast<double>(steps_) * dt_;
+        try {
+          check_state();  // non-finite state, collapsed area, step motion, energy growth
+        } catch (...) {
+          error = std::current_exception();
+        }
+      }  // implicit barrier: every thread sees `error` before reading it
+      if (error) break;
+    }
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+void Simulation::move_blocks() {
+  // One pass per block (one barrier per step for all of it): the half kick
+  // and drift of Eq. 8, the moved block's geometry, its body forces.
+  const int nb = block_count();
+  DDA_OMP(omp for schedule(static))
+  for (int i = 0; i < nb; ++i) {
     if (fixed_[i]) continue;
     vel_[i] += 0.5 * dt_ * acc_[i];
     const Vec6 dd = dt_ * vel_[i];  // Eq. 8
@@ -258,8 +331,11 @@ void Simulation::kick_and_drift() {
     disp_[i] += dd;
     Polygon& p = poly_[i];
     const Vec2 c = moments_[i].centroid;
+    start_centroid_[i] = c;
     for (int k = 0; k < p.count; ++k) p.v[k] += point_displacement(c, p.v[k], dd);
     if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+    update_block_geometry(i);
+    body_force(i);
   }
 }
 
@@ -267,27 +343,31 @@ void Simulation::update_contact_history() {
   if (!friction_) return;
   // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at pg; a sticking
   // pair accumulates it, a sliding pair restarts from it. The centroids are
-  // those of the step's start configuration (moments_ not yet updated).
+  // those of the step's start configuration.
   for (PairHistory& h : history_) {
     const int cp = static_cast<int>(h.key >> 32), tp = static_cast<int>(h.key & 0xffffffffu);
-    const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(moments_[cp].centroid, h.point, step_disp_[cp]);
-    const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(moments_[tp].centroid, h.point, step_disp_[tp]);
+    const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(start_centroid_[cp], h.point, step_disp_[cp]);
+    const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(start_centroid_[tp], h.point, step_disp_[tp]);
     const Vec2 dd = du_cp - du_tp;
     h.d = h.sliding ? dd : h.d + dd;
   }
 }
 
 void Simulation::update_geometry() {
-  for (int i = 0; i < block_count(); ++i) {
-    if (fixed_[i] && steps_ > 0) continue;
-    update_normals(poly_[i]);
-    moments_[i] = area_moments(poly_[i]);
-    boxes_[i] = bounds(poly_[i]);
-    tol_[i] = geometric_tolerance(poly_[i]);
-    // Mass is conserved: the density follows the strained area.
-    if (steps_ == 0) mass_[i] = density_[i] * moments_[i].area;
-    density_[i] = mass_[i] / moments_[i].area;
-  }
+  for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
+}
+
+void Simulation::update_block_geometry(int i) {
+  update_normals(poly_[i]);
+  moments_[i] = area_moments(poly_[i]);
+  boxes_[i] = bounds(poly_[i]);
+  tol_[i] = geometric_tolerance(poly_[i]);
+  if (scene_.contact.integration == Integration::kPaperBisector)
+    ray_count_[i] = bisector_rays(poly_[i], scene_.contact.small_edge_fraction * h_[i], scene_.contact.small_edge_rays,
+                                  ray_store_.data() + ray_offset_[i]);
+  // Mass is conserved (set once, at t = 0): the density follows the strained area.
+  if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
+  density_[i] = mass_[i] / moments_[i].area;
 }
 
 void Simulation::find_candidate_pairs() {
@@ -299,48 +379,95 @@ void Simulation::find_candidate_pairs() {
         if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) candidates_.emplace_back(i, j);
     return;
   }
-  // Sort and sweep along x; the order of the previous step is nearly sorted,
-  // so insertion sort is linear in practice.
-  if (order_.size() != static_cast<std::size_t>(n)) {
-    order_.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) order_[i] = i;
+  // Sort and sweep along x on the grown boxes, only when a block's box has
+  // left its grown box; the order of the last rebuild is nearly sorted, so
+  // insertion sort is linear in practice. Every pair whose current boxes
+  // overlap is in near_pairs_ (both boxes lie inside their grown boxes), so
+  // filtering it gives exactly the pairs a full sweep would give, in the
+  // same (sorted) order.
+  bool rebuild = skin_boxes_.size() != static_cast<std::size_t>(n);
+  for (int i = 0; i < n && !rebuild; ++i) {
+    const Aabb& b = boxes_[i];
+    const Aabb& g = skin_boxes_[i];
+    rebuild = b.lo.x < g.lo.x || b.lo.y < g.lo.y || b.hi.x > g.hi.x || b.hi.y > g.hi.y;
   }
-  for (std::size_t a = 1; a < order_.size(); ++a) {
-    const int key = order_[a];
-    std::size_t b = a;
-    while (b > 0 && boxes_[order_[b - 1]].lo.x > boxes_[key].lo.x) {
-      order_[b] = order_[b - 1];
-      --b;
+  if (rebuild) {
+    ++broad_phase_rebuilds_;
+    skin_boxes_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      skin_boxes_[i] = boxes_[i];
+      if (fixed_[i]) continue;  // a fixed box never moves: no skin needed
+      skin_boxes_[i].lo -= Vec2{skin_, skin_};
+      skin_boxes_[i].hi += Vec2{skin_, skin_};
     }
-    order_[b] = key;
-  }
-  for (std::size_t a = 0; a < order_.size(); ++a) {
-    const int i = order_[a];
-    for (std::size_t b = a + 1; b < order_.size(); ++b) {
-      const int j = order_[b];
-      if (boxes_[j].lo.x > boxes_[i].hi.x) break;
-      if (fixed_[i] && fixed_[j]) continue;
-      if (boxes_[j].lo.y > boxes_[i].hi.y || boxes_[i].lo.y > boxes_[j].hi.y) continue;
-      candidates_.emplace_back(std::min(i, j), std::max(i, j));
+    if (order_.size() != static_cast<std::size_t>(n)) {
+      order_.resize(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) order_[i] = i;
     }
+    const std::vector<Aabb>& g = skin_boxes_;
+    for (std::size_t a = 1; a < order_.size(); ++a) {
+      const int key = order_[a];
+      std::size_t b = a;
+      while (b > 0 && g[order_[b - 1]].lo.x > g[key].lo.x) {
+        order_[b] = order_[b - 1];
+        --b;
+      }
+      order_[b] = key;
+    }
+    near_pairs_.clear();
+    for (std::size_t a = 0; a < order_.size(); ++a) {
+      const int i = order_[a];
+      for (std::size_t b = a + 1; b < order_.size(); ++b) {
+        const int j = order_[b];
+        if (g[j].lo.x > g[i].hi.x) break;
+        if (fixed_[i] && fixed_[j]) continue;
+        if (g[j].lo.y > g[i].hi.y || g[i].lo.y > g[j].hi.y) continue;
+        near_pairs_.emplace_back(std::min(i, j), std::max(i, j));
+      }
+    }
+    std::sort(near_pairs_.begin(), near_pairs_.end());
   }
-  std::sort(candidates_.begin(), candidates_.end());
+  for (const auto& [i, j] : near_pairs_)
+    if (aabb_overlap(boxes_[i], boxes_[j])) candidates_.emplace_back(i, j);
 }
 
 void Simulation::compute_forces() {
+  for (int i = 0; i < block_count(); ++i) body_force(i);
+  contact_forces();
+}
+
+void Simulation::body_force(int i) {
   // Gravity (int T^T rho g dS = rho S g on the translation DOFs) and the
   // step's initial stress on the strain DOFs (K d of Eq. 4 carried as
   // accumulated stress because d is reset every step).
-  for (int i = 0; i < block_count(); ++i) {
-    force_[i].setZero();
-    if (fixed_[i]) continue;
-    const double m = density_[i] * moments_[i].area;
-    force_[i][0] = m * scene_.gravity.x;
-    force_[i][1] = m * scene_.gravity.y;
-    if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
-  }
-  find_candidate_pairs();
+  force_[i].setZero();
+  if (fixed_[i]) return;
+  const double m = density_[i] * moments_[i].area;
+  force_[i][0] = m * scene_.gravity.x;
+  force_[i][1] = m * scene_.gravity.y;
+  if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
+}
 
+void Simulation::contact_forces() {
+  DDA_OMP(omp single)
+  {
+    find_candidate_pairs();
+    take_over_history();
+  }
+  // 2. Pair forces, independent of each other, shared out in chunks (their
+  //    cost varies: most candidates stop at the overlap test).
+  const long n = static_cast<long>(candidates_.size());
+  DDA_OMP(omp for schedule(dynamic, 16))
+  for (long k = 0; k < n; ++k) {
+    PairResult& r = results_[static_cast<std::size_t>(k)];
+    r.active = pair_force(candidates_[static_cast<std::size_t>(k)].first,
+                          candidates_[static_cast<std::size_t>(k)].second, r);
+  }
+  DDA_OMP(omp single)
+  scatter_pair_forces();
+}
+
+void Simulation::take_over_history() {
   // 1. Each candidate takes over its pair's history (friction only): both
   //    lists are sorted by key, so one merge pass.
   const std::size_t nc = candidates_.size();
@@ -360,16 +487,10 @@ void Simulation::compute_forces() {
       }
     }
   }
-  // 2. Pair forces, independent of each other: in parallel when threads > 1.
-  const long n = static_cast<long>(nc);
-#if defined(DDA_HAVE_OPENMP)
-#pragma omp parallel for schedule(dynamic, 16) num_threads(threads_) if (threads_ > 1 && n > 64)
-#endif
-  for (long k = 0; k < n; ++k) {
-    PairResult& r = results_[static_cast<std::size_t>(k)];
-    r.active = pair_force(candidates_[static_cast<std::size_t>(k)].first,
-                          candidates_[static_cast<std::size_t>(k)].second, r);
-  }
+}
+
+void Simulation::scatter_pair_forces() {
+  const std::size_t nc = candidates_.size();
   // 3. Scatter in candidate order: the sums are the same bits for any
   //    thread count. A pair that does not touch forgets its history.
   contact_info_.clear();
@@ -397,8 +518,10 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
   intersection_polygon(a, b, tol, ip);  // Sect. 3.1.3
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
-  const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays};
-  const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays};
+  const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,
+                             ray_store_.data() + ray_offset_[cp], ray_count_[cp]};
+  const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays,
+                             ray_store_.data() + ray_offset_[tp], ray_count_[tp]};
   const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol);  // Eqs. 11-20
   if (!nf.valid) return false;
 
@@ -409,7 +532,7 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
   info.normal_force = nf.force;
   info.point = nf.point;
   info.ip_area = nf.ip_area;
-  info.ip_length = 0.5 * perimeter(ip);
+  info.ip_length = 0.5 * nf.ip_perimeter;
   if (friction_) {
     // Coulomb friction with stick/slide history, Eqs. 24-26.
     PairHistory& hist = r.history;
@@ -447,7 +570,9 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
 }
 
 void Simulation::kick() {
-  for (int i = 0; i < block_count(); ++i) {
+  const int nb = block_count();
+  DDA_OMP(omp for schedule(static))
+  for (int i = 0; i < nb; ++i) {
     if (fixed_[i]) continue;
     const AreaMoments& m = moments_[i];
     const double mass = density_[i] * m.area;
@@ -455,9 +580,7 @@ void Simulation::kick() {
     acc_[i][1] = force_[i][1] / mass;
     if (strains_) {
       // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
-      const Mat6 mm = mass_matrix(m, density_[i]);
-      const Eigen::Matrix4d m4 = mm.bottomRightCorner<4, 4>();
-      acc_[i].tail<4>() = m4.llt().solve(force_[i].tail<4>());
+      acc_[i].tail<4>() = rotation_strain_acceleration(m, density_[i], force_[i].tail<4>());
     } else {
       acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
     }

@@ -200,8 +200,10 @@ TEST_CASE("a time step above the predicted critical step is caught, one below ru
   CHECK(what.find("dt/dt_crit") != std::string::npos);
 }
 
-TEST_CASE("the contact loop gives the same bits on 1 and 2 threads", "[simulation]") {
-  // A jointed column on a floor against a wall: ~80 blocks, several hundred candidate pairs, friction rules.
+namespace {
+// A jointed column on a floor against a wall: ~80 blocks, several hundred
+// candidate pairs, friction rules.
+Scene jointed_column() {
   const GeneratedBlocks g = generate_blocks({{0, 0}, {10, 0}, {10, 20}, {0, 20}},
                                             {{80.0, 1.5, {0, 0}}, {40.0, 2.5, {0, 0}}}, 0.5);
   Scene s;
@@ -219,14 +221,58 @@ TEST_CASE("the contact loop gives the same bits on 1 and 2 threads", "[simulatio
   }
   s.boundaries.push_back({{-5, 0}, {40, 0}, 0.0, 1});  // floor, solid below
   s.boundaries.push_back({{0, 20}, {0, -1}, 0.0, 1});  // wall, solid on the left
-  Simulation one(s), two(s);
+  return s;
+}
+}  // namespace
+
+TEST_CASE("the same bits on 1 and 2 threads, step by step or in one thread team", "[simulation]") {
+  const Scene s = jointed_column();
+  Simulation one(s), two(s), team(s);
   two.set_threads(2);
+  team.set_threads(2);
   for (int k = 0; k < 300; ++k) {
     one.step();
     two.step();
   }
-  CHECK(one.contacts().size() > 80);  // above the parallel threshold of 64 candidate pairs
+  team.advance(300);  // one parallel region for all 300 steps
+  CHECK(one.contacts().size() > 80);
+  CHECK(team.step_count() == 300);
   CHECK(state_hash(one) == state_hash(two));
+  CHECK(state_hash(one) == state_hash(team));
+}
+
+TEST_CASE("the sweep broad phase with its skin finds exactly the all-pairs candidates", "[simulation]") {
+  // The skin list must contain every pair whose boxes overlap now: the run
+  // with the sweep is bit-identical to the run testing all pairs, and the
+  // list is rebuilt only now and then.
+  Scene s = jointed_column();
+  Simulation sweep(s);
+  s.broad_phase = BroadPhase::kNone;
+  Simulation all(s);
+  for (int k = 0; k < 20; ++k) {
+    sweep.advance(25);
+    all.advance(25);
+    REQUIRE(sweep.candidate_count() == all.candidate_count());
+  }
+  CHECK(state_hash(sweep) == state_hash(all));
+  CHECK(sweep.broad_phase_rebuilds() >= 1);
+  CHECK(sweep.broad_phase_rebuilds() < 500);
+}
+
+TEST_CASE("a guard stop inside a 2-thread team reaches the caller", "[simulation]") {
+  Scene s = paper::two_squares();
+  s.dt_fraction = 1.5;
+  Simulation bad(s);
+  bad.set_threads(2);
+  std::string what;
+  try {
+    bad.advance_to(1.0);
+  } catch (const SimulationError& e) {
+    what = e.what();
+  }
+  INFO(what);
+  CHECK(what.find("dt/dt_crit") != std::string::npos);
+  CHECK(bad.step_count() < 10000);
 }
 
 TEST_CASE("a zero friction angle never produces a tangential force, whatever kt", "[simulation]") {

@@ -24,6 +24,11 @@ struct PotentialSide {
   double kn_over_h = 0.0;   // kn / H, Pa / m
   double small_edge = 0.0;  // edges shorter than this get a virtual node, m
   SmallEdgeRays small_edge_rays = SmallEdgeRays::kVirtualAndVertex;
+  // The polygon's bisector rays for (small_edge, small_edge_rays), if the
+  // caller keeps them (a simulation builds them once per block and step);
+  // null: built on each call.
+  const Ray* rays = nullptr;
+  int ray_count = 0;
 };
 
 // Global normal force on CP (f_TP = -force) and where it acts.
@@ -32,6 +37,7 @@ struct NormalForce {
   Vec2 point{};          // loading point pg (Eq. 20 and the auxiliary line)
   Vec2 ip_centroid{};    // centroid of the intersection polygon
   double ip_area = 0.0;  // m^2
+  double ip_perimeter = 0.0;  // m, the edges longer than tol
   int segments = 0;      // integration segments used
   bool valid = false;    // false when the net force vanishes
 };

@@ -79,6 +79,8 @@ struct AreaMoments {
   double sxx = 0.0, syy = 0.0, sxy = 0.0;
 };
 AreaMoments area_moments(const Polygon& poly);
+// Area and centroid only (second moments left 0), bit-identical to area_moments'.
+AreaMoments area_centroid(const Polygon& poly);
 double area(const Polygon& poly);
 Vec2 centroid(const Polygon& poly);
 

@@ -8,8 +8,16 @@
 namespace dda {
 
 // d_exit(p) = min_i n_i . (v_i - p)  (Eqs. 13-14): the shortest distance for
-// p to leave the polygon; positive inside, negative outside.
-double exit_distance(const Polygon& poly, Vec2 p);
+// p to leave the polygon; positive inside, negative outside. Inline: the
+// contact integration evaluates it at every demarcation point.
+inline double exit_distance(const Polygon& poly, Vec2 p) {
+  double d = DBL_MAX;
+  for (int i = 0; i < poly.count; ++i) {
+    const double di = dot(poly.normal(i), poly.vertex(i) - p);
+    d = di < d ? di : d;
+  }
+  return d;
+}
 
 // phi(p) = kn * d_exit(p) / H inside the polygon, 0 outside (Eq. 12).
 inline double potential(const Polygon& poly, Vec2 p, double kn, double h) {
@@ -59,6 +67,29 @@ inline int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
 }
 
 // Parameter t in [0, 1] where segment a->b meets the ray, or -1 if it does not.
-double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray);
+// a + t (b - a) = o + s d  ->  t = cross(o - a, d) / cross(b - a, d), s
+// likewise; the range tests are done on the numerators (signs against the
+// denominator), so a miss costs no division. Inline: called for every ray
+// and every edge of an intersection polygon.
+inline double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray) {
+  const Vec2 ab = b - a, ao = ray.origin - a;
+  double den = cross(ab, ray.dir);
+  if (den == 0.0) return -1.0;
+  double nt = cross(ao, ray.dir), ns = cross(ao, ab);
+  if (den < 0.0) {
+    den = -den;
+    nt = -nt;
+    ns = -ns;
+  }
+  if (nt < 0.0 || nt > den || ns < 0.0) return -1.0;
+  return nt / den;
+}
+
+// The bisector rays of one polygon (bisector_rays), kept so that a block's
+// rays are built once per step, not once per contact.
+struct RaySet {
+  std::array<Ray, 2 * kMaxVertices> ray;  // left uninitialised: count says how many are set
+  int count = 0;
+};
 
 }  // namespace dda

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dda/block.hpp"
+#include "dda/potential.hpp"
 #include "dda/scene.hpp"
 
 namespace dda {
@@ -54,14 +55,21 @@ class Simulation {
 
   // One explicit step (velocity Verlet, Eqs. 7-8). Throws SimulationError.
   void step();
-  // Steps until time() >= t (within half a step).
+  // `count` steps. With threads() > 1 one OpenMP team serves all of them
+  // (no thread wake-up per step): prefer it to a loop over step() when
+  // nothing is read between the steps.
+  void advance(std::int64_t count) { run_steps(count); }
+  // Steps until time() >= t (within half a step), as one advance().
   void advance_to(double t);
 
   double time() const { return time_; }
   std::int64_t step_count() const { return steps_; }
   double dt() const { return dt_; }
-  // Threads for the contact loop (OpenMP builds; 1 otherwise). Results are
-  // bit-identical for any count: pair forces are summed in a fixed order.
+  // Threads (OpenMP builds; 1 otherwise) for the per-block phases and the
+  // contact loop. Results are bit-identical for any count: each block and
+  // each pair is computed by one thread, and the pair forces are summed in a
+  // fixed order. Every step ends in barriers: on cores shared with other
+  // work a descheduled thread stalls the team, so use 1 thread there.
   void set_threads(int n) { threads_ = n < 1 ? 1 : n; }
   int threads() const { return threads_; }
   const Scene& scene() const { return scene_; }
@@ -109,6 +117,8 @@ class Simulation {
   // Broad-phase candidate pairs of the last force evaluation (touching or
   // not): with contacts().size() the per-pair cost of a step can be measured.
   std::size_t candidate_count() const { return candidates_.size(); }
+  // Times the sweep broad phase rebuilt its pair list (BroadPhase::kSweep).
+  std::int64_t broad_phase_rebuilds() const { return broad_phase_rebuilds_; }
 
  private:
   // Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
@@ -122,11 +132,17 @@ class Simulation {
 
   void build_blocks();
   void choose_potential_length();
-  void kick_and_drift();
+  void move_blocks();
   void update_contact_history();
   void update_geometry();
+  void update_block_geometry(int i);
   void compute_forces();
+  void body_force(int i);
+  void contact_forces();
   void find_candidate_pairs();
+  void take_over_history();
+  void scatter_pair_forces();
+  void run_steps(std::int64_t count);
   // One candidate pair's contact, computed independently of all others.
   struct PairResult {
     bool active = false;
@@ -137,6 +153,7 @@ class Simulation {
   void kick();
   void check_state();
   void predict_critical_step();
+  void choose_broad_phase_skin();
   double block_strain_omega2(int i) const;
   [[noreturn]] void stop(int block, const std::string& what) const;
   double friction_tan(int a, int b) const;
@@ -153,6 +170,7 @@ class Simulation {
   std::vector<Polygon> poly_;
   std::vector<AreaMoments> moments_;
   std::vector<Vec6> vel_, acc_, force_, step_disp_, disp_;
+  std::vector<Vec2> start_centroid_;  // centroid at the start of the step (friction history)
   std::vector<Vec3> stress_;
 
   // Per-block constants and bookkeeping.
@@ -176,7 +194,19 @@ class Simulation {
   int threads_ = 1;
   std::vector<ContactInfo> contact_info_;
   std::vector<Aabb> boxes_;
+  // Bisector rays of each block (paper integration rule), rebuilt with the
+  // geometry: block i's rays are ray_store_[ray_offset_[i] ...], count ray_count_[i].
+  std::vector<Ray> ray_store_;
+  std::vector<int> ray_offset_, ray_count_;
   std::vector<int> order_;
+  // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
+  // pairs whose boxes, grown by skin_ on every side, overlapped at the last
+  // rebuild; it stays valid while every block's box stays inside its grown
+  // box (skin_boxes_), and each step filters it by the current boxes.
+  std::vector<std::pair<int, int>> near_pairs_;
+  std::vector<Aabb> skin_boxes_;
+  double skin_ = 0.0;  // m
+  std::int64_t broad_phase_rebuilds_ = 0;
 };
 
 }  // namespace dda

@@ -48,14 +48,16 @@ void write_snapshot(CsvFile& csv, const Simulation& sim) {
   }
 }
 
-std::string run_json(const SceneFile& file, const RunOptions& opt, const RunResult& res,
+// `dt`: the step used (Simulation::dt(), which differs from scene.dt when
+// scene.dt_fraction > 0).
+std::string run_json(const SceneFile& file, const RunOptions& opt, const RunResult& res, double dt,
                      const nlohmann::ordered_json& blocks) {
   nlohmann::ordered_json j;
   j["status"] = res.status == RunStatus::kCompleted ? "completed" : "simulation_error";
   j["message"] = res.message;
   j["scene"] = opt.scene_label;
   j["name"] = file.scene.name;
-  j["dt"] = file.scene.dt;
+  j["dt"] = dt;
   j["duration"] = file.scene.duration;
   j["steps"] = res.steps;
   j["time"] = res.time;
@@ -187,7 +189,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   }
   ts.commit();
   snap.commit();
-  write_file_atomic((out / "run.json").string(), run_json(file, opt, res, blocks));
+  write_file_atomic((out / "run.json").string(), run_json(file, opt, res, dt, blocks));
   return res;
 }
 

@@ -404,7 +404,8 @@ GeneratedRegion read_generated(const Reader& r, const json& v, const std::string
 
 ContactParams read_contact(const Reader& r, const json& v, const std::string& path) {
   r.object(v, path,
-           {"kn", "kt", "friction_deg", "friction_rules", "h_rule", "h", "integration", "small_edge_fraction"});
+           {"kn", "kt", "friction_deg", "friction_rules", "h_rule", "h", "integration", "small_edge_fraction",
+            "small_edge_rays"});
   ContactParams c;
   c.kn = r.number(r.need(v, path, "kn"), join_path(path, "kn"));
   if (const json* x = Reader::find(v, "kt")) c.kt = r.number(*x, join_path(path, "kt"));
@@ -442,7 +443,25 @@ ContactParams read_contact(const Reader& r, const json& v, const std::string& pa
         {{"paper_bisector", Integration::kPaperBisector}, {"exact_envelope", Integration::kExactEnvelope}});
   if (const json* x = Reader::find(v, "small_edge_fraction"))
     c.small_edge_fraction = r.number(*x, join_path(path, "small_edge_fraction"));
+  if (const json* x = Reader::find(v, "small_edge_rays"))
+    c.small_edge_rays = r.choice<SmallEdgeRays>(*x, join_path(path, "small_edge_rays"),
+                                                {{"virtual_and_vertex", SmallEdgeRays::kVirtualAndVertex},
+                                                 {"virtual_replaces_vertex", SmallEdgeRays::kVirtualReplacesVertex}});
   return c;
+}
+
+// The solver's stability guards; every key optional (the kernel checks the
+// ranges, with the same field names: guards.max_step_motion, ...).
+StabilityGuards read_guards(const Reader& r, const json& v, const std::string& path) {
+  r.object(v, path, {"max_step_motion", "max_energy_growth", "energy_check_every"});
+  StabilityGuards g;
+  if (const json* x = Reader::find(v, "max_step_motion"))
+    g.max_step_motion = r.number(*x, join_path(path, "max_step_motion"));
+  if (const json* x = Reader::find(v, "max_energy_growth"))
+    g.max_energy_growth = r.number(*x, join_path(path, "max_energy_growth"));
+  if (const json* x = Reader::find(v, "energy_check_every"))
+    g.energy_check_every = r.integer(*x, join_path(path, "energy_check_every"));
+  return g;
 }
 
 OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
@@ -539,7 +558,7 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
            {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
-            "broad_phase", "initial_overlap", "dt", "duration", "output"});
+            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "guards", "output"});
 
   SceneFile f;
   Scene& s = f.scene;
@@ -580,8 +599,23 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   if (const json* x = Reader::find(root, "broad_phase"))
     s.broad_phase = r.choice<BroadPhase>(*x, "broad_phase", {{"none", BroadPhase::kNone}, {"sweep", BroadPhase::kSweep}});
   if (const json* x = Reader::find(root, "initial_overlap")) s.initial_overlap = r.number(*x, "initial_overlap");
-  s.dt = r.number(r.need(root, "", "dt"), "dt");
+  // The step: "dt", or "dt_fraction" > 0 (a fraction of the predicted
+  // critical step, which replaces dt when the simulation is built; a "dt"
+  // next to it would be silently ignored).
+  if (const json* x = Reader::find(root, "dt_fraction")) {
+    s.dt_fraction = r.number(*x, "dt_fraction");
+    if (!(s.dt_fraction >= 0.0))
+      r.fail("dt_fraction", "must be >= 0 (0: the step is dt; > 0: this fraction of the predicted critical step)");
+  }
+  if (s.dt_fraction > 0.0) {
+    if (Reader::find(root, "dt"))
+      r.fail("dt", "has no effect with dt_fraction > 0 (the step is dt_fraction times the predicted critical step); "
+                   "give one of them");
+  } else {
+    s.dt = r.number(r.need(root, "", "dt"), "dt");
+  }
   s.duration = r.number(r.need(root, "", "duration"), "duration");
+  if (const json* x = Reader::find(root, "guards")) s.guards = read_guards(r, *x, "guards");
 
   // The kernel's semantic checks (polygons, ranges, overlaps at t = 0).
   try {
@@ -618,6 +652,14 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 ojson vec2_json(Vec2 v) { return ojson::array({v.x, v.y}); }
+
+const char* name_of(SmallEdgeRays m) {
+  switch (m) {
+    case SmallEdgeRays::kVirtualAndVertex: return "virtual_and_vertex";
+    case SmallEdgeRays::kVirtualReplacesVertex: return "virtual_replaces_vertex";
+  }
+  return "virtual_and_vertex";
+}
 
 const char* name_of(HRule h) {
   switch (h) {
@@ -664,7 +706,8 @@ std::string write_scene(const SceneFile& file) {
                   {"friction_deg", c.friction_deg},
                   {"h_rule", name_of(c.h_rule)},
                   {"integration", c.integration == Integration::kExactEnvelope ? "exact_envelope" : "paper_bisector"},
-                  {"small_edge_fraction", c.small_edge_fraction}};
+                  {"small_edge_fraction", c.small_edge_fraction},
+                  {"small_edge_rays", name_of(c.small_edge_rays)}};
   ojson rules = ojson::array();
   for (const FrictionRule& fr : c.friction_rules)
     rules.push_back({{"groups", {fr.group_a, fr.group_b}}, {"friction_deg", fr.friction_deg}});
@@ -675,8 +718,17 @@ std::string write_scene(const SceneFile& file) {
   root["strains"] = s.strains;
   root["broad_phase"] = s.broad_phase == BroadPhase::kSweep ? "sweep" : "none";
   root["initial_overlap"] = s.initial_overlap;
-  root["dt"] = s.dt;
+  // With dt_fraction > 0 the reader refuses a "dt" (it would be ignored).
+  if (s.dt_fraction > 0.0) {
+    root["dt_fraction"] = s.dt_fraction;
+  } else {
+    root["dt"] = s.dt;
+    root["dt_fraction"] = s.dt_fraction;
+  }
   root["duration"] = s.duration;
+  root["guards"] = {{"max_step_motion", s.guards.max_step_motion},
+                    {"max_energy_growth", s.guards.max_energy_growth},
+                    {"energy_check_every", s.guards.energy_check_every}};
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
                     {"tracked_blocks", file.output.tracked_blocks}};

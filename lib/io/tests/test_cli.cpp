@@ -100,3 +100,31 @@ TEST_CASE("dda run exits 3 on a SimulationError and keeps the valid rows", "[io]
   CHECK(fs::exists(out + "/timeseries.csv"));
   CHECK(slurp(out + "/run.json").find("\"simulation_error\"") != std::string::npos);
 }
+
+TEST_CASE("dda check with dt_fraction reports the step it gives", "[io][cli]") {
+  const std::string dir = tmp("check_dt_fraction");
+  fs::create_directories(dir);
+  const std::string scene = dir + "/s.json";
+  std::ofstream(scene) << R"({
+    "materials": [{"density": 2000, "young": 1e9, "poisson": 0.25}],
+    "blocks": [{"rect": [0, 0, 1, 1], "velocity": [1, 0]}, {"rect": [1.01, 0, 1, 1]}],
+    "contact": {"kn": 1e7, "small_edge_rays": "virtual_replaces_vertex"},
+    "dt_fraction": 0.5, "duration": 0.05,
+    "guards": {"max_step_motion": 0.2, "max_energy_growth": 1.0, "energy_check_every": 10}
+  })";
+  const std::string log = dir + ".log";
+  CHECK(run_cli("check \"" + scene + "\"", log) == 0);
+  const std::string msg = slurp(log);
+  INFO(msg);
+  CHECK(msg.find(": ok: 2 blocks") != std::string::npos);
+  CHECK(msg.find("(dt_fraction 0.5 of the predicted critical step ") != std::string::npos);
+  // An unknown key inside "guards": exit 2, the field named.
+  std::ofstream(scene) << R"({
+    "materials": [{"density": 2000, "young": 1e9, "poisson": 0.25}],
+    "blocks": [{"rect": [0, 0, 1, 1]}],
+    "contact": {"kn": 1e7}, "dt": 1e-4, "duration": 0.05,
+    "guards": {"max_energy": 1.0}
+  })";
+  CHECK(run_cli("check \"" + scene + "\"", log) == 2);
+  CHECK(slurp(log).find(scene + ": guards.max_energy: unknown key") == 0);
+}

@@ -210,3 +210,26 @@ TEST_CASE("write_file_atomic and save_scene_file", "[io][csv]") {
   const dda::io::SceneFile g = dda::io::load_scene_file(dir + "/s.json");
   CHECK(dda::io::write_scene(g) == dda::io::write_scene(f));
 }
+
+TEST_CASE("with dt_fraction, the run uses and records that fraction of the predicted critical step", "[io][run]") {
+  const std::string dir = fresh_dir("dt_fraction");
+  json j = {{"materials", {{{"density", 2000}, {"young", 1e9}, {"poisson", 0.25}}}},
+            {"blocks", {{{"name", "A"}, {"rect", {0, 0, 1, 1}}, {"velocity", {1, 0}}},
+                        {{"name", "B"}, {"rect", {1.01, 0, 1, 1}}}}},
+            {"contact", {{"kn", 1e7}}},
+            {"dt_fraction", 0.5},
+            {"duration", 0.02},
+            {"output", {{"every", 1000}}}};
+  const dda::io::SceneFile f = dda::io::parse_scene(j.dump(), "fraction.json");
+  const dda::Simulation sim(f.scene);
+  REQUIRE(sim.predicted_critical_step() > 0.0);
+  CHECK(sim.dt() == 0.5 * sim.predicted_critical_step());
+  dda::io::RunOptions opt;
+  opt.out_dir = dir;
+  const dda::io::RunResult r = dda::io::run_scene(f, opt);
+  REQUIRE(r.status == dda::io::RunStatus::kCompleted);
+  std::ifstream in(dir + "/run.json");
+  const json run = json::parse(in);
+  CHECK(run["dt"].get<double>() == sim.dt());
+  CHECK(r.steps == static_cast<std::int64_t>(std::llround(0.02 / sim.dt())));
+}

@@ -445,3 +445,176 @@ TEST_CASE("the complete example of SCHEMA.md parses", "[io][scene][examples]") {
   CHECK(f.scene.boundaries.size() == 1);
   CHECK(f.output.tracked_blocks == std::vector<int>{0, 1});
 }
+
+TEST_CASE("dt_fraction, guards and contact.small_edge_rays: defaults", "[io][scene][options]") {
+  const SceneFile f = parse_scene(base().dump(), "scene.json");
+  const dda::Scene defaults;
+  CHECK(f.scene.dt_fraction == 0.0);
+  CHECK(f.scene.dt == 1e-4);
+  CHECK(f.scene.guards.max_step_motion == defaults.guards.max_step_motion);
+  CHECK(f.scene.guards.max_energy_growth == defaults.guards.max_energy_growth);
+  CHECK(f.scene.guards.energy_check_every == defaults.guards.energy_check_every);
+  CHECK(f.scene.contact.small_edge_rays == dda::SmallEdgeRays::kVirtualAndVertex);
+}
+
+TEST_CASE("dt_fraction, guards and contact.small_edge_rays are read", "[io][scene][options]") {
+  json j = base();
+  j.erase("dt");
+  j["dt_fraction"] = 0.5;
+  SceneFile f = parse_scene(j.dump(), "scene.json");
+  CHECK(f.scene.dt_fraction == 0.5);
+  // dt_fraction = 0 (off) with a dt is the default spelled out.
+  j = base();
+  j["dt_fraction"] = 0;
+  f = parse_scene(j.dump(), "scene.json");
+  CHECK(f.scene.dt_fraction == 0.0);
+  CHECK(f.scene.dt == 1e-4);
+
+  j = base();
+  j["guards"] = {{"max_step_motion", 0.1}};
+  f = parse_scene(j.dump(), "scene.json");
+  CHECK(f.scene.guards.max_step_motion == 0.1);
+  CHECK(f.scene.guards.max_energy_growth == dda::StabilityGuards{}.max_energy_growth);
+  CHECK(f.scene.guards.energy_check_every == dda::StabilityGuards{}.energy_check_every);
+  j["guards"] = {{"max_energy_growth", 2.5}};
+  f = parse_scene(j.dump(), "scene.json");
+  CHECK(f.scene.guards.max_energy_growth == 2.5);
+  CHECK(f.scene.guards.max_step_motion == dda::StabilityGuards{}.max_step_motion);
+  j["guards"] = {{"energy_check_every", 7}};
+  f = parse_scene(j.dump(), "scene.json");
+  CHECK(f.scene.guards.energy_check_every == 7);
+  j["guards"] = {{"energy_check_every", 0}};  // 0 switches the energy check off
+  CHECK(parse_scene(j.dump(), "scene.json").scene.guards.energy_check_every == 0);
+  j["guards"] = {{"energy_check_every", 3.0}};  // integral doubles are integers
+  CHECK(parse_scene(j.dump(), "scene.json").scene.guards.energy_check_every == 3);
+  j["guards"] = json::object();
+  CHECK(parse_scene(j.dump(), "scene.json").scene.guards.max_step_motion == dda::StabilityGuards{}.max_step_motion);
+
+  j = base();
+  j["contact"]["small_edge_rays"] = "virtual_replaces_vertex";
+  CHECK(parse_scene(j.dump(), "scene.json").scene.contact.small_edge_rays ==
+        dda::SmallEdgeRays::kVirtualReplacesVertex);
+  j["contact"]["small_edge_rays"] = "virtual_and_vertex";
+  CHECK(parse_scene(j.dump(), "scene.json").scene.contact.small_edge_rays == dda::SmallEdgeRays::kVirtualAndVertex);
+}
+
+TEST_CASE("invalid dt_fraction, guards and contact.small_edge_rays name their field", "[io][scene][options][reject]") {
+  // dt_fraction
+  for (double bad : {-0.5, -1e-300}) {
+    json j = base();
+    j["dt_fraction"] = bad;
+    check_rejected(j, "dt_fraction", "must be >= 0");
+    j.erase("dt");  // the range is checked before dt is looked for
+    check_rejected(j, "dt_fraction", "must be >= 0");
+  }
+  json j = base();
+  j["dt_fraction"] = "0.5";
+  check_rejected(j, "dt_fraction", "expected a number, got string \"0.5\"");
+  j = base();
+  j["dt_fraction"] = 0.5;  // dt would be silently replaced
+  check_rejected(j, "dt", "has no effect with dt_fraction > 0");
+  j = base();
+  j.erase("dt");
+  j["dt_fraction"] = 0;  // off: dt is needed
+  check_rejected(j, "dt", "missing required key");
+  j = base();
+  j["dt_fracton"] = 0.5;
+  check_rejected(j, "dt_fracton", "unknown key (did you mean 'dt_fraction'?)");
+
+  // guards
+  j = base();
+  j["guards"] = 0.25;
+  check_rejected(j, "guards", "expected an object, got number");
+  j = base();
+  j["guards"] = {{"max_step_motin", 0.1}};
+  check_rejected(j, "guards.max_step_motin", "unknown key (did you mean 'max_step_motion'?)");
+  j = base();
+  j["guards"] = {{"max_step", 0.1}};
+  check_rejected(j, "guards.max_step",
+                 "unknown key; allowed here: max_step_motion max_energy_growth energy_check_every");
+  j = base();
+  j["guards"] = {{"energy_check_every", 10}, {"flip_through", true}};
+  check_rejected(j, "guards.flip_through", "unknown key");
+  j = base();
+  j["gaurds"] = json::object();
+  check_rejected(j, "gaurds", "unknown key (did you mean 'guards'?)");
+  for (double bad : {0.0, -1.0}) {
+    j = base();
+    j["guards"] = {{"max_step_motion", bad}};
+    check_rejected(j, "guards.max_step_motion", "must be positive");
+    j = base();
+    j["guards"] = {{"max_energy_growth", bad}};
+    check_rejected(j, "guards.max_energy_growth", "must be positive");
+  }
+  j = base();
+  j["guards"] = {{"max_step_motion", "0.25"}};
+  check_rejected(j, "guards.max_step_motion", "expected a number, got string");
+  j = base();
+  j["guards"] = {{"energy_check_every", -1}};
+  check_rejected(j, "guards.energy_check_every", "must be >= 0");
+  j = base();
+  j["guards"] = {{"energy_check_every", 1.5}};
+  check_rejected(j, "guards.energy_check_every", "expected an integer, got number 1.5");
+  j = base();
+  j["guards"] = {{"energy_check_every", 1e12}};
+  check_rejected(j, "guards.energy_check_every", "expected an integer");
+  j = base();
+  j["guards"] = {{"energy_check_every", 10000000000LL}};
+  check_rejected(j, "guards.energy_check_every", "integer out of range");
+
+  // contact.small_edge_rays
+  j = base();
+  j["contact"]["small_edge_rays"] = "replace";
+  check_rejected(j, "contact.small_edge_rays",
+                 "unknown value \"replace\"; expected one of \"virtual_and_vertex\", \"virtual_replaces_vertex\"");
+  j = base();
+  j["contact"]["small_edge_rays"] = "kVirtualReplacesVertex";  // the C++ spelling is not the file's
+  check_rejected(j, "contact.small_edge_rays", "unknown value");
+  j = base();
+  j["contact"]["small_edge_rays"] = 1;
+  check_rejected(j, "contact.small_edge_rays", "expected a string, got number 1");
+  j = base();
+  j["contact"]["small_edge_ray"] = "virtual_and_vertex";
+  check_rejected(j, "contact.small_edge_ray", "unknown key (did you mean 'small_edge_rays'?)");
+}
+
+TEST_CASE("dt_fraction, guards and contact.small_edge_rays round-trip", "[io][scene][options]") {
+  auto round_trip = [](const json& j) {
+    const SceneFile f = parse_scene(j.dump(), "scene.json");
+    const std::string text = dda::io::write_scene(f);
+    const SceneFile g = parse_scene(text, "scene.json (rewritten)");
+    CHECK(dda::io::write_scene(g) == text);
+    CHECK(g.scene.dt == f.scene.dt);
+    CHECK(g.scene.dt_fraction == f.scene.dt_fraction);
+    CHECK(g.scene.guards.max_step_motion == f.scene.guards.max_step_motion);
+    CHECK(g.scene.guards.max_energy_growth == f.scene.guards.max_energy_growth);
+    CHECK(g.scene.guards.energy_check_every == f.scene.guards.energy_check_every);
+    CHECK(g.scene.contact.small_edge_rays == f.scene.contact.small_edge_rays);
+    return std::make_pair(f, json::parse(text));
+  };
+  // Non-default values of every new key.
+  json j = base();
+  j.erase("dt");
+  j["dt_fraction"] = 0.3;
+  j["guards"] = {{"max_step_motion", 0.125}, {"max_energy_growth", 3.0}, {"energy_check_every", 0}};
+  j["contact"]["small_edge_rays"] = "virtual_replaces_vertex";
+  auto [f, written] = round_trip(j);
+  CHECK(f.scene.dt_fraction == 0.3);
+  CHECK(f.scene.guards.max_step_motion == 0.125);
+  CHECK(f.scene.guards.max_energy_growth == 3.0);
+  CHECK(f.scene.guards.energy_check_every == 0);
+  CHECK(f.scene.contact.small_edge_rays == dda::SmallEdgeRays::kVirtualReplacesVertex);
+  CHECK(written["dt_fraction"] == 0.3);
+  CHECK_FALSE(written.contains("dt"));  // the reader would refuse it next to dt_fraction > 0
+  CHECK(written["guards"]["energy_check_every"] == 0);
+  CHECK(written["contact"]["small_edge_rays"] == "virtual_replaces_vertex");
+
+  // Defaults: written out explicitly, dt kept.
+  auto [d, dw] = round_trip(base());
+  CHECK(dw["dt"] == 1e-4);
+  CHECK(dw["dt_fraction"] == 0);
+  CHECK(dw["guards"] == json({{"max_step_motion", d.scene.guards.max_step_motion},
+                              {"max_energy_growth", d.scene.guards.max_energy_growth},
+                              {"energy_check_every", d.scene.guards.energy_check_every}}));
+  CHECK(dw["contact"]["small_edge_rays"] == "virtual_and_vertex");
+}

@@ -53,7 +53,8 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
 // The JSON text of a scene file (vertices written out explicitly, numbers in
 // shortest round-trip form): parse_scene(write_scene(f), ...) gives back f's
 // scene and output (generated blocks come back as listed blocks, so
-// `generated` comes back empty).
+// `generated` comes back empty; with dt_fraction > 0 no "dt" is written, as
+// the reader refuses it, so scene.dt comes back as its default, unused).
 std::string write_scene(const SceneFile& file);
 
 // Writes write_scene(file) to `path` atomically ("<path>.tmp", then rename).
