@@ -342,14 +342,16 @@ void Simulation::move_blocks() {
 void Simulation::update_contact_history() {
   if (!friction_) return;
   // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at pg; a sticking
-  // pair accumulates it, a sliding pair restarts from it. The centroids are
-  // those of the step's start configuration.
+  // pair accumulates it, a sliding pair restarts from it (kPaper) or, with
+  // the return mapping, accumulates it onto the shear it was returned to
+  // (pair_force). The centroids are those of the step's start configuration.
+  const bool restart = scene_.contact.friction_update == FrictionUpdate::kPaper;
   for (PairHistory& h : history_) {
     const int cp = static_cast<int>(h.key >> 32), tp = static_cast<int>(h.key & 0xffffffffu);
     const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(start_centroid_[cp], h.point, step_disp_[cp]);
     const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(start_centroid_[tp], h.point, step_disp_[tp]);
     const Vec2 dd = du_cp - du_tp;
-    h.d = h.sliding ? dd : h.d + dd;
+    h.d = h.sliding && restart ? dd : h.d + dd;
   }
 }
 
@@ -543,7 +545,19 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
     const Vec2 s = lt > 0.0 ? dtan / lt : Vec2{};
     const double limit = fn * friction_tan(cp, tp);
     Vec2 ft{};
-    if (!hist.sliding) {
+    if (c.friction_update == FrictionUpdate::kReturnMapping) {
+      // Elastic-plastic Coulomb (not the paper's Eq. 26, see FrictionUpdate):
+      // Eq. 25 from either state; sliding returns d_tan onto the limit,
+      // d_tan = -f_t / kt, so the spring keeps the shear it carries.
+      if (c.kt * lt < limit) {
+        ft = -c.kt * dtan;
+        hist.sliding = false;
+      } else {
+        ft = -limit * s;
+        hist.sliding = true;
+        hist.d += (limit / c.kt) * s - dtan;
+      }
+    } else if (!hist.sliding) {
       if (c.kt * lt < limit) {
         ft = -c.kt * dtan;
       } else {
