@@ -643,11 +643,13 @@ void Simulation::check_state() {
       stop(i, s.str());
     }
     // Largest vertex motion of this step: |T(p) dd| at the vertices.
-    double motion = 0.0;
+    // (Squared: no square root per vertex and step.)
+    double motion2 = 0.0;
     const Polygon& p = poly_[i];
     for (int k = 0; k < p.count; ++k)
-      motion = std::max(motion, length(point_displacement(moments_[i].centroid, p.v[k], step_disp_[i])));
-    if (motion > motion_limit) {
+      motion2 = std::max(motion2, length_squared(point_displacement(moments_[i].centroid, p.v[k], step_disp_[i])));
+    if (motion2 > motion_limit * motion_limit) {
+      const double motion = std::sqrt(motion2);
       std::ostringstream s;
       s << "a vertex moved " << motion << " m in one step, more than " << scene_.guards.max_step_motion
         << " of the smallest inscribed radius within reach (" << reach_radius_[i] << " m)";

@@ -43,28 +43,29 @@ inline Eigen::Vector4d rotation_strain_acceleration(const AreaMoments& m, double
                           {-xy, xx, 0.0, 0.5 * xy},
                           {xy, 0.0, yy, 0.5 * xy},
                           {0.5 * (xx - yy), 0.5 * xy, 0.5 * xy, 0.25 * (xx + yy)}};
-  double l[4][4] = {};
+  double l[4][4] = {}, inv_diag[4];  // L and 1 / L_jj (one division per column)
   for (int j = 0; j < 4; ++j) {
     double d = a[j][j];
     for (int k = 0; k < j; ++k) d -= l[j][k] * l[j][k];
     l[j][j] = std::sqrt(d);
+    inv_diag[j] = 1.0 / l[j][j];
     for (int i = j + 1; i < 4; ++i) {
       double v = a[i][j];
       for (int k = 0; k < j; ++k) v -= l[i][k] * l[j][k];
-      l[i][j] = v / l[j][j];
+      l[i][j] = v * inv_diag[j];
     }
   }
   double y[4];
   for (int i = 0; i < 4; ++i) {
     double v = f[i];
     for (int k = 0; k < i; ++k) v -= l[i][k] * y[k];
-    y[i] = v / l[i][i];
+    y[i] = v * inv_diag[i];
   }
   Eigen::Vector4d x;
   for (int i = 3; i >= 0; --i) {
     double v = y[i];
     for (int k = i + 1; k < 4; ++k) v -= l[k][i] * x[k];
-    x[i] = v / l[i][i];
+    x[i] = v * inv_diag[i];
   }
   return x;
 }

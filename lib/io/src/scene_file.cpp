@@ -405,7 +405,7 @@ GeneratedRegion read_generated(const Reader& r, const json& v, const std::string
 ContactParams read_contact(const Reader& r, const json& v, const std::string& path) {
   r.object(v, path,
            {"kn", "kt", "friction_deg", "friction_rules", "h_rule", "h", "integration", "small_edge_fraction",
-            "small_edge_rays"});
+            "small_edge_rays", "friction_update"});
   ContactParams c;
   c.kn = r.number(r.need(v, path, "kn"), join_path(path, "kn"));
   if (const json* x = Reader::find(v, "kt")) c.kt = r.number(*x, join_path(path, "kt"));
@@ -447,6 +447,10 @@ ContactParams read_contact(const Reader& r, const json& v, const std::string& pa
     c.small_edge_rays = r.choice<SmallEdgeRays>(*x, join_path(path, "small_edge_rays"),
                                                 {{"virtual_and_vertex", SmallEdgeRays::kVirtualAndVertex},
                                                  {"virtual_replaces_vertex", SmallEdgeRays::kVirtualReplacesVertex}});
+  if (const json* x = Reader::find(v, "friction_update"))
+    c.friction_update = r.choice<FrictionUpdate>(
+        *x, join_path(path, "friction_update"),
+        {{"paper", FrictionUpdate::kPaper}, {"return_mapping", FrictionUpdate::kReturnMapping}});
   return c;
 }
 
@@ -623,13 +627,15 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   } catch (const SceneError& e) {
     throw SceneFileError(file_label + ": " + e.what() + generated_note(e.what(), f.generated, generated_paths));
   }
-  // Consistency that only matters for a file: a friction angle that would be
-  // silently ignored.
+  // Consistency that only matters for a file: a friction angle or update rule
+  // that would be silently ignored.
   if (!s.contact.friction()) {
     if (s.contact.friction_deg > 0.0)
       r.fail("contact.friction_deg", "has no effect with contact.kt = 0 (kt > 0 switches friction on)");
     if (!s.contact.friction_rules.empty())
       r.fail("contact.friction_rules", "have no effect with contact.kt = 0 (kt > 0 switches friction on)");
+    if (s.contact.friction_update != FrictionUpdate::kPaper)
+      r.fail("contact.friction_update", "has no effect with contact.kt = 0 (kt > 0 switches friction on)");
   }
   f.output = read_output(r, Reader::find(root, "output"), s);
   return f;
@@ -659,6 +665,14 @@ const char* name_of(SmallEdgeRays m) {
     case SmallEdgeRays::kVirtualReplacesVertex: return "virtual_replaces_vertex";
   }
   return "virtual_and_vertex";
+}
+
+const char* name_of(FrictionUpdate u) {
+  switch (u) {
+    case FrictionUpdate::kPaper: return "paper";
+    case FrictionUpdate::kReturnMapping: return "return_mapping";
+  }
+  return "paper";
 }
 
 const char* name_of(HRule h) {
@@ -707,7 +721,8 @@ std::string write_scene(const SceneFile& file) {
                   {"h_rule", name_of(c.h_rule)},
                   {"integration", c.integration == Integration::kExactEnvelope ? "exact_envelope" : "paper_bisector"},
                   {"small_edge_fraction", c.small_edge_fraction},
-                  {"small_edge_rays", name_of(c.small_edge_rays)}};
+                  {"small_edge_rays", name_of(c.small_edge_rays)},
+                  {"friction_update", name_of(c.friction_update)}};
   ojson rules = ojson::array();
   for (const FrictionRule& fr : c.friction_rules)
     rules.push_back({{"groups", {fr.group_a, fr.group_b}}, {"friction_deg", fr.friction_deg}});

@@ -618,3 +618,54 @@ TEST_CASE("dt_fraction, guards and contact.small_edge_rays round-trip", "[io][sc
                               {"energy_check_every", d.scene.guards.energy_check_every}}));
   CHECK(dw["contact"]["small_edge_rays"] == "virtual_and_vertex");
 }
+
+TEST_CASE("contact.friction_update: default and both values", "[io][scene][options]") {
+  json j = base();
+  CHECK(parse_scene(j.dump(), "scene.json").scene.contact.friction_update == dda::FrictionUpdate::kPaper);
+  j["contact"]["friction_update"] = "return_mapping";
+  CHECK(parse_scene(j.dump(), "scene.json").scene.contact.friction_update == dda::FrictionUpdate::kReturnMapping);
+  j["contact"]["friction_update"] = "paper";
+  CHECK(parse_scene(j.dump(), "scene.json").scene.contact.friction_update == dda::FrictionUpdate::kPaper);
+  // Without friction the default spelled out is accepted, like "friction_deg": 0.
+  j = base();
+  j["contact"] = {{"kn", 1e7}, {"kt", 0}, {"friction_deg", 0}, {"friction_update", "paper"}};
+  CHECK(parse_scene(j.dump(), "scene.json").scene.contact.friction_update == dda::FrictionUpdate::kPaper);
+}
+
+TEST_CASE("invalid contact.friction_update names its field", "[io][scene][options][reject]") {
+  json j = base();
+  j["contact"]["friction_update"] = "return-mapping";
+  check_rejected(j, "contact.friction_update",
+                 "unknown value \"return-mapping\"; expected one of \"paper\", \"return_mapping\"");
+  j["contact"]["friction_update"] = "kReturnMapping";  // the C++ spelling is not the file's
+  check_rejected(j, "contact.friction_update", "unknown value");
+  j["contact"]["friction_update"] = true;
+  check_rejected(j, "contact.friction_update", "expected a string");
+  j = base();
+  j["contact"]["friction_updates"] = "paper";
+  check_rejected(j, "contact.friction_updates", "unknown key (did you mean 'friction_update'?)");
+  // The rule would be silently ignored without kt.
+  j = base();
+  j["contact"] = {{"kn", 1e7}, {"friction_update", "return_mapping"}};
+  check_rejected(j, "contact.friction_update", "has no effect with contact.kt = 0");
+}
+
+TEST_CASE("contact.friction_update round-trips", "[io][scene][options]") {
+  for (const char* name : {"paper", "return_mapping"}) {
+    INFO(name);
+    json j = base();
+    j["contact"]["friction_update"] = name;
+    const SceneFile f = parse_scene(j.dump(), "scene.json");
+    const std::string text = dda::io::write_scene(f);
+    CHECK(json::parse(text)["contact"]["friction_update"] == name);
+    const SceneFile g = parse_scene(text, "scene.json (rewritten)");
+    CHECK(g.scene.contact.friction_update == f.scene.contact.friction_update);
+    CHECK(dda::io::write_scene(g) == text);
+  }
+  // Without friction: the default is written and read back.
+  json j = base();
+  j["contact"] = {{"kn", 1e7}};
+  const std::string text = dda::io::write_scene(parse_scene(j.dump(), "scene.json"));
+  CHECK(json::parse(text)["contact"]["friction_update"] == "paper");
+  CHECK(parse_scene(text, "scene.json (rewritten)").scene.contact.friction_update == dda::FrictionUpdate::kPaper);
+}
