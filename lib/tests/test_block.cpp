@@ -79,10 +79,12 @@ TEST_CASE("point load is the transpose of point displacement", "[block]") {
 
 TEST_CASE("rotation/strain acceleration solves the 4x4 block of M", "[block]") {
   // Against Eigen's LU on the lower-right block of mass_matrix, for a
-  // rectangle, a sliver triangle and a rotated pentagon: residual at round-off.
+  // rectangle, a sliver triangle, a pentagon and a rotated 100:1 sliver:
+  // residual at round-off.
   const Vec2 tri[3] = {{0, 0}, {10, 0}, {0, 0.1}};
   const Vec2 pent[5] = {{0, 0}, {2, -0.5}, {3, 1}, {1.5, 2.5}, {-0.5, 1.5}};
-  const Polygon polys[3] = {rect(3.0, -1.0, 2.0, 0.5), make_polygon(tri, 3), make_polygon(pent, 5)};
+  const Polygon polys[4] = {rect(3.0, -1.0, 2.0, 0.5), make_polygon(tri, 3), make_polygon(pent, 5),
+                            rotated(rect(0.0, 0.0, 10.0, 0.1), 0.5, {0.0, 0.0})};  // rotated 100:1 sliver
   const double rho = 2700.0;
   for (const Polygon& p : polys) {
     const AreaMoments am = area_moments(p);

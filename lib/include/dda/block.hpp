@@ -34,40 +34,22 @@ inline Vec6 point_load(Vec2 centroid, Vec2 p, Vec2 f) {
 Mat6 mass_matrix(const AreaMoments& m, double density);
 
 // Accelerations of the rotation and strain DOFs (r, ex, ey, gxy): solves
-// M4 a = f with M4 the lower-right 4x4 block of mass_matrix (Eq. 5a), by a
-// Cholesky factorisation written out for 4x4 (fixed loops the compiler
-// unrolls: ~5x cheaper than Eigen's general LLT, called per block and step).
+// M4 a = f with M4 the lower-right 4x4 block of mass_matrix (Eq. 5a), in
+// closed form. With p = gxy/2 - r and q = gxy/2 + r the displacement of
+// Eq. 1 about the centroid reads u = x ex + y p, v = x q + y ey, so in the
+// DOFs (ex, p) and (q, ey) the kinetic energy splits into two copies of the
+// same 2x2 form rho [[Sxx, Sxy], [Sxy, Syy]]: one 2x2 inverse serves both.
+// Forces map by the transpose (f_p = f_gxy - f_r / 2, f_q = f_gxy + f_r / 2)
+// and accelerations back by r = (q - p) / 2, gxy = p + q. Called per block
+// and step: one division instead of a 4x4 factorisation.
 inline Eigen::Vector4d rotation_strain_acceleration(const AreaMoments& m, double density, const Eigen::Vector4d& f) {
-  const double xx = density * m.sxx, yy = density * m.syy, xy = density * m.sxy;
-  const double a[4][4] = {{xx + yy, -xy, xy, 0.5 * (xx - yy)},
-                          {-xy, xx, 0.0, 0.5 * xy},
-                          {xy, 0.0, yy, 0.5 * xy},
-                          {0.5 * (xx - yy), 0.5 * xy, 0.5 * xy, 0.25 * (xx + yy)}};
-  double l[4][4] = {}, inv_diag[4];  // L and 1 / L_jj (one division per column)
-  for (int j = 0; j < 4; ++j) {
-    double d = a[j][j];
-    for (int k = 0; k < j; ++k) d -= l[j][k] * l[j][k];
-    l[j][j] = std::sqrt(d);
-    inv_diag[j] = 1.0 / l[j][j];
-    for (int i = j + 1; i < 4; ++i) {
-      double v = a[i][j];
-      for (int k = 0; k < j; ++k) v -= l[i][k] * l[j][k];
-      l[i][j] = v * inv_diag[j];
-    }
-  }
-  double y[4];
-  for (int i = 0; i < 4; ++i) {
-    double v = f[i];
-    for (int k = 0; k < i; ++k) v -= l[i][k] * y[k];
-    y[i] = v * inv_diag[i];
-  }
-  Eigen::Vector4d x;
-  for (int i = 3; i >= 0; --i) {
-    double v = y[i];
-    for (int k = i + 1; k < 4; ++k) v -= l[k][i] * x[k];
-    x[i] = v * inv_diag[i];
-  }
-  return x;
+  const double fr = f[0], fex = f[1], fey = f[2], fg = f[3];
+  const double fp = fg - 0.5 * fr, fq = fg + 0.5 * fr;
+  const double inv_det = 1.0 / (density * (m.sxx * m.syy - m.sxy * m.sxy));
+  // inverse of rho S2 = inv_det [[Syy, -Sxy], [-Sxy, Sxx]]
+  const double a_ex = inv_det * (m.syy * fex - m.sxy * fp), a_p = inv_det * (m.sxx * fp - m.sxy * fex);
+  const double a_q = inv_det * (m.syy * fq - m.sxy * fey), a_ey = inv_det * (m.sxx * fey - m.sxy * fq);
+  return {0.5 * (a_q - a_p), a_ex, a_ey, a_p + a_q};
 }
 
 // Plane-stress elastic matrix D (stress = D strain, engineering shear), Pa.
