@@ -83,12 +83,17 @@ PolygonCheck validate_polygon(const Vec2* p, int count) {
   return {};
 }
 
-AreaMoments area_moments(const Polygon& poly) {
-  // Green's theorem on edges, in coordinates relative to v[0] so that large
-  // offsets do not cancel catastrophically. For edge (a, b), c = a x b:
-  //   S   += c / 2,  Sx += c (ax + bx) / 6,  Sy += c (ay + by) / 6,
-  //   Sxx += c (ax^2 + ax bx + bx^2) / 12,  Syy likewise,
-  //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
+namespace {
+
+// Green's theorem on edges, in coordinates relative to v[0] so that large
+// offsets do not cancel catastrophically. For edge (a, b), c = a x b:
+//   S   += c / 2,  Sx += c (ax + bx) / 6,  Sy += c (ay + by) / 6,
+//   Sxx += c (ax^2 + ax bx + bx^2) / 12,  Syy likewise,
+//   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
+// kSecond: also the second moments (area_centroid leaves them out; the
+// area and centroid are the same bits either way).
+template <bool kSecond>
+AreaMoments green_moments(const Polygon& poly) {
   AreaMoments m;
   if (poly.count < 3) return m;
   const Vec2 o = poly.v[0];
@@ -100,49 +105,32 @@ AreaMoments area_moments(const Polygon& poly) {
     s += c;
     sx += c * (a.x + b.x);
     sy += c * (a.y + b.y);
-    sxx += c * (a.x * a.x + a.x * b.x + b.x * b.x);
-    syy += c * (a.y * a.y + a.y * b.y + b.y * b.y);
-    sxy += c * (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y);
+    if (kSecond) {
+      sxx += c * (a.x * a.x + a.x * b.x + b.x * b.x);
+      syy += c * (a.y * a.y + a.y * b.y + b.y * b.y);
+      sxy += c * (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y);
+    }
   }
   s *= 0.5;
   sx /= 6.0;
   sy /= 6.0;
-  sxx /= 12.0;
-  syy /= 12.0;
-  sxy /= 24.0;
   m.area = s;
   if (s == 0.0) return m;
   const Vec2 c{sx / s, sy / s};
   m.centroid = o + c;
-  m.sxx = sxx - s * c.x * c.x;
-  m.syy = syy - s * c.y * c.y;
-  m.sxy = sxy - s * c.x * c.y;
+  if (kSecond) {
+    m.sxx = sxx / 12.0 - s * c.x * c.x;
+    m.syy = syy / 12.0 - s * c.y * c.y;
+    m.sxy = sxy / 24.0 - s * c.x * c.y;
+  }
   return m;
 }
 
-AreaMoments area_centroid(const Polygon& poly) {
-  // The first three sums of area_moments, same operations in the same order
-  // (the same bits), without the second moments.
-  AreaMoments m;
-  if (poly.count < 3) return m;
-  const Vec2 o = poly.v[0];
-  double s = 0, sx = 0, sy = 0;
-  for (int i = 0; i < poly.count; ++i) {
-    const Vec2 a = poly.vertex(i) - o;
-    const Vec2 b = poly.vertex(poly.next(i)) - o;
-    const double c = cross(a, b);
-    s += c;
-    sx += c * (a.x + b.x);
-    sy += c * (a.y + b.y);
-  }
-  s *= 0.5;
-  sx /= 6.0;
-  sy /= 6.0;
-  m.area = s;
-  if (s == 0.0) return m;
-  m.centroid = o + Vec2{sx / s, sy / s};
-  return m;
-}
+}  // namespace
+
+AreaMoments area_moments(const Polygon& poly) { return green_moments<true>(poly); }
+
+AreaMoments area_centroid(const Polygon& poly) { return green_moments<false>(poly); }
 
 double area(const Polygon& poly) {
   if (poly.count < 3) return 0.0;
