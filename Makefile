@@ -51,6 +51,7 @@ bench: build
 	$(BIN)/bench_collapse
 	@mkdir -p $(OUT)/bench
 	$(BIN)/bench_collapse --scaling --csv $(OUT)/bench/scaling.csv
+	$(PY) figures/bench_scaling.py $(OUT)/bench/scaling.csv $(OUT)/bench/scaling.png
 
 # 'repro' builds the tools, then a sub-make rebuilds only the figures whose
 # driver binary, data or script changed (one rule per figure below).
