@@ -7,26 +7,14 @@
 #include "dda/joint_sets.hpp"
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "state_hash.hpp"
 
 using namespace dda;
+using dda::test::state_hash;
 
 namespace {
 std::vector<Vec2> rect(double x0, double y0, double w, double h) {
   return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
-// FNV-1a over the bytes of every block's vertices and velocities.
-std::uint64_t state_hash(const Simulation& sim) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const void* p, std::size_t n) {
-    const unsigned char* c = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
-  };
-  for (int i = 0; i < sim.block_count(); ++i) {
-    const Polygon& p = sim.polygon(i);
-    mix(p.v.data(), sizeof(Vec2) * static_cast<std::size_t>(p.count));
-    mix(sim.velocity(i).data(), sizeof(double) * 6);
-  }
-  return h;
 }
 }  // namespace
 
