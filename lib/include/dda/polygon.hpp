@@ -31,9 +31,9 @@ inline constexpr double kMinEdgeRelative = 1e-9;
 // A convex polygon: CCW vertices and outward unit normals; n[i] is the normal
 // of edge i, which runs from v[i] to v[(i+1) % count].
 struct Polygon {
+  int count = 0;  // first: it shares a cache line with the first vertices
   std::array<Vec2, kMaxVertices> v{};
   std::array<Vec2, kMaxVertices> n{};
-  int count = 0;
 
   Vec2 vertex(int i) const { return v[static_cast<std::size_t>(i)]; }
   Vec2 normal(int i) const { return n[static_cast<std::size_t>(i)]; }
