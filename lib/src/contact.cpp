@@ -190,18 +190,16 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
 }
 
 void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol) {
-  Polygon out;
+  std::array<double, kMaxVertices> d;  // left uninitialised: the first poly.count are set
   for (int i = 0; i < poly.count; ++i) {
-    const Vec2 p = poly.vertex(i), q = poly.vertex(poly.next(i));
-    double dp = dot(normal, p) - offset, dq = dot(normal, q) - offset;
-    if (std::fabs(dp) <= tol) dp = 0.0;
-    if (std::fabs(dq) <= tol) dq = 0.0;
-    if (dp <= 0.0 && out.count < kMaxVertices) out.v[out.count++] = p;
-    if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && out.count < kMaxVertices)
-      out.v[out.count++] = lerp(p, q, dp / (dp - dq));
+    double di = dot(normal, poly.vertex(i)) - offset;
+    if (std::fabs(di) <= tol) di = 0.0;
+    d[static_cast<std::size_t>(i)] = di;
   }
-  out.count = out.count < 3 ? 0 : out.count;
-  poly = out;
+  std::array<Vec2, kMaxVertices> out;
+  const int n = clip_ring(poly.v.data(), d.data(), poly.count, out.data());
+  poly.count = n < 3 ? 0 : n;
+  for (int i = 0; i < poly.count; ++i) poly.v[static_cast<std::size_t>(i)] = out[static_cast<std::size_t>(i)];
 }
 
 double potential_integral(const PotentialSide& side, const Polygon& region, double tol) {

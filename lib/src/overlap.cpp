@@ -125,14 +125,7 @@ void intersection_polygon(const Polygon& contact, const Polygon& target, double 
     }
     if (!cuts) continue;
     Polygon& out = buf[next_buf];
-    out.count = 0;
-    for (int i = 0; i < in_count; ++i) {
-      const int k = i + 1 == in_count ? 0 : i + 1;
-      const double dp = dist[static_cast<std::size_t>(i)], dq = dist[static_cast<std::size_t>(k)];
-      if (dp <= 0.0 && out.count < kMaxVertices) out.v[static_cast<std::size_t>(out.count++)] = in[i];
-      if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && out.count < kMaxVertices)
-        out.v[static_cast<std::size_t>(out.count++)] = lerp(in[i], in[k], dp / (dp - dq));
-    }
+    out.count = clip_ring(in, dist.data(), in_count, out.v.data());
     if (out.count < 3) out.count = 0;
     in = out.v.data();
     in_count = out.count;

@@ -227,25 +227,31 @@ void clean_polygon(Polygon& poly, double tol) {
   update_normals(poly);
 }
 
+int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out) {
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    const int k = i + 1 == n ? 0 : i + 1;
+    const double dp = dist[i], dq = dist[k];
+    if (dp <= 0.0 && count < kMaxVertices) out[count++] = in[i];
+    if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && count < kMaxVertices)
+      out[count++] = lerp(in[i], in[k], dp / (dp - dq));
+  }
+  return count;
+}
+
 void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above, double tol) {
   if (tol < 0.0) tol = geometric_tolerance(poly);
-  below.count = 0;
-  above.count = 0;
+  // Signed distances snapped within tol; `above` is the same clip with the
+  // signs flipped (the crossing points come out bit-identical: negation is exact).
+  std::array<double, kMaxVertices> d{}, flipped{};
   for (int i = 0; i < poly.count; ++i) {
-    const Vec2 a = poly.vertex(i);
-    const Vec2 b = poly.vertex(poly.next(i));
-    double da = dot(normal, a - point);
-    double db = dot(normal, b - point);
-    if (std::fabs(da) <= tol) da = 0.0;
-    if (std::fabs(db) <= tol) db = 0.0;
-    if (da <= 0.0 && below.count < kMaxVertices) below.v[static_cast<std::size_t>(below.count++)] = a;
-    if (da >= 0.0 && above.count < kMaxVertices) above.v[static_cast<std::size_t>(above.count++)] = a;
-    if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) {
-      const Vec2 x = lerp(a, b, da / (da - db));
-      if (below.count < kMaxVertices) below.v[static_cast<std::size_t>(below.count++)] = x;
-      if (above.count < kMaxVertices) above.v[static_cast<std::size_t>(above.count++)] = x;
-    }
+    double di = dot(normal, poly.vertex(i) - point);
+    if (std::fabs(di) <= tol) di = 0.0;
+    d[static_cast<std::size_t>(i)] = di;
+    flipped[static_cast<std::size_t>(i)] = -di;
   }
+  below.count = clip_ring(poly.v.data(), d.data(), poly.count, below.v.data());
+  above.count = clip_ring(poly.v.data(), flipped.data(), poly.count, above.v.data());
   clean_polygon(below, tol);
   clean_polygon(above, tol);
 }

@@ -176,10 +176,10 @@ CaseResult run_case(int k, double friction, double duration, int threads, const 
   double last_report = 0.0;
   // Steps between outputs run as one Simulation::advance (one thread team).
   auto next_output = [&](long long s) {
-    long long n = std::min({steps, (s / series_every + 1) * series_every, (s / frame_every + 1) * frame_every});
+    long long next = std::min({steps, (s / series_every + 1) * series_every, (s / frame_every + 1) * frame_every});
     for (long long v : vtk_steps)
-      if (v > s) n = std::min(n, v);
-    return n;
+      if (v > s) next = std::min(next, v);
+    return next;
   };
   for (long long s = 0; s < steps;) {
     const long long to = next_output(s);

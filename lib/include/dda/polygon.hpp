@@ -114,6 +114,13 @@ PointLocation locate_point(const Polygon& poly, Vec2 p, double tol = -1.0);
 void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above,
                    double tol = -1.0);
 
+// The one clipping step shared by the cutting routines (intersection_polygon,
+// split_polygon, clip_half_plane): keeps the part of the ring in[0..n) where
+// dist <= 0 (signed distances to a line, already snapped to 0 within the
+// caller's tolerance), in order, with the points where an edge crosses the
+// line. Writes at most kMaxVertices points to out; returns how many.
+int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out);
+
 // Removes repeated vertices (closer than tol) and vertices whose turn is
 // within tol of straight; recomputes normals; empties a polygon left with
 // fewer than 3 vertices or no area. Used on clipper and Minkowski output.
