@@ -112,7 +112,7 @@ struct StabilityGuards {
 
 struct Scene {
   std::string name;
-  std::vector<Material> materials{Material{}};
+  std::vector<Material> materials = std::vector<Material>(1);  // one default material
   std::vector<BlockSpec> blocks;
   std::vector<BoundarySegment> boundaries;
   ContactParams contact;
