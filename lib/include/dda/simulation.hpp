@@ -138,10 +138,9 @@ class Simulation {
   void update_block_geometry(int i);
   void compute_forces();
   void body_force(int i);
-  void contact_forces();  // the next four phases in order, serially (construction)
+  void contact_forces();
   void find_candidate_pairs();
   void take_over_history();
-  void pair_forces();
   void scatter_pair_forces();
   void run_steps(std::int64_t count);
   // One candidate pair's contact, computed independently of all others.
