@@ -459,13 +459,13 @@ void Simulation::contact_forces() {
     find_candidate_pairs();
     take_over_history();
   }
-  // 2. Pair forces, independent of each other. Split statically in two
-  //    contiguous halves of the candidate list: a dynamic schedule's shared
-  //    chunk counter costs a cross-core round trip per chunk, which on a
-  //    virtual machine with slow core-to-core latency cost more than the
-  //    uneven pair costs it evens out (measured: 2 threads 0.9x of 1 thread
-  //    with dynamic chunks of 16, 1.16x static). On the collapse the halves
-  //    stayed balanced (0.338 and 0.344 s of pair work per thread): touching
+  // 2. Pair forces, independent of each other. Split statically, one
+  //    contiguous share of the candidate list per thread: a dynamic
+  //    schedule's shared chunk counter costs a cross-core round trip per
+  //    chunk, which on a virtual machine with slow core-to-core latency cost
+  //    more than the uneven pair costs it evens out (measured: 2 threads 0.9x
+  //    of 1 thread with dynamic chunks of 16, 1.16x static). On the collapse
+  //    the two shares stayed balanced (0.338 and 0.344 s of pair work per thread): touching
   //    and separate candidates are mixed along the sweep.
   const long n = static_cast<long>(candidates_.size());
   DDA_OMP(omp for schedule(static))
@@ -479,8 +479,8 @@ void Simulation::contact_forces() {
 }
 
 void Simulation::take_over_history() {
-  // 1. Each candidate takes over its pair's history (friction only): both
-  //    lists are sorted by key, so one merge pass.
+  // Each candidate takes over its pair's history (friction only): both
+  // lists are sorted by key, so one merge pass.
   const std::size_t nc = candidates_.size();
   results_.resize(nc);
   if (friction_) {
@@ -502,8 +502,8 @@ void Simulation::take_over_history() {
 
 void Simulation::scatter_pair_forces() {
   const std::size_t nc = candidates_.size();
-  // 3. Scatter in candidate order: the sums are the same bits for any
-  //    thread count. A pair that does not touch forgets its history.
+  // Scatter in candidate order: the sums are the same bits for any thread
+  // count. A pair that does not touch forgets its history.
   contact_info_.clear();
   next_history_.clear();
   for (std::size_t k = 0; k < nc; ++k) {
