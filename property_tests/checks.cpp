@@ -139,6 +139,38 @@ std::string check_entrance(const Points& a, const Points& b, Vec2 a0) {
   return "";
 }
 
+// overlap_and_intersection(CP, TP): overlap_state's verdict, and when
+// overlapping intersection_polygon's vertices bit for bit; every IP edge lies
+// on its source edge's line (both end points within kSandwich tol of it) and
+// carries that edge's normal; an edge merged from two sources (unknown) has a
+// unit normal.
+std::string check_fused(const Polygon& pc, const Polygon& pt, double tol) {
+  Polygon ip;
+  std::array<dda::IpEdge, dda::kMaxVertices> src;
+  const dda::OverlapState s = dda::overlap_and_intersection(pc, pt, tol, ip, src.data());
+  if (s != dda::overlap_state(pc, pt, tol)) return "overlap_and_intersection: verdict differs from overlap_state";
+  if (s != dda::OverlapState::kOverlapping) return ip.count == 0 ? "" : "overlap_and_intersection: IP not emptied";
+  const Polygon ref = dda::intersection_polygon(pc, pt, tol);
+  if (ip.count != ref.count) return format("overlap_and_intersection: %d IP vertices, intersection_polygon %d", ip.count, ref.count);
+  for (int i = 0; i < ip.count; ++i) {
+    if (ip.vertex(i) != ref.vertex(i)) return format("overlap_and_intersection: IP vertex %d differs", i);
+    const dda::IpEdge e = src[static_cast<std::size_t>(i)];
+    if (!e.known()) {  // merged from two nearly collinear edges: normal from its end points
+      if (!(std::fabs(length(ip.normal(i)) - 1.0) <= tol::kUnitNormal)) return format("IP edge %d: normal not unit", i);
+      continue;
+    }
+    const Polygon& owner = e.on_contact ? pc : pt;
+    if (e.edge < 0 || e.edge >= owner.count) return format("IP edge %d: source edge %d out of range", i, e.edge);
+    const Vec2 n = owner.normal(e.edge), v = owner.vertex(e.edge);
+    if (ip.normal(i) != n) return format("IP edge %d: normal is not its source edge's", i);
+    const double d0 = dot(n, ip.vertex(i) - v), d1 = dot(n, ip.vertex(ip.next(i)) - v);
+    if (!(std::fabs(d0) <= tol::kSandwich * tol && std::fabs(d1) <= tol::kSandwich * tol))
+      return format("IP edge %d is %.3g / %.3g off the line of its source (%s edge %d), tol %.3g", i, d0, d1,
+                    e.on_contact ? "contact" : "target", e.edge, tol);
+  }
+  return "";
+}
+
 std::string check_intersection(const Points& cp, const Points& tp) {
   const Polygon pc = to_polygon(cp), pt = to_polygon(tp);
   const double tol = dda::pair_tolerance(pc, pt);
@@ -150,6 +182,8 @@ std::string check_intersection(const Points& cp, const Points& tp) {
   const double area_tol = tol::kClipArea * static_cast<double>(cp.size() + tp.size()) * tol * diam;
   std::string f = check_clip_result("IP(CP,TP)", k1, r, tol, area_tol);
   if (f.empty()) f = check_clip_result("IP(TP,CP)", k2, r, tol, area_tol);
+  if (f.empty()) f = check_fused(pc, pt, tol);
+  if (f.empty()) f = check_fused(pt, pc, tol);
   if (!f.empty()) return f;
   if (!k1.empty() && !k2.empty() && !r.inner_empty()) {
     const double h = hausdorff(k1, k2), bound = r.hausdorff_bound() + tol::kMeasureSlack * tol;

@@ -22,6 +22,10 @@
 //                      turns >= 1e-9) reject true intersections, e.g. of a
 //                      polygon and its copy turned by 1e-12 rad (turns of
 //                      1e-12) -- about 3% of the non-empty IPs generated.
+//                      overlap_and_intersection, both orders: overlap_state's
+//                      verdict and intersection_polygon's vertices bit for
+//                      bit; each IP edge on its source edge's line (within
+//                      kSandwich tol) with that edge's normal.
 //  check_motion        IP of rigidly moved inputs = moved IP (Hausdorff).
 //  check_moments       area_moments / area vs exact moments of the same vertices.
 //  check_split         split_polygon: areas sum to the whole; each part is

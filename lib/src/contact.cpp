@@ -10,29 +10,41 @@ namespace {
 
 constexpr double kSixth = 1.0 / 6.0;  // a multiplication instead of a division per segment
 
-// Demarcation points on one IP edge, as parameters t in [0, 1].
-struct Breaks {
-  std::array<double, 4 * kMaxVertices + 8> t;  // left uninitialised: filled by add()
+// Crossings of one IP edge with rays or envelope kinks: parameters strictly
+// inside (0, 1) other than 1/2 (those points are demarcation points anyway).
+struct Crossings {
+  std::array<double, 4 * kMaxVertices> t;  // left uninitialised: count says how many are set
   int count = 0;
   void add(double x) {
-    if (count < static_cast<int>(t.size()) && x >= 0.0 && x <= 1.0) t[count++] = x;
+    if (count < static_cast<int>(t.size()) && x > 0.0 && x < 1.0 && x != 0.5) t[static_cast<std::size_t>(count++)] = x;
   }
-  // Insertion sort: a handful of points, mostly in order already.
+  // Insertion sort: a handful of points.
   void sort() {
     for (int i = 1; i < count; ++i) {
-      const double x = t[i];
+      const double x = t[static_cast<std::size_t>(i)];
       int j = i;
-      for (; j > 0 && t[j - 1] > x; --j) t[j] = t[j - 1];
-      t[j] = x;
+      for (; j > 0 && t[static_cast<std::size_t>(j - 1)] > x; --j) t[static_cast<std::size_t>(j)] = t[static_cast<std::size_t>(j - 1)];
+      t[static_cast<std::size_t>(j)] = x;
     }
   }
+};
+
+// Demarcation points of one IP edge in order, each with the net traction there.
+struct Breaks {
+  struct Break {
+    double t, f;
+  };
+  std::array<Break, 4 * kMaxVertices + 3> b;  // left uninitialised: count says how many are set
+  int count = 0;
+  void push(double t, double f) { b[static_cast<std::size_t>(count++)] = {t, f}; }
 };
 
 // Kinks of the lower envelope of d_i(t) = c_i + s_i t on (0, 1), where
 // d_i is the distance of a + t (b - a) inside edge line i of `poly`. Walks
 // the envelope from t = 0: at each step the next kink is the earliest
 // crossing with a line that falls faster than the current one.
-void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Breaks& out) {
+template <class Add>
+void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Add&& add) {
   const Vec2 ab = b - a;
   std::array<double, kMaxVertices> c{}, s{};
   for (int i = 0; i < poly.count; ++i) {
@@ -55,7 +67,7 @@ void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Breaks& out) {
       }
     }
     if (next < 0) break;
-    out.add(tn);
+    add(tn);
     t = tn;
     cur = next;
   }
@@ -66,14 +78,10 @@ struct RaySpan {
   int count = 0;
 };
 
-void add_bisector_breaks(RaySpan rays, Vec2 a, Vec2 b, Breaks& out) {
-  for (int r = 0; r < rays.count; ++r) out.add(segment_ray_crossing(a, b, rays.ray[r]));
-}
-
 }  // namespace
 
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
-                                 Integration rule, double tol) {
+                                 Integration rule, double tol, const IpEdge* source) {
   NormalForce out;
   if (ip.count < 3) return out;
   const AreaMoments am = area_centroid(ip);
@@ -101,6 +109,23 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
   // ends one edge and starts the next): bit k of known_* says dv_*[k] is set.
   std::array<double, kMaxVertices> dv_cp, dv_tp;  // left uninitialised: guarded by the masks
   std::uint32_t known_cp = 0, known_tp = 0;
+  if (source) {
+    // A vertex where an edge on CP's boundary starts or ends is on that
+    // boundary: d_exit = 0 there (likewise for TP).
+    // Edges of unknown source say nothing about their end points.
+    for (int k = 0; k < ip.count; ++k) {
+      const IpEdge in = source[ip.prev(k)], out_edge = source[k];
+      const std::uint32_t bit = std::uint32_t{1} << k;
+      if ((in.known() && in.on_contact) || (out_edge.known() && out_edge.on_contact)) {
+        dv_cp[static_cast<std::size_t>(k)] = 0.0;
+        known_cp |= bit;
+      }
+      if ((in.known() && !in.on_contact) || (out_edge.known() && !out_edge.on_contact)) {
+        dv_tp[static_cast<std::size_t>(k)] = 0.0;
+        known_tp |= bit;
+      }
+    }
+  }
   auto vertex_d = [&ip](const PotentialSide& side, std::array<double, kMaxVertices>& dv, std::uint32_t& known, int k) {
     const std::uint32_t bit = std::uint32_t{1} << k;
     if (!(known & bit)) {
@@ -109,6 +134,14 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     }
     return dv[static_cast<std::size_t>(k)];
   };
+  // Net normal traction phi_CP - phi_TP (Eq. 11) from the two exit
+  // distances, each side only where its potential is not zero on the edge.
+  auto traction = [&](bool use_cp, double d_cp, bool use_tp, double d_tp) {
+    double f = 0.0;
+    if (use_cp) f += d_cp > 0.0 ? cp.kn_over_h * d_cp : 0.0;
+    if (use_tp) f -= d_tp > 0.0 ? tp.kn_over_h * d_tp : 0.0;
+    return f;
+  };
   for (int e = 0; e < ip.count; ++e) {
     const int e1 = ip.next(e);
     const Vec2 a = ip.vertex(e), b = ip.vertex(e1);
@@ -116,56 +149,73 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     const double len = length(b - a);
     if (len <= tol) continue;
     out.ip_perimeter += len;
-    // Demarcation points (Sect. 3.2.3 steps 1-4).
-    Breaks br;
-    br.add(0.0);
-    br.add(0.5);
-    br.add(1.0);
     const Vec2 mid = lerp(a, b, 0.5);
-    // An IP edge on the boundary of a polygon carries zero potential of it.
-    const double mid_cp = exit_distance(*cp.poly, mid), mid_tp = exit_distance(*tp.poly, mid);
-    const bool on_cp = mid_cp <= tol;
-    const bool on_tp = mid_tp <= tol;
-    if (rule == Integration::kPaperBisector) {
-      if (!on_cp) add_bisector_breaks(rays_cp, a, b, br);
-      if (!on_tp) add_bisector_breaks(rays_tp, a, b, br);
-    } else {
-      if (!on_cp) add_envelope_breaks(*cp.poly, a, b, br);
-      if (!on_tp) add_envelope_breaks(*tp.poly, a, b, br);
+    // An IP edge on the boundary of a polygon carries zero potential of it:
+    // known from its source, else found from the midpoint's distance.
+    const bool known = source && source[e].known();
+    const bool src_cp = known && source[e].on_contact, src_tp = known && !source[e].on_contact;
+    const double mid_cp = src_cp ? 0.0 : exit_distance(*cp.poly, mid);
+    const double mid_tp = src_tp ? 0.0 : exit_distance(*tp.poly, mid);
+    const bool use_cp = !(src_cp || mid_cp <= tol);
+    const bool use_tp = !(src_tp || mid_tp <= tol);
+    if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
+      out.segments += 2;
+      continue;
     }
-    br.sort();
-    // Net normal traction phi_CP - phi_TP (Eq. 11) at parameter t; the
-    // end points and the midpoint reuse the distances found above.
-    auto traction = [&](double t, Vec2 p) {
-      double f = 0.0;
-      if (!on_cp) {
-        const double d = t == 0.0 ? vertex_d(cp, dv_cp, known_cp, e)
-                         : t == 1.0 ? vertex_d(cp, dv_cp, known_cp, e1)
-                         : t == 0.5 ? mid_cp
-                                    : exit_distance(*cp.poly, p);
-        f += d > 0.0 ? cp.kn_over_h * d : 0.0;
+    // Demarcation points (Sect. 3.2.3 steps 1-4): the end points, the
+    // midpoint, and the crossings strictly inside the edge (a crossing at
+    // 0, 1/2 or 1 adds nothing), sorted, then merged with the three.
+    Crossings cr;
+    if (rule == Integration::kPaperBisector) {
+      // Edge a-b meets ray r's line where the side cross(p - o, d) changes
+      // sign, at t = s_a / (s_a - s_b); a crossing behind the origin is not on the ray.
+      auto add_crossings = [&](RaySpan rays) {
+        for (int r = 0; r < rays.count; ++r) {
+          const Ray& ray = rays.ray[r];
+          const double sa = cross(a - ray.origin, ray.dir), sb = cross(b - ray.origin, ray.dir);
+          if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;  // no sign change
+          const double t = sa / (sa - sb);
+          if (dot(lerp(a, b, t) - ray.origin, ray.dir) >= 0.0) cr.add(t);
+        }
+      };
+      if (use_cp) add_crossings(rays_cp);
+      if (use_tp) add_crossings(rays_tp);
+    } else {
+      auto add = [&cr](double t) { cr.add(t); };
+      if (use_cp) add_envelope_breaks(*cp.poly, a, b, add);
+      if (use_tp) add_envelope_breaks(*tp.poly, a, b, add);
+    }
+    cr.sort();
+    // Tractions: the end points and the midpoint reuse the distances found above.
+    Breaks br;
+    auto push_crossings = [&](int& i, double below) {
+      for (; i < cr.count && cr.t[static_cast<std::size_t>(i)] < below; ++i) {
+        const double t = cr.t[static_cast<std::size_t>(i)];
+        if (t == br.b[static_cast<std::size_t>(br.count - 1)].t) continue;  // two rays, one point
+        const Vec2 p = lerp(a, b, t);
+        br.push(t, traction(use_cp, use_cp ? exit_distance(*cp.poly, p) : 0.0, use_tp,
+                            use_tp ? exit_distance(*tp.poly, p) : 0.0));
       }
-      if (!on_tp) {
-        const double d = t == 0.0 ? vertex_d(tp, dv_tp, known_tp, e)
-                         : t == 1.0 ? vertex_d(tp, dv_tp, known_tp, e1)
-                         : t == 0.5 ? mid_tp
-                                    : exit_distance(*tp.poly, p);
-        f -= d > 0.0 ? tp.kn_over_h * d : 0.0;
-      }
-      return f;
     };
+    int next = 0;
+    br.push(0.0, traction(use_cp, use_cp ? vertex_d(cp, dv_cp, known_cp, e) : 0.0, use_tp,
+                          use_tp ? vertex_d(tp, dv_tp, known_tp, e) : 0.0));
+    push_crossings(next, 0.5);
+    br.push(0.5, traction(use_cp, mid_cp, use_tp, mid_tp));
+    push_crossings(next, 1.0);
+    br.push(1.0, traction(use_cp, use_cp ? vertex_d(cp, dv_cp, known_cp, e1) : 0.0, use_tp,
+                          use_tp ? vertex_d(tp, dv_tp, known_tp, e1) : 0.0));
     // Eqs. 16-17 on each segment. The segment force L (fa + fb) / 2 acts at
     // pk of Eq. 17; its moment about c is taken in the equivalent form
     // L [(fa + fb) / 2 (pa - c) + (fa + 2 fb) / 6 (pb - pa)] x n, which is
     // Eq. 17 times the force but stays finite when fa + fb = 0.
-    double t0 = br.t[0];
+    double t0 = br.b[0].t;
     Vec2 pa = lerp(a, b, t0);
-    double fa = traction(t0, pa);
+    double fa = br.b[0].f;
     for (int k = 1; k < br.count; ++k) {
-      const double t1 = br.t[k];
-      if (t1 - t0 <= 0.0) continue;
+      const double t1 = br.b[k].t;
       const Vec2 pb = lerp(a, b, t1);
-      const double fb = traction(t1, pb);
+      const double fb = br.b[k].f;
       const double l = len * (t1 - t0);
       const double fs = 0.5 * l * (fa + fb);
       force += fs * n;

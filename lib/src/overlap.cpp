@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace dda {
 
@@ -70,17 +71,26 @@ EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0) {
   return e;
 }
 
-OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
-  if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
-  if (tol < 0.0) tol = pair_tolerance(a, b);
-  // a0 in E(A, B) (Table 2), evaluated on E's edge lines without building E:
-  // every edge of E has the outward normal N of an edge of B or of -A and
-  // passes through its support point, so the signed distance of a0 to it is
-  //   edge j of B  (N = n_j):  min_i n_j . a_i - n_j . b_j
-  //   edge i of -A (N = -n_i): min_j n_i . b_j - n_i . a_i
-  // (a0 cancels: the verdict does not depend on the reference point). a0 is
-  // inside E iff all are negative: the same half-planes entrance_block()
-  // builds, in O(n m) with no construction; d = their maximum.
+namespace {
+
+// The overlap test on E(A, B)'s edge lines (Table 2), shared by
+// overlap_state and overlap_and_intersection. a0 in E(A, B), evaluated on
+// E's edge lines without building E: every edge of E has the outward normal
+// N of an edge of B or of -A and passes through its support point, so the
+// signed distance of a0 to it is
+//   edge j of B  (N = n_j):  min_i n_j . a_i - n_j . b_j
+//   edge i of -A (N = -n_i): min_j n_i . b_j - n_i . a_i
+// (a0 cancels: the verdict does not depend on the reference point). a0 is
+// inside E iff all are negative: the same half-planes entrance_block()
+// builds, in O(n m) with no construction; d = their maximum.
+// kCuts: also sets bit i of *cuts when the line of A's edge i may cut B,
+// i.e. some vertex of B lies more than tol / 2 outside it (max_j n_i . b_j -
+// n_i . a_i > tol / 2). A line with no such vertex leaves B, and any part of
+// B, unchanged in intersection_polygon: there every distance is within tol
+// (the two ways of rounding differ by a few eps |x|, far below tol / 2)
+// and snapped to 0, so the line does not cut.
+template <bool kCuts>
+OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts) {
   double d = -DBL_MAX;
   for (int j = 0; j < b.count; ++j) {
     const Vec2 n = b.normal(j);
@@ -89,31 +99,52 @@ OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
     d = std::max(d, lo - dot(n, b.vertex(j)));
     if (d > tol) return OverlapState::kSeparate;
   }
+  std::uint32_t mask = 0;
   for (int i = 0; i < a.count; ++i) {
     const Vec2 n = a.normal(i);
-    double lo = DBL_MAX;
-    for (int j = 0; j < b.count; ++j) lo = std::min(lo, dot(n, b.vertex(j)));
-    d = std::max(d, lo - dot(n, a.vertex(i)));
+    double lo = DBL_MAX, hi = -DBL_MAX;
+    for (int j = 0; j < b.count; ++j) {
+      const double x = dot(n, b.vertex(j));
+      lo = std::min(lo, x);
+      if (kCuts) hi = std::max(hi, x);
+    }
+    const double ai = dot(n, a.vertex(i));
+    d = std::max(d, lo - ai);
     if (d > tol) return OverlapState::kSeparate;
+    if (kCuts && hi - ai > 0.5 * tol) mask |= std::uint32_t{1} << i;
   }
+  if (kCuts) *cuts = mask;
   return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
 }
 
-void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& result) {
-  if (tol < 0.0) tol = pair_tolerance(contact, target);
-  // Two buffers, ping-ponged: each cut of a convex polygon by a half-plane
-  // adds at most one vertex, so n + m fits in kMaxVertices. Thread-local
-  // scratch: a Polygon is 1 KB that would otherwise be zeroed on every call.
-  // The first input is the target itself, and a line that leaves every
-  // vertex inside (the usual case: a shallow contact is cut by one or two
-  // of the contact polygon's edge lines) costs one distance per vertex and
-  // no copy.
-  static thread_local Polygon buf[2];
+// Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.
+constexpr int contact_label(int c) { return -1 - c; }
+
+// The target cut by the lines of the contact's edges whose bit is set in
+// `lines` (Table 3), with edge labels; normals taken from the labelled
+// source edges. Two buffers, ping-ponged: each cut of a convex polygon by a
+// half-plane adds at most one vertex, so n + m fits in kMaxVertices.
+// Thread-local scratch: a Polygon is 1 KB that would otherwise be zeroed on
+// every call. The first input is the target itself, and a line that leaves
+// every vertex inside (the usual case: a shallow contact is cut by one or
+// two of the contact polygon's edge lines) costs one distance per vertex
+// and no copy.
+void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
+                 IpEdge* source) {
+  struct Ring {
+    std::array<Vec2, kMaxVertices> v;    // left uninitialised: count says how many are set
+    std::array<int, kMaxVertices> label;
+  };
+  static thread_local Ring buf[2];
   static thread_local std::array<double, kMaxVertices> dist;
+  static thread_local std::array<int, kMaxVertices> target_label;
+  for (int j = 0; j < target.count; ++j) target_label[static_cast<std::size_t>(j)] = j;
   const Vec2* in = target.v.data();
+  const int* in_label = target_label.data();
   int in_count = target.count;
   int next_buf = 0;
   for (int c = 0; c < contact.count && in_count >= 3; ++c) {
+    if (!(lines >> c & 1u)) continue;
     const Vec2 nc = contact.normal(c);
     const Vec2 pc = contact.vertex(c);
     bool cuts = false;
@@ -124,16 +155,57 @@ void intersection_polygon(const Polygon& contact, const Polygon& target, double 
       cuts = cuts || d > 0.0;
     }
     if (!cuts) continue;
-    Polygon& out = buf[next_buf];
-    out.count = clip_ring(in, dist.data(), in_count, out.v.data());
-    if (out.count < 3) out.count = 0;
+    Ring& out = buf[next_buf];
+    in_count = clip_ring(in, dist.data(), in_count, out.v.data(), in_label, contact_label(c), out.label.data());
+    if (in_count < 3) in_count = 0;
     in = out.v.data();
-    in_count = out.count;
+    in_label = out.label.data();
     next_buf = 1 - next_buf;
   }
-  result.count = in_count;
-  for (int i = 0; i < in_count; ++i) result.v[static_cast<std::size_t>(i)] = in[i];
-  clean_polygon(result, tol);
+  std::array<int, kMaxVertices> label;
+  for (int i = 0; i < in_count; ++i) {
+    result.v[static_cast<std::size_t>(i)] = in[i];
+    label[static_cast<std::size_t>(i)] = in_label[i];
+  }
+  result.count = clean_ring(result.v.data(), in_count, tol, label.data());
+  for (int i = 0; i < result.count; ++i) {
+    const int l = label[static_cast<std::size_t>(i)];
+    if (l == kMixedEdgeLabel) {
+      result.n[static_cast<std::size_t>(i)] = normalized(perp_right(result.edge(i)));
+      if (source) source[i] = IpEdge{};
+      continue;
+    }
+    const bool on_contact = l < 0;
+    const int e = on_contact ? contact_label(l) : l;
+    result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
+    if (source) source[i] = {on_contact, e};
+  }
+}
+
+constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
+
+}  // namespace
+
+OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
+  if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
+  if (tol < 0.0) tol = pair_tolerance(a, b);
+  return separating_axes<false>(a, b, tol, nullptr);
+}
+
+OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
+                                      IpEdge* source) {
+  ip.count = 0;
+  if (contact.count < 3 || target.count < 3) return OverlapState::kSeparate;
+  if (tol < 0.0) tol = pair_tolerance(contact, target);
+  std::uint32_t lines = 0;
+  const OverlapState state = separating_axes<true>(contact, target, tol, &lines);
+  if (state == OverlapState::kOverlapping) clip_target(contact, target, tol, lines, ip, source);
+  return state;
+}
+
+void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& result) {
+  if (tol < 0.0) tol = pair_tolerance(contact, target);
+  clip_target(contact, target, tol, kAllLines, result, nullptr);
 }
 
 Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol) {

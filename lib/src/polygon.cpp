@@ -195,16 +195,17 @@ PointLocation locate_point(const Polygon& poly, Vec2 p, double tol) {
   return PointLocation::kOnBoundary;
 }
 
-void clean_polygon(Polygon& poly, double tol) {
+int clean_ring(Vec2* v, int count, double tol, int* label) {
   // Squared comparisons: no square root per vertex.
   const double tol2 = tol * tol;
   bool changed = true;
-  while (changed && poly.count >= 3) {
+  while (changed && count >= 3) {
     changed = false;
-    for (int i = 0; i < poly.count && poly.count >= 3; ++i) {
-      const Vec2 a = poly.vertex(poly.prev(i));
-      const Vec2 b = poly.vertex(i);
-      const Vec2 c = poly.vertex(poly.next(i));
+    for (int i = 0; i < count && count >= 3; ++i) {
+      const int ip = i == 0 ? count - 1 : i - 1;
+      const Vec2 a = v[ip];
+      const Vec2 b = v[i];
+      const Vec2 c = v[i + 1 == count ? 0 : i + 1];
       const Vec2 ac = c - a;
       const double lac2 = length_squared(ac);
       // Repeated vertex, or b within tol of the chord a-c (straight or spike):
@@ -213,28 +214,46 @@ void clean_polygon(Polygon& poly, double tol) {
       const double h = cross(ac, b - a);
       const bool straight = lac2 > tol2 ? h * h <= tol2 * lac2 : true;
       if (repeated || straight) {
-        for (int j = i; j + 1 < poly.count; ++j) poly.v[static_cast<std::size_t>(j)] = poly.v[static_cast<std::size_t>(j + 1)];
-        --poly.count;
+        // The merged edge a-c: along b-c when a-b was a repeated vertex; at a
+        // straight turn, on both lines within tol: mixed unless they agree.
+        if (label) label[ip] = repeated ? label[i] : label[ip] == label[i] ? label[i] : kMixedEdgeLabel;
+        for (int j = i; j + 1 < count; ++j) {
+          v[j] = v[j + 1];
+          if (label) label[j] = label[j + 1];
+        }
+        --count;
         changed = true;
         --i;
       }
     }
   }
-  if (poly.count < 3) {
-    poly.count = 0;
-    return;
-  }
+  return count < 3 ? 0 : count;
+}
+
+void clean_polygon(Polygon& poly, double tol) {
+  poly.count = clean_ring(poly.v.data(), poly.count, tol);
   update_normals(poly);
 }
 
-int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out) {
+int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out, const int* in_label, int line_label,
+              int* out_label) {
+  // Per input edge p -> q: p is kept when dp <= 0, and a strict sign change
+  // adds the crossing. Labels: an edge leaving a kept p runs along the cut
+  // line when p is on it and q is outside, else along p's own edge; the
+  // crossing into the outside starts the edge along the cut line, the
+  // crossing back inside continues the rest of edge p -> q.
   int count = 0;
   for (int i = 0; i < n; ++i) {
     const int k = i + 1 == n ? 0 : i + 1;
     const double dp = dist[i], dq = dist[k];
-    if (dp <= 0.0 && count < kMaxVertices) out[count++] = in[i];
-    if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && count < kMaxVertices)
+    if (dp <= 0.0 && count < kMaxVertices) {
+      if (out_label) out_label[count] = dp == 0.0 && dq > 0.0 ? line_label : in_label[i];
+      out[count++] = in[i];
+    }
+    if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && count < kMaxVertices) {
+      if (out_label) out_label[count] = dp < 0.0 ? line_label : in_label[i];
       out[count++] = lerp(in[i], in[k], dp / (dp - dq));
+    }
   }
   return count;
 }

@@ -524,16 +524,17 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
   const Polygon& a = poly_[cp];
   const Polygon& b = poly_[tp];
   const double tol = std::max(tol_[cp], tol_[tp]);
-  if (overlap_state(a, b, tol) != OverlapState::kOverlapping) return false;  // Sect. 3.1.2
+  // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
   static thread_local Polygon ip;
-  intersection_polygon(a, b, tol, ip);  // Sect. 3.1.3
+  static thread_local std::array<IpEdge, kMaxVertices> source;
+  if (overlap_and_intersection(a, b, tol, ip, source.data()) != OverlapState::kOverlapping) return false;
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
   const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,
                              ray_store_.data() + ray_offset_[cp], ray_count_[cp]};
   const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays,
                              ray_store_.data() + ray_offset_[tp], ray_count_[tp]};
-  const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol);  // Eqs. 11-20
+  const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol, source.data());  // Eqs. 11-20
   if (!nf.valid) return false;
 
   ContactInfo& info = r.info;

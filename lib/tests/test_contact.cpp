@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "dda/contact.hpp"
 
@@ -115,4 +117,61 @@ TEST_CASE("contact energy is the potential of the force: -dE/dx = f", "[contact]
   const NormalForce nf = force(cp0, tp, Integration::kExactEnvelope);
   // Central difference with h = 1e-6 m: truncation ~h^2, round-off ~eps E / h.
   CHECK(length(grad + nf.force) < 1e-5 * length(nf.force));
+}
+
+TEST_CASE("edge sources from the fused overlap call change the force only by round-off", "[contact]") {
+  // With sources the potentials that vanish on an IP edge or vertex are set
+  // to zero, not evaluated: on random overlapping pairs (shallow and deep,
+  // near-parallel faces included) force, loading point and segment count
+  // match the plain call to round-off of the force scale.
+  std::uint64_t state = 12345;
+  auto uniform = [&state](double lo, double hi) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  auto random_polygon = [&](Vec2 c, double r) {
+    const int n = 3 + static_cast<int>(uniform(0.0, 6.0));
+    Vec2 p[9];
+    double a = uniform(0.0, 6.3);
+    for (int k = 0; k < n; ++k) {
+      p[k] = c + uniform(0.5, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
+      a += 2.0 * M_PI / n * uniform(0.6, 1.0);
+    }
+    return make_polygon(p, n);
+  };
+  // Stacked parallelograms (joint faces): TP sunk by up to 1e-3 into CP's
+  // top face, turned by up to 1e-3 rad, shifted along it.
+  auto stacked = [&](Polygon& cp, Polygon& tp) {
+    const double w = uniform(0.5, 2.0), h = uniform(0.3, 1.0), skew = uniform(-0.5, 0.5);
+    const Vec2 p[4] = {{0, 0}, {w, 0}, {w + skew, h}, {skew, h}};
+    cp = make_polygon(p, 4);
+    const Vec2 q[4] = {{0, 0}, {w, 0}, {w + skew, h}, {skew, h}};
+    tp = rotated(translated(make_polygon(q, 4), {uniform(-0.5 * w, 0.5 * w), h - uniform(0.0, 1e-3)}),
+                 uniform(-1e-3, 1e-3), {0.5 * w, h});
+  };
+  int compared = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Polygon cp = random_polygon({0, 0}, 1.0);
+    Polygon tp = random_polygon({uniform(-1.8, 1.8), uniform(-1.8, 1.8)}, uniform(0.3, 1.5));
+    if (trial % 2) stacked(cp, tp);
+    if (!validate_polygon(cp.v.data(), cp.count).ok() || !validate_polygon(tp.v.data(), tp.count).ok()) continue;
+    const double tol = pair_tolerance(cp, tp);
+    Polygon ip;
+    std::array<IpEdge, kMaxVertices> src;
+    if (overlap_and_intersection(cp, tp, tol, ip, src.data()) != OverlapState::kOverlapping || ip.count < 3) continue;
+    for (Integration rule : {Integration::kPaperBisector, Integration::kExactEnvelope}) {
+      const PotentialSide a{&cp, 1e7, 0.3}, b{&tp, 2e7, 0.3};
+      const NormalForce plain = normal_contact_force(a, b, ip, rule, tol);
+      const NormalForce fused = normal_contact_force(a, b, ip, rule, tol, src.data());
+      REQUIRE(plain.valid == fused.valid);
+      if (!plain.valid) continue;
+      const double scale = length(plain.force);
+      CHECK(length(fused.force - plain.force) <= 1e-12 * scale);
+      // The loading point moves by round-off of the moment over the force.
+      CHECK(length(fused.point - plain.point) <= 1e-9 * (1.0 + length(plain.point)));
+      CHECK(fused.segments == plain.segments);
+      ++compared;
+    }
+  }
+  CHECK(compared > 1500);
 }

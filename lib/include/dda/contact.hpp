@@ -46,8 +46,13 @@ struct NormalForce {
 // with Eqs. 16-17, and finds the loading point: the acting line is where the
 // moment of the segment forces vanishes (Eq. 20); pg is its crossing with the
 // perpendicular through the IP centroid. tol: geometric tolerance of the pair.
+// source (optional, from overlap_and_intersection): where each IP edge lies.
+// An edge on CP's boundary carries phi_CP = 0 and one on TP's phi_TP = 0, and
+// so does a vertex at which such an edge starts or ends: those exit
+// distances are not evaluated (without sources, the same zeros are found
+// within tol from the distances; the two agree to round-off).
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
-                                 Integration rule, double tol);
+                                 Integration rule, double tol, const IpEdge* source = nullptr);
 
 // Contact (penalty) energy stored in the overlap: the integral over IP of
 // phi_CP + phi_TP, exact (IP is cut into the cells where one edge of each

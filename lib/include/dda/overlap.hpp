@@ -48,6 +48,31 @@ Polygon intersection_polygon(const Polygon& contact, const Polygon& target, doub
 // The same, into `out` (no 1 KB Polygon constructed: for the hot path).
 void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& out);
 
+// Which input an edge of an intersection polygon lies on: the contact
+// polygon's edge `edge` (the IP edge is part of CP's boundary, where phi_CP
+// = 0) or the target polygon's (phi_TP = 0 there). The IP's normal of that
+// edge is the source edge's normal. Like a Box2D feature id, it lets the
+// contact integration skip potentials that vanish by construction.
+// An edge left by merging two nearly collinear edges of different
+// polygons (or of two edges of one) has edge = -1: its source is not known
+// and its normal is computed from its end points.
+struct IpEdge {
+  bool on_contact = false;  // true: an edge of the contact polygon; false: of the target
+  int edge = -1;            // its index in that polygon; -1: not known
+  bool known() const { return edge >= 0; }
+};
+
+// The overlap verdict and, when overlapping, the intersection polygon with
+// its edge sources, in one pass (the hot path of a contact pair). The
+// verdict is overlap_state(contact, target, tol)'s; the IP is
+// intersection_polygon(contact, target, tol)'s vertices, except that its
+// normals are the source edges' (exact, no square root). The overlap test's
+// edge-line distances tell which of the contact polygon's edge lines cut the
+// target at all; the others are skipped by the clipping, which they would
+// leave unchanged. `ip` is emptied when the result is not kOverlapping.
+OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
+                                      IpEdge* source);
+
 // Tolerance used for a pair: the larger of the two polygons' tolerances.
 double pair_tolerance(const Polygon& a, const Polygon& b);
 

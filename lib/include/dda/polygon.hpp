@@ -119,11 +119,24 @@ void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below,
 // dist <= 0 (signed distances to a line, already snapped to 0 within the
 // caller's tolerance), in order, with the points where an edge crosses the
 // line. Writes at most kMaxVertices points to out; returns how many.
-int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out);
+// Edge labels (optional): in_label[i] names the line edge i of the ring lies
+// on; out_label gets the same for the output ring, with line_label for the
+// new edge along the cutting line.
+int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out, const int* in_label = nullptr,
+              int line_label = 0, int* out_label = nullptr);
 
 // Removes repeated vertices (closer than tol) and vertices whose turn is
-// within tol of straight; recomputes normals; empties a polygon left with
-// fewer than 3 vertices or no area. Used on clipper and Minkowski output.
+// within tol of straight from the ring v[0..count); returns the new count,
+// 0 when fewer than 3 are left. With label (one per edge, as clip_ring's):
+// an edge merged over a repeated vertex keeps the label of the edge that
+// remains; two nearly collinear edges merge into one labelled
+// kMixedEdgeLabel unless they had the same label (they lie on two lines
+// within tol of each other, and neither line alone is known to hold the
+// merged edge to within tol). Normals untouched.
+inline constexpr int kMixedEdgeLabel = -2147483647 - 1;  // INT_MIN: never a clip_ring label in use
+int clean_ring(Vec2* v, int count, double tol, int* label = nullptr);
+// clean_ring on the polygon's vertices, then recomputes its normals; empties
+// a polygon left with fewer than 3 vertices. Used on clipper output.
 void clean_polygon(Polygon& poly, double tol);
 
 // Rigid motion helpers (used by tests and scene set-up).
