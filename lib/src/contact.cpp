@@ -167,16 +167,9 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     // 0, 1/2 or 1 adds nothing), sorted, then merged with the three.
     Crossings cr;
     if (rule == Integration::kPaperBisector) {
-      // Edge a-b meets ray r's line where the side cross(p - o, d) changes
-      // sign, at t = s_a / (s_a - s_b); a crossing behind the origin is not on the ray.
+      // Where edge a-b crosses each ray (segment_ray_crossing: -1 for a miss).
       auto add_crossings = [&](RaySpan rays) {
-        for (int r = 0; r < rays.count; ++r) {
-          const Ray& ray = rays.ray[r];
-          const double sa = cross(a - ray.origin, ray.dir), sb = cross(b - ray.origin, ray.dir);
-          if ((sa < 0.0) == (sb < 0.0) || sa == sb) continue;  // no sign change
-          const double t = sa / (sa - sb);
-          if (dot(lerp(a, b, t) - ray.origin, ray.dir) >= 0.0) cr.add(t);
-        }
+        for (int r = 0; r < rays.count; ++r) cr.add(segment_ray_crossing(a, b, rays.ray[r]));
       };
       if (use_cp) add_crossings(rays_cp);
       if (use_tp) add_crossings(rays_tp);
