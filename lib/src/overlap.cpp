@@ -137,8 +137,12 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
   };
   static thread_local Ring buf[2];
   static thread_local std::array<double, kMaxVertices> dist;
-  static thread_local std::array<int, kMaxVertices> target_label;
-  for (int j = 0; j < target.count; ++j) target_label[static_cast<std::size_t>(j)] = j;
+  // The target's own edges label themselves: label j for edge j.
+  static constexpr std::array<int, kMaxVertices> target_label = [] {
+    std::array<int, kMaxVertices> l{};
+    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
+    return l;
+  }();
   const Vec2* in = target.v.data();
   const int* in_label = target_label.data();
   int in_count = target.count;

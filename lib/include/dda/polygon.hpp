@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cfloat>
+#include <limits>
 #include "dda/vec2.hpp"
 
 namespace dda {
@@ -133,7 +134,7 @@ int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out, const int* i
 // kMixedEdgeLabel unless they had the same label (they lie on two lines
 // within tol of each other, and neither line alone is known to hold the
 // merged edge to within tol). Normals untouched.
-inline constexpr int kMixedEdgeLabel = -2147483647 - 1;  // INT_MIN: never a clip_ring label in use
+inline constexpr int kMixedEdgeLabel = std::numeric_limits<int>::min();  // never a clip_ring label in use
 int clean_ring(Vec2* v, int count, double tol, int* label = nullptr);
 // clean_ring on the polygon's vertices, then recomputes its normals; empties
 // a polygon left with fewer than 3 vertices. Used on clipper output.
