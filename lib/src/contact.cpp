@@ -29,36 +29,65 @@ struct Crossings {
   }
 };
 
-// Demarcation points of one IP edge in order, each with the net traction there.
-struct Breaks {
-  struct Break {
-    double t, f;
-  };
-  std::array<Break, 4 * kMaxVertices + 3> b;  // left uninitialised: count says how many are set
+// The signed distances inside one polygon's edge lines along one IP edge
+// a + t (b - a), t in [0, 1]: d_i(t) = c_i + s_i t (Eq. 13), so that
+// d_exit(t) = min_i d_i(t) (Eq. 14). Built once per edge and side; every
+// demarcation point of the edge, and every ray test, reuses them.
+struct EdgeLines {
+  std::array<double, kMaxVertices> c, s;  // left uninitialised: the first `count` are set
   int count = 0;
-  void push(double t, double f) { b[static_cast<std::size_t>(count++)] = {t, f}; }
+  void build(const Polygon& poly, Vec2 a, Vec2 ab) {
+    count = poly.count;
+    for (int i = 0; i < count; ++i) {
+      const Vec2 n = poly.normal(i);
+      c[static_cast<std::size_t>(i)] = dot(n, poly.vertex(i) - a);
+      s[static_cast<std::size_t>(i)] = -dot(n, ab);
+    }
+  }
+  double at(double t) const {
+    double d = DBL_MAX;
+    for (int i = 0; i < count; ++i) {
+      const double di = c[static_cast<std::size_t>(i)] + s[static_cast<std::size_t>(i)] * t;
+      d = di < d ? di : d;
+    }
+    return d;
+  }
+  double at_start() const {
+    double d = DBL_MAX;
+    for (int i = 0; i < count; ++i) d = c[static_cast<std::size_t>(i)] < d ? c[static_cast<std::size_t>(i)] : d;
+    return d;
+  }
+  // Where the edge crosses `ray` (Sect. 3.2.3): d_a(t) = d_b(t) >= d0 for
+  // the ray's two lines, or -1 for a miss. The range test is done on the
+  // numerator against the denominator, so a miss costs no division.
+  double crossing(const Ray& ray) const {
+    const std::size_t la = static_cast<std::size_t>(ray.line_a), lb = static_cast<std::size_t>(ray.line_b);
+    double num = c[lb] - c[la], den = s[la] - s[lb];
+    if (den < 0.0) {
+      num = -num;
+      den = -den;
+    }
+    if (!(num > 0.0 && num < den)) return -1.0;
+    const double t = num / den;
+    return c[la] + s[la] * t >= ray.d0 ? t : -1.0;
+  }
 };
 
-// Kinks of the lower envelope of d_i(t) = c_i + s_i t on (0, 1), where
-// d_i is the distance of a + t (b - a) inside edge line i of `poly`. Walks
-// the envelope from t = 0: at each step the next kink is the earliest
-// crossing with a line that falls faster than the current one.
+// Kinks of the lower envelope of d_i(t) = c_i + s_i t on (0, 1). Walks the
+// envelope from t = 0: at each step the next kink is the earliest crossing
+// with a line that falls faster than the current one.
 template <class Add>
-void add_envelope_breaks(const Polygon& poly, Vec2 a, Vec2 b, Add&& add) {
-  const Vec2 ab = b - a;
-  std::array<double, kMaxVertices> c{}, s{};
-  for (int i = 0; i < poly.count; ++i) {
-    c[i] = dot(poly.normal(i), poly.vertex(i) - a);
-    s[i] = -dot(poly.normal(i), ab);
-  }
+void add_envelope_breaks(const EdgeLines& lines, Add&& add) {
+  const auto& c = lines.c;
+  const auto& s = lines.s;
   int cur = 0;
-  for (int i = 1; i < poly.count; ++i)
+  for (int i = 1; i < lines.count; ++i)
     if (c[i] < c[cur] || (c[i] == c[cur] && s[i] < s[cur])) cur = i;
   double t = 0.0;
-  for (int guard = 0; guard < poly.count; ++guard) {
+  for (int guard = 0; guard < lines.count; ++guard) {
     int next = -1;
     double tn = 1.0;
-    for (int j = 0; j < poly.count; ++j) {
+    for (int j = 0; j < lines.count; ++j) {
       if (s[j] >= s[cur]) continue;
       const double tj = (c[j] - c[cur]) / (s[cur] - s[j]);
       if (tj > t && tj < tn) {
@@ -105,57 +134,39 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
       rays_tp = {own_tp.ray.data(), own_tp.count};
     }
   }
-  // Exit distances at the IP vertices, each computed on first use (a vertex
-  // ends one edge and starts the next): bit k of known_* says dv_*[k] is set.
-  std::array<double, kMaxVertices> dv_cp, dv_tp;  // left uninitialised: guarded by the masks
-  std::uint32_t known_cp = 0, known_tp = 0;
+  // A vertex where an edge on CP's boundary starts or ends is on that
+  // boundary: d_exit = 0 there (likewise for TP); bit k of zero_* says so
+  // for IP vertex k. Edges of unknown source say nothing about their end points.
+  std::uint32_t zero_cp = 0, zero_tp = 0;
   if (source) {
-    // A vertex where an edge on CP's boundary starts or ends is on that
-    // boundary: d_exit = 0 there (likewise for TP).
-    // Edges of unknown source say nothing about their end points.
     for (int k = 0; k < ip.count; ++k) {
       const IpEdge in = source[ip.prev(k)], out_edge = source[k];
       const std::uint32_t bit = std::uint32_t{1} << k;
-      if ((in.known() && in.on_contact) || (out_edge.known() && out_edge.on_contact)) {
-        dv_cp[static_cast<std::size_t>(k)] = 0.0;
-        known_cp |= bit;
-      }
-      if ((in.known() && !in.on_contact) || (out_edge.known() && !out_edge.on_contact)) {
-        dv_tp[static_cast<std::size_t>(k)] = 0.0;
-        known_tp |= bit;
-      }
+      if ((in.known() && in.on_contact) || (out_edge.known() && out_edge.on_contact)) zero_cp |= bit;
+      if ((in.known() && !in.on_contact) || (out_edge.known() && !out_edge.on_contact)) zero_tp |= bit;
     }
   }
-  auto vertex_d = [&ip](const PotentialSide& side, std::array<double, kMaxVertices>& dv, std::uint32_t& known, int k) {
-    const std::uint32_t bit = std::uint32_t{1} << k;
-    if (!(known & bit)) {
-      dv[static_cast<std::size_t>(k)] = exit_distance(*side.poly, ip.vertex(k));
-      known |= bit;
-    }
-    return dv[static_cast<std::size_t>(k)];
-  };
-  // Net normal traction phi_CP - phi_TP (Eq. 11) from the two exit
-  // distances, each side only where its potential is not zero on the edge.
-  auto traction = [&](bool use_cp, double d_cp, bool use_tp, double d_tp) {
-    double f = 0.0;
-    if (use_cp) f += d_cp > 0.0 ? cp.kn_over_h * d_cp : 0.0;
-    if (use_tp) f -= d_tp > 0.0 ? tp.kn_over_h * d_tp : 0.0;
-    return f;
-  };
+  EdgeLines lines_cp, lines_tp;
+  Crossings cr;
   for (int e = 0; e < ip.count; ++e) {
     const int e1 = ip.next(e);
-    const Vec2 a = ip.vertex(e), b = ip.vertex(e1);
-    const Vec2 n = ip.normal(e);
-    const double len = length(b - a);
+    const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
+    const double len = length(ab);
     if (len <= tol) continue;
     out.ip_perimeter += len;
-    const Vec2 mid = lerp(a, b, 0.5);
     // An IP edge on the boundary of a polygon carries zero potential of it:
     // known from its source, else found from the midpoint's distance.
     const bool known = source && source[e].known();
     const bool src_cp = known && source[e].on_contact, src_tp = known && !source[e].on_contact;
-    const double mid_cp = src_cp ? 0.0 : exit_distance(*cp.poly, mid);
-    const double mid_tp = src_tp ? 0.0 : exit_distance(*tp.poly, mid);
+    double mid_cp = 0.0, mid_tp = 0.0;
+    if (!src_cp) {
+      lines_cp.build(*cp.poly, a, ab);
+      mid_cp = lines_cp.at(0.5);
+    }
+    if (!src_tp) {
+      lines_tp.build(*tp.poly, a, ab);
+      mid_tp = lines_tp.at(0.5);
+    }
     const bool use_cp = !(src_cp || mid_cp <= tol);
     const bool use_tp = !(src_tp || mid_tp <= tol);
     if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
@@ -164,61 +175,67 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     }
     // Demarcation points (Sect. 3.2.3 steps 1-4): the end points, the
     // midpoint, and the crossings strictly inside the edge (a crossing at
-    // 0, 1/2 or 1 adds nothing), sorted, then merged with the three.
-    Crossings cr;
+    // 0, 1/2 or 1 adds nothing), sorted.
+    cr.count = 0;
     if (rule == Integration::kPaperBisector) {
-      // Where edge a-b crosses each ray (segment_ray_crossing: -1 for a miss).
-      auto add_crossings = [&](RaySpan rays) {
-        for (int r = 0; r < rays.count; ++r) cr.add(segment_ray_crossing(a, b, rays.ray[r]));
-      };
-      if (use_cp) add_crossings(rays_cp);
-      if (use_tp) add_crossings(rays_tp);
+      if (use_cp)
+        for (int r = 0; r < rays_cp.count; ++r) cr.add(lines_cp.crossing(rays_cp.ray[r]));
+      if (use_tp)
+        for (int r = 0; r < rays_tp.count; ++r) cr.add(lines_tp.crossing(rays_tp.ray[r]));
     } else {
       auto add = [&cr](double t) { cr.add(t); };
-      if (use_cp) add_envelope_breaks(*cp.poly, a, b, add);
-      if (use_tp) add_envelope_breaks(*tp.poly, a, b, add);
+      if (use_cp) add_envelope_breaks(lines_cp, add);
+      if (use_tp) add_envelope_breaks(lines_tp, add);
     }
     cr.sort();
-    // Tractions: the end points and the midpoint reuse the distances found above.
-    Breaks br;
-    auto push_crossings = [&](int& i, double below) {
+    // Net normal traction phi_CP - phi_TP (Eq. 11) at t, each side only
+    // where its potential is not zero on the edge; d_*: exit distances, or
+    // negative for "not evaluated".
+    auto traction = [&](double d_cp, double d_tp) {
+      double f = 0.0;
+      if (d_cp > 0.0) f += cp.kn_over_h * d_cp;
+      if (d_tp > 0.0) f -= tp.kn_over_h * d_tp;
+      return f;
+    };
+    auto traction_at = [&](double t) {
+      return traction(use_cp ? lines_cp.at(t) : 0.0, use_tp ? lines_tp.at(t) : 0.0);
+    };
+    const std::uint32_t bit_a = std::uint32_t{1} << e, bit_b = std::uint32_t{1} << e1;
+    const double f_start = traction(use_cp && !(zero_cp & bit_a) ? lines_cp.at_start() : 0.0,
+                                    use_tp && !(zero_tp & bit_a) ? lines_tp.at_start() : 0.0);
+    const double f_mid = traction(use_cp ? mid_cp : 0.0, use_tp ? mid_tp : 0.0);
+    const double f_end = traction(use_cp && !(zero_cp & bit_b) ? lines_cp.at(1.0) : 0.0,
+                                  use_tp && !(zero_tp & bit_b) ? lines_tp.at(1.0) : 0.0);
+    // Eqs. 16-17 on each segment [t0, t1] with end tractions fa, fb. Along
+    // one edge all segments share the normal n, so only two sums are kept:
+    //   S0 = sum (t1 - t0) (fa + fb)                      -> force  L S0 / 2,
+    //   S1 = sum (t1 - t0) [fa (2 t0 + t1) + fb (t0 + 2 t1)] -> int f t dl = L S1 / 6.
+    // The edge's force L S0 / 2 n acts at a + (S1 / 3 S0) (b - a) (Eq. 17);
+    // its moment about c is taken as L [S0 / 2 a + S1 / 6 (b - a)] x n,
+    // which stays finite when S0 = 0.
+    double s0 = 0.0, s1 = 0.0, t0 = 0.0, fa = f_start;
+    auto segment_to = [&](double t1, double fb) {
+      const double dt = t1 - t0;
+      s0 += dt * (fa + fb);
+      s1 += dt * (fa * (2.0 * t0 + t1) + fb * (t0 + 2.0 * t1));
+      ++out.segments;
+      t0 = t1;
+      fa = fb;
+    };
+    auto crossings_below = [&](int& i, double below) {
       for (; i < cr.count && cr.t[static_cast<std::size_t>(i)] < below; ++i) {
         const double t = cr.t[static_cast<std::size_t>(i)];
-        if (t == br.b[static_cast<std::size_t>(br.count - 1)].t) continue;  // two rays, one point
-        const Vec2 p = lerp(a, b, t);
-        br.push(t, traction(use_cp, use_cp ? exit_distance(*cp.poly, p) : 0.0, use_tp,
-                            use_tp ? exit_distance(*tp.poly, p) : 0.0));
+        if (t != t0) segment_to(t, traction_at(t));  // two rays, one point: once
       }
     };
     int next = 0;
-    br.push(0.0, traction(use_cp, use_cp ? vertex_d(cp, dv_cp, known_cp, e) : 0.0, use_tp,
-                          use_tp ? vertex_d(tp, dv_tp, known_tp, e) : 0.0));
-    push_crossings(next, 0.5);
-    br.push(0.5, traction(use_cp, mid_cp, use_tp, mid_tp));
-    push_crossings(next, 1.0);
-    br.push(1.0, traction(use_cp, use_cp ? vertex_d(cp, dv_cp, known_cp, e1) : 0.0, use_tp,
-                          use_tp ? vertex_d(tp, dv_tp, known_tp, e1) : 0.0));
-    // Eqs. 16-17 on each segment. The segment force L (fa + fb) / 2 acts at
-    // pk of Eq. 17; its moment about c is taken in the equivalent form
-    // L [(fa + fb) / 2 (pa - c) + (fa + 2 fb) / 6 (pb - pa)] x n, which is
-    // Eq. 17 times the force but stays finite when fa + fb = 0.
-    double t0 = br.b[0].t;
-    Vec2 pa = lerp(a, b, t0);
-    double fa = br.b[0].f;
-    for (int k = 1; k < br.count; ++k) {
-      const double t1 = br.b[k].t;
-      const Vec2 pb = lerp(a, b, t1);
-      const double fb = br.b[k].f;
-      const double l = len * (t1 - t0);
-      const double fs = 0.5 * l * (fa + fb);
-      force += fs * n;
-      const Vec2 arm = 0.5 * l * (fa + fb) * (pa - c) + (l * (fa + 2.0 * fb) * kSixth) * (pb - pa);
-      moment += cross(arm, n);
-      ++out.segments;
-      t0 = t1;
-      pa = pb;
-      fa = fb;
-    }
+    crossings_below(next, 0.5);
+    segment_to(0.5, f_mid);
+    crossings_below(next, 1.0);
+    segment_to(1.0, f_end);
+    const Vec2 n = ip.normal(e);
+    force += (0.5 * len * s0) * n;
+    moment += cross((0.5 * len * s0) * (a - c) + (len * s1 * kSixth) * ab, n);
   }
   const double f2 = length_squared(force);
   if (!(f2 > 0.0)) return out;

@@ -71,10 +71,11 @@ int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ra
     const Vec2 node = pa + s * da;
     const Vec2 dir = normalized(-(poly.normal(poly.prev(a)) + poly.normal(b)));
     if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced[a] = replaced[b] = true;
-    out[count++] = {node, dir};
+    // The node is as far from edge e's line as from its neighbours'.
+    out[count++] = {node, dir, poly.prev(a), b, dot(poly.normal(e), pa - node)};
   }
   for (int i = 0; i < n; ++i)
-    if (!replaced[i]) out[count++] = {poly.vertex(i), vertex_dir(i)};
+    if (!replaced[i]) out[count++] = {poly.vertex(i), vertex_dir(i), poly.prev(i), i, 0.0};
   return count;
 }
 

@@ -62,3 +62,37 @@ TEST_CASE("a small edge's virtual node adds to or replaces the vertex rays", "[p
   CHECK(bisector_rays(cut, 0.05, SmallEdgeRays::kVirtualReplacesVertex, rays) == 4);  // 3 vertices + 1 node
   CHECK(bisector_rays(cut, 0.001, SmallEdgeRays::kVirtualAndVertex, rays) == 5);    // no small edge
 }
+
+TEST_CASE("each bisector ray is where its two edge lines are equally far, from d0 on", "[potential]") {
+  // The contact integration finds ray crossings from the distances to the
+  // ray's two lines (Ray::line_a, line_b, d0), not from origin and dir: the
+  // two descriptions must be the same ray. Polygons with small edges (so
+  // virtual nodes occur), both small-edge modes.
+  const double c = 0.01 / std::sqrt(2.0);
+  const Vec2 cut[5] = {{0, 0}, {1, 0}, {1, 1 - c}, {1 - c, 1}, {0, 1}};
+  const Vec2 tri[3] = {{2, 1}, {5, 1.5}, {3, 4}};
+  const Vec2 chamfered[6] = {{10, -3}, {12, -3}, {12, -2.1}, {11.9, -2}, {10.05, -2}, {10, -2.05}};
+  const Polygon polys[3] = {make_polygon(cut, 5), make_polygon(tri, 3), make_polygon(chamfered, 6)};
+  auto line_distance = [](const Polygon& p, int i, Vec2 x) { return dot(p.normal(i), p.vertex(i) - x); };
+  int virtual_rays = 0;
+  for (const Polygon& poly : polys)
+    for (SmallEdgeRays mode : {SmallEdgeRays::kVirtualAndVertex, SmallEdgeRays::kVirtualReplacesVertex}) {
+      Ray rays[2 * kMaxVertices];
+      const int n = bisector_rays(poly, 0.35, mode, rays);
+      for (int r = 0; r < n; ++r) {
+        const Ray& ray = rays[r];
+        REQUIRE(ray.line_a >= 0);
+        REQUIRE(ray.line_b >= 0);
+        REQUIRE(ray.line_a != ray.line_b);
+        if (ray.d0 > 0.0) ++virtual_rays;
+        for (double s : {0.0, 0.05, 0.2, 0.4}) {
+          const Vec2 x = ray.origin + s * ray.dir;
+          const double da = line_distance(poly, ray.line_a, x), db = line_distance(poly, ray.line_b, x);
+          CHECK(da == Approx(db).margin(1e-12));
+          if (s == 0.0) CHECK(da == Approx(ray.d0).margin(1e-12));
+          else CHECK(da > ray.d0);  // the distance grows along the ray: d >= d0 is the ray's side
+        }
+      }
+    }
+  CHECK(virtual_rays == 6);  // three small edges, each in both modes
+}

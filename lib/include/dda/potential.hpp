@@ -37,10 +37,17 @@ struct InscribedCircle {
 };
 InscribedCircle inscribed_circle(const Polygon& poly);
 
-// A ray from `origin` along unit `dir` into the polygon.
+// A ray from `origin` along unit `dir` into the polygon. Every ray of
+// bisector_rays is also where two edge lines are equally far: the points
+// with d_line_a = d_line_b >= d0 (signed distances inside the lines, as in
+// exit_distance). The contact integration finds crossings in that form,
+// from distances it has anyway (vertex ray at v_i: lines i-1 and i, d0 = 0;
+// virtual node of small edge e: lines e-1 and e+1, d0 = the node's distance).
 struct Ray {
   Vec2 origin{};
   Vec2 dir{};
+  int line_a = -1, line_b = -1;  // edge indices of the polygon the ray belongs to
+  double d0 = 0.0;               // distance of the origin from both lines, m
 };
 
 // What a virtual node does to the rays of a small edge's two vertices.
