@@ -143,12 +143,27 @@ std::string check_entrance(const Points& a, const Points& b, Vec2 a0) {
 // overlapping intersection_polygon's vertices bit for bit; every IP edge lies
 // on its source edge's line (both end points within kSandwich tol of it) and
 // carries that edge's normal; an edge merged from two sources (unknown) has a
-// unit normal.
+// unit normal. The verdict is the same with any witness axis given (every
+// axis index, and one out of range as left by another pair), and a
+// kSeparate verdict leaves a witness that separates the pair by itself.
 std::string check_fused(const Polygon& pc, const Polygon& pt, double tol) {
   Polygon ip;
   std::array<dda::IpEdge, dda::kMaxVertices> src;
   const dda::OverlapState s = dda::overlap_and_intersection(pc, pt, tol, ip, src.data());
   if (s != dda::overlap_state(pc, pt, tol)) return "overlap_and_intersection: verdict differs from overlap_state";
+  for (int w = -1; w <= pc.count + pt.count; ++w) {
+    int witness = w;
+    Polygon ipw;
+    const dda::OverlapState sw = dda::overlap_and_intersection(pc, pt, tol, ipw, src.data(), &witness);
+    if (sw != s) return format("overlap_and_intersection: verdict differs with witness axis %d", w);
+    if (sw != dda::OverlapState::kSeparate) continue;
+    if (witness < 0 || witness >= pc.count + pt.count) return format("kSeparate left witness %d out of range", witness);
+    int again = witness;
+    if (dda::overlap_and_intersection(pc, pt, tol, ipw, src.data(), &again) != dda::OverlapState::kSeparate || again != witness)
+      return format("witness axis %d: not kept on a second call", witness);
+  }
+  src = {};  // the witness calls wrote the sources: the checks below use a fresh call's
+  if (dda::overlap_and_intersection(pc, pt, tol, ip, src.data()) != s) return "overlap_and_intersection: not repeatable";
   if (s != dda::OverlapState::kOverlapping) return ip.count == 0 ? "" : "overlap_and_intersection: IP not emptied";
   const Polygon ref = dda::intersection_polygon(pc, pt, tol);
   if (ip.count != ref.count) return format("overlap_and_intersection: %d IP vertices, intersection_polygon %d", ip.count, ref.count);

@@ -89,15 +89,36 @@ namespace {
 // B, unchanged in intersection_polygon: there every distance is within tol
 // (the two ways of rounding differ by a few eps |x|, far below tol / 2)
 // and snapped to 0, so the line does not cut.
+// witness: see overlap_and_intersection. Axis j < b.count is edge j of B,
+// b.count + i is edge i of A.
 template <bool kCuts>
-OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts) {
-  double d = -DBL_MAX;
-  for (int j = 0; j < b.count; ++j) {
+OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+  // The distance of edge line j of B to A (> 0: A lies outside it), and of
+  // edge line i of A to B.
+  auto b_axis = [&](int j) {
     const Vec2 n = b.normal(j);
     double lo = DBL_MAX;
     for (int i = 0; i < a.count; ++i) lo = std::min(lo, dot(n, a.vertex(i)));
-    d = std::max(d, lo - dot(n, b.vertex(j)));
-    if (d > tol) return OverlapState::kSeparate;
+    return lo - dot(n, b.vertex(j));
+  };
+  if (witness && *witness >= 0) {
+    const int w = *witness;
+    if (w < b.count) {
+      if (b_axis(w) > tol) return OverlapState::kSeparate;
+    } else if (w - b.count < a.count) {
+      const Vec2 n = a.normal(w - b.count);
+      double lo = DBL_MAX;
+      for (int j = 0; j < b.count; ++j) lo = std::min(lo, dot(n, b.vertex(j)));
+      if (lo - dot(n, a.vertex(w - b.count)) > tol) return OverlapState::kSeparate;
+    }
+  }
+  double d = -DBL_MAX;
+  for (int j = 0; j < b.count; ++j) {
+    d = std::max(d, b_axis(j));
+    if (d > tol) {
+      if (witness) *witness = j;
+      return OverlapState::kSeparate;
+    }
   }
   std::uint32_t mask = 0;
   for (int i = 0; i < a.count; ++i) {
@@ -110,7 +131,10 @@ OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std
     }
     const double ai = dot(n, a.vertex(i));
     d = std::max(d, lo - ai);
-    if (d > tol) return OverlapState::kSeparate;
+    if (d > tol) {
+      if (witness) *witness = b.count + i;
+      return OverlapState::kSeparate;
+    }
     if (kCuts && hi - ai > 0.5 * tol) mask |= std::uint32_t{1} << i;
   }
   if (kCuts) *cuts = mask;
@@ -193,16 +217,16 @@ constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
 OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
   if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
   if (tol < 0.0) tol = pair_tolerance(a, b);
-  return separating_axes<false>(a, b, tol, nullptr);
+  return separating_axes<false>(a, b, tol, nullptr, nullptr);
 }
 
 OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
-                                      IpEdge* source) {
+                                      IpEdge* source, int* witness) {
   ip.count = 0;
   if (contact.count < 3 || target.count < 3) return OverlapState::kSeparate;
   if (tol < 0.0) tol = pair_tolerance(contact, target);
   std::uint32_t lines = 0;
-  const OverlapState state = separating_axes<true>(contact, target, tol, &lines);
+  const OverlapState state = separating_axes<true>(contact, target, tol, &lines, witness);
   if (state == OverlapState::kOverlapping) clip_target(contact, target, tol, lines, ip, source);
   return state;
 }

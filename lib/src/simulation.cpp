@@ -372,11 +372,15 @@ void Simulation::update_block_geometry(int i) {
 
 void Simulation::find_candidate_pairs() {
   candidates_.clear();
+  candidate_near_.clear();
   const int n = block_count();
   if (scene_.broad_phase == BroadPhase::kNone) {
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) candidates_.emplace_back(i, j);
+        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) {
+          candidates_.emplace_back(i, j);
+          candidate_near_.push_back(-1);
+        }
     return;
   }
   // Sort and sweep along x on the grown boxes, only when a block's box has
@@ -426,9 +430,15 @@ void Simulation::find_candidate_pairs() {
       }
     }
     std::sort(near_pairs_.begin(), near_pairs_.end());
+    near_witness_.assign(near_pairs_.size(), -1);
   }
-  for (const auto& [i, j] : near_pairs_)
-    if (aabb_overlap(boxes_[i], boxes_[j])) candidates_.emplace_back(i, j);
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+    const auto [i, j] = near_pairs_[k];
+    if (aabb_overlap(boxes_[i], boxes_[j])) {
+      candidates_.emplace_back(i, j);
+      candidate_near_.push_back(static_cast<int>(k));
+    }
+  }
 }
 
 void Simulation::compute_forces() {
@@ -470,9 +480,10 @@ void Simulation::contact_forces() {
   const long n = static_cast<long>(candidates_.size());
   DDA_OMP(omp for schedule(static))
   for (long k = 0; k < n; ++k) {
-    PairResult& r = results_[static_cast<std::size_t>(k)];
-    r.active = pair_force(candidates_[static_cast<std::size_t>(k)].first,
-                          candidates_[static_cast<std::size_t>(k)].second, r);
+    const std::size_t kk = static_cast<std::size_t>(k);
+    const int near = candidate_near_[kk];  // each near pair is one candidate: one thread writes its witness
+    results_[kk].active = pair_force(candidates_[kk].first, candidates_[kk].second, results_[kk],
+                                     near < 0 ? nullptr : &near_witness_[static_cast<std::size_t>(near)]);
   }
   DDA_OMP(omp single)
   scatter_pair_forces();
@@ -520,14 +531,14 @@ void Simulation::scatter_pair_forces() {
   if (friction_) history_.swap(next_history_);
 }
 
-bool Simulation::pair_force(int cp, int tp, PairResult& r) const {
+bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
   const Polygon& a = poly_[cp];
   const Polygon& b = poly_[tp];
   const double tol = std::max(tol_[cp], tol_[tp]);
   // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
   static thread_local Polygon ip;
   static thread_local std::array<IpEdge, kMaxVertices> source;
-  if (overlap_and_intersection(a, b, tol, ip, source.data()) != OverlapState::kOverlapping) return false;
+  if (overlap_and_intersection(a, b, tol, ip, source.data(), witness) != OverlapState::kOverlapping) return false;
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
   const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,

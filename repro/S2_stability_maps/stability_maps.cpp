@@ -7,10 +7,9 @@
 //    repro/S_common), and with the empirical limit found by bisection on dt
 //    for a block resting at its static penetration, nudged by 1e-9 m/s and
 //    1e-9 rad/s so that every mode is excited (unstable: the
-//    mechanical energy grows 10-fold over 20000 steps, or a guard stops the
-//    run). Expected: empirical = linearised where the contact stays closed
-//    (rigid blocks, or kn well below E); the solver's values at or below
-//    it (a bound). The "old" column is the estimate before this issue
+//    mechanical energy grows 10-fold over 20000 steps, a resting contact
+//    opens, or a guard stops the run). Expected: empirical = linearised;
+//    the solver's values at or below it (a bound). The "old" column is the estimate before this issue
 //    (kn L 2 / H_i on k/m + k r^2/I, max with the strain modes).
 // 2. Stability maps: kn 1e6 .. 1e12 Pa (half decades) x dt 1e-6 .. 1e-2 s
 //    (quarter decades), Table 4/5 material (rho 2000, E 1 GPa, nu 0.25),
@@ -147,13 +146,23 @@ RestCase resting(double kn, bool inscribed, bool strains, bool two_high) {
   return rc;
 }
 
+// Whether the resting contact is unstable at dt. Two signs: the energy
+// grows tenfold (or a guard stops the run), or a contact of the rest state
+// opens. A stable run stays within the seed's ~1e-9 m of rest, far inside
+// the static penetration (>= 1e-6 m here), so no contact can open. Above
+// the limit on stiff contacts the unstable mode lifts the block off within
+// the first tenth of the run and then stays bounded (it saturates: the
+// contact is open half the time), which the energy ratio alone misses.
 bool grows(dda::Scene s, double dt, int steps) {
   s.dt = dt;
   try {
     dda::Simulation sim(s);
     double early = 0.0, late = 0.0;
+    std::size_t resting_contacts = 0;
     for (int k = 0; k < steps; ++k) {
       sim.step();
+      if (k == 0) resting_contacts = sim.contacts().size();
+      if (sim.contacts().size() < resting_contacts) return true;  // the rest state is lost: a contact opened
       if (k % 50 != 0) continue;
       const dda::Energy e = sim.energy();
       const double m = e.kinetic + e.strain + e.contact;
@@ -314,9 +323,7 @@ int main(int argc, char** argv) {
                           "a-priori estimates, and the estimate before this issue"});
     std::vector<RestCase> cases;
     for (double kn : {1e6, 1e7, 1e8, 1e9}) cases.push_back(resting(kn, false, false, false));
-    // (kn 1e9 with the inscribed radius: delta_s ~ 1e-6 m, the unstable mode
-    // opens the contact before it grows: no sharp limit; left out.)
-    for (double kn : {1e6, 1e7, 1e8}) cases.push_back(resting(kn, true, false, false));
+    for (double kn : {1e6, 1e7, 1e8, 1e9}) cases.push_back(resting(kn, true, false, false));
     for (double kn : {1e8, 1e9}) cases.push_back(resting(kn, false, false, true));
     for (double kn : {1e7, 1e8, 1e9}) cases.push_back(resting(kn, false, true, false));
     for (double kn : {1e7, 1e8}) cases.push_back(resting(kn, true, true, false));

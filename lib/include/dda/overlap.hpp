@@ -70,8 +70,13 @@ struct IpEdge {
 // edge-line distances tell which of the contact polygon's edge lines cut the
 // target at all; the others are skipped by the clipping, which they would
 // leave unchanged. `ip` is emptied when the result is not kOverlapping.
+// witness (optional, kept by the caller per pair between calls, -1 at
+// first): the separating axis found last time, tried first; set to the axis
+// whenever the verdict is kSeparate. A pair that stays apart is then
+// rejected by one axis instead of a search. The verdict does not depend on
+// it: any axis separating by more than tol makes the full test say kSeparate.
 OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
-                                      IpEdge* source);
+                                      IpEdge* source, int* witness = nullptr);
 
 // Tolerance used for a pair: the larger of the two polygons' tolerances.
 double pair_tolerance(const Polygon& a, const Polygon& b);

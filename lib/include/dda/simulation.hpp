@@ -149,7 +149,7 @@ class Simulation {
     ContactInfo info;
     PairHistory history;
   };
-  bool pair_force(int cp, int tp, PairResult& r) const;
+  bool pair_force(int cp, int tp, PairResult& r, int* witness) const;
   void kick();
   void check_state();
   void predict_critical_step();
@@ -204,6 +204,10 @@ class Simulation {
   // rebuild; it stays valid while every block's box stays inside its grown
   // box (skin_boxes_), and each step filters it by the current boxes.
   std::vector<std::pair<int, int>> near_pairs_;
+  // Per near pair, the separating axis the overlap test found last
+  // (overlap_and_intersection's witness; -1: none yet); candidate k is
+  // near pair candidate_near_[k] (-1 without the sweep).
+  std::vector<int> near_witness_, candidate_near_;
   std::vector<Aabb> skin_boxes_;
   double skin_ = 0.0;  // m
   std::int64_t broad_phase_rebuilds_ = 0;
