@@ -57,10 +57,10 @@ struct EdgeLines {
     for (int i = 0; i < count; ++i) d = c[static_cast<std::size_t>(i)] < d ? c[static_cast<std::size_t>(i)] : d;
     return d;
   }
-  // Where the edge crosses `ray` (Sect. 3.2.3): d_a(t) = d_b(t) >= d0 for
-  // the ray's two lines, or -1 for a miss. The range test is done on the
+  // Where the edge crosses bisector `ray` (Sect. 3.2.3): d_a(t) = d_b(t) >=
+  // d0 for its two lines, or -1 for a miss. The range test is done on the
   // numerator against the denominator, so a miss costs no division.
-  double crossing(const Ray& ray) const {
+  double crossing(const Bisector& ray) const {
     const std::size_t la = static_cast<std::size_t>(ray.line_a), lb = static_cast<std::size_t>(ray.line_b);
     double num = c[lb] - c[la], den = s[la] - s[lb];
     if (den < 0.0) {
@@ -102,8 +102,8 @@ void add_envelope_breaks(const EdgeLines& lines, Add&& add) {
   }
 }
 
-struct RaySpan {
-  const Ray* ray = nullptr;
+struct BisectorSpan {
+  const Bisector* b = nullptr;
   int count = 0;
 };
 
@@ -119,19 +119,19 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
   const Vec2 c = am.centroid;
   Vec2 force{};
   double moment = 0.0;  // about the IP centroid
-  // Bisector rays (paper rule only): the caller's, or built here into
-  // thread-local scratch (a RaySet is 2 KB that would otherwise be zeroed
-  // on every call).
-  static thread_local RaySet own_cp, own_tp;
-  RaySpan rays_cp{cp.rays, cp.ray_count}, rays_tp{tp.rays, tp.ray_count};
+  // Bisectors (paper rule only): the caller's, or built here into
+  // thread-local scratch (a BisectorSet is 1 KB that would otherwise be
+  // zeroed on every call).
+  static thread_local BisectorSet own_cp, own_tp;
+  BisectorSpan rays_cp{cp.bisectors, cp.bisector_count}, rays_tp{tp.bisectors, tp.bisector_count};
   if (rule == Integration::kPaperBisector) {
-    if (!rays_cp.ray) {
-      own_cp.count = bisector_rays(*cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.ray.data());
-      rays_cp = {own_cp.ray.data(), own_cp.count};
+    if (!rays_cp.b) {
+      own_cp.count = bisectors(*cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.b.data());
+      rays_cp = {own_cp.b.data(), own_cp.count};
     }
-    if (!rays_tp.ray) {
-      own_tp.count = bisector_rays(*tp.poly, tp.small_edge, tp.small_edge_rays, own_tp.ray.data());
-      rays_tp = {own_tp.ray.data(), own_tp.count};
+    if (!rays_tp.b) {
+      own_tp.count = bisectors(*tp.poly, tp.small_edge, tp.small_edge_rays, own_tp.b.data());
+      rays_tp = {own_tp.b.data(), own_tp.count};
     }
   }
   // A vertex where an edge on CP's boundary starts or ends is on that
@@ -179,9 +179,9 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
     cr.count = 0;
     if (rule == Integration::kPaperBisector) {
       if (use_cp)
-        for (int r = 0; r < rays_cp.count; ++r) cr.add(lines_cp.crossing(rays_cp.ray[r]));
+        for (int r = 0; r < rays_cp.count; ++r) cr.add(lines_cp.crossing(rays_cp.b[r]));
       if (use_tp)
-        for (int r = 0; r < rays_tp.count; ++r) cr.add(lines_tp.crossing(rays_tp.ray[r]));
+        for (int r = 0; r < rays_tp.count; ++r) cr.add(lines_tp.crossing(rays_tp.b[r]));
     } else {
       auto add = [&cr](double t) { cr.add(t); };
       if (use_cp) add_envelope_breaks(lines_cp, add);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace dda {
 
@@ -50,14 +51,21 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
   return best;
 }
 
-int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out) {
+namespace {
+
+// bisector_rays (Out = Ray) and bisectors (Out = Bisector): one walk, so the
+// two give the same rays in the same order.
+template <class Out>
+int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Out* out) {
+  constexpr bool kDraw = std::is_same_v<Out, Ray>;
   const int n = poly.count;
   int count = 0;
   // Inward bisector at vertex i, between edges i-1 and i.
   auto vertex_dir = [&](int i) { return normalized(-(poly.normal(poly.prev(i)) + poly.normal(i))); };
   std::array<bool, kMaxVertices> replaced{};
+  const double small2 = small_edge * small_edge;  // squared: no square root per edge
   for (int e = 0; e < n; ++e) {
-    if (length(poly.edge(e)) >= small_edge) continue;
+    if (length_squared(poly.edge(e)) >= small2) continue;
     const int a = e, b = poly.next(e);
     if (replaced[a] || replaced[b]) continue;  // consecutive small edges: first one wins
     // Virtual node: crossing of the bisectors from v_a and v_b. By symmetry
@@ -69,14 +77,33 @@ int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ra
     if (std::fabs(den) < 1e-14) continue;  // parallel bisectors (cannot happen when convex)
     const double s = cross(pb - pa, db) / den;
     const Vec2 node = pa + s * da;
-    const Vec2 dir = normalized(-(poly.normal(poly.prev(a)) + poly.normal(b)));
     if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced[a] = replaced[b] = true;
     // The node is as far from edge e's line as from its neighbours'.
-    out[count++] = {node, dir, poly.prev(a), b, dot(poly.normal(e), pa - node)};
+    const Bisector lines{poly.prev(a), b, dot(poly.normal(e), pa - node)};
+    if constexpr (kDraw)
+      out[count++] = {node, normalized(-(poly.normal(poly.prev(a)) + poly.normal(b))), lines};
+    else
+      out[count++] = lines;
   }
-  for (int i = 0; i < n; ++i)
-    if (!replaced[i]) out[count++] = {poly.vertex(i), vertex_dir(i), poly.prev(i), i, 0.0};
+  for (int i = 0; i < n; ++i) {
+    if (replaced[i]) continue;
+    const Bisector lines{poly.prev(i), i, 0.0};
+    if constexpr (kDraw)
+      out[count++] = {poly.vertex(i), vertex_dir(i), lines};
+    else
+      out[count++] = lines;
+  }
   return count;
+}
+
+}  // namespace
+
+int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out) {
+  return make_bisectors(poly, small_edge, mode, out);
+}
+
+int bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Bisector* out) {
+  return make_bisectors(poly, small_edge, mode, out);
 }
 
 }  // namespace dda

@@ -175,6 +175,7 @@ void Simulation::build_blocks() {
   acc_.assign(n, Vec6::Zero());
   force_.assign(n, Vec6::Zero());
   step_disp_.assign(n, Vec6::Zero());
+  step_motion2_.assign(n, 0.0);
   start_centroid_.assign(n, Vec2{});
   disp_.assign(n, Vec6::Zero());
   stress_.assign(n, Vec3::Zero());
@@ -221,14 +222,14 @@ void Simulation::build_blocks() {
   }
   boxes_.resize(n);
   // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
-  ray_offset_.assign(n, 0);
-  ray_count_.assign(n, 0);
+  bisector_offset_.assign(n, 0);
+  bisector_count_.assign(n, 0);
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    ray_offset_[i] = total;
+    bisector_offset_[i] = total;
     total += 2 * poly_[i].count;
   }
-  ray_store_.resize(static_cast<std::size_t>(total));
+  bisector_store_.resize(static_cast<std::size_t>(total));
 }
 
 void Simulation::choose_broad_phase_skin() {
@@ -330,7 +331,13 @@ void Simulation::move_blocks() {
     Polygon& p = poly_[i];
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
-    for (int k = 0; k < p.count; ++k) p.v[k] += point_displacement(c, p.v[k], dd);
+    double motion2 = 0.0;  // the largest vertex motion of the step, squared (for check_state)
+    for (int k = 0; k < p.count; ++k) {
+      const Vec2 u = point_displacement(c, p.v[k], dd);
+      p.v[k] += u;
+      motion2 = std::max(motion2, length_squared(u));
+    }
+    step_motion2_[i] = motion2;
     if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
     update_block_geometry(i);
     body_force(i);
@@ -363,8 +370,8 @@ void Simulation::update_block_geometry(int i) {
   boxes_[i] = bounds(poly_[i]);
   tol_[i] = geometric_tolerance(poly_[i]);
   if (scene_.contact.integration == Integration::kPaperBisector)
-    ray_count_[i] = bisector_rays(poly_[i], scene_.contact.small_edge_fraction * h_[i], scene_.contact.small_edge_rays,
-                                  ray_store_.data() + ray_offset_[i]);
+    bisector_count_[i] = bisectors(poly_[i], scene_.contact.small_edge_fraction * h_[i], scene_.contact.small_edge_rays,
+                                   bisector_store_.data() + bisector_offset_[i]);
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
   density_[i] = mass_[i] / moments_[i].area;
@@ -542,9 +549,9 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
   const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,
-                             ray_store_.data() + ray_offset_[cp], ray_count_[cp]};
+                             bisector_store_.data() + bisector_offset_[cp], bisector_count_[cp]};
   const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays,
-                             ray_store_.data() + ray_offset_[tp], ray_count_[tp]};
+                             bisector_store_.data() + bisector_offset_[tp], bisector_count_[tp]};
   const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol, source.data());  // Eqs. 11-20
   if (!nf.valid) return false;
 
@@ -663,12 +670,9 @@ void Simulation::check_state() {
       s << "area collapsed to " << moments_[i].area << " m^2";
       stop(i, s.str());
     }
-    // Largest vertex motion of this step: |T(p) dd| at the vertices.
-    // (Squared: no square root per vertex and step.)
-    double motion2 = 0.0;
-    const Polygon& p = poly_[i];
-    for (int k = 0; k < p.count; ++k)
-      motion2 = std::max(motion2, length_squared(point_displacement(moments_[i].centroid, p.v[k], step_disp_[i])));
+    // Largest vertex motion of this step, |T(p) dd| at the vertices (squared,
+    // recorded by move_blocks as it moved them).
+    const double motion2 = step_motion2_[i];
     if (motion2 > motion_limit * motion_limit) {
       const double motion = std::sqrt(motion2);
       std::ostringstream s;

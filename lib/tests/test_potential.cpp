@@ -65,7 +65,7 @@ TEST_CASE("a small edge's virtual node adds to or replaces the vertex rays", "[p
 
 TEST_CASE("each bisector ray is where its two edge lines are equally far, from d0 on", "[potential]") {
   // The contact integration finds ray crossings from the distances to the
-  // ray's two lines (Ray::line_a, line_b, d0), not from origin and dir: the
+  // ray's two lines (Ray::lines), not from origin and dir: the
   // two descriptions must be the same ray. Polygons with small edges (so
   // virtual nodes occur), both small-edge modes.
   const double c = 0.01 / std::sqrt(2.0);
@@ -78,15 +78,20 @@ TEST_CASE("each bisector ray is where its two edge lines are equally far, from d
   for (const Polygon& poly : polys)
     for (SmallEdgeRays mode : {SmallEdgeRays::kVirtualAndVertex, SmallEdgeRays::kVirtualReplacesVertex}) {
       Ray rays[2 * kMaxVertices];
+      Bisector lines[2 * kMaxVertices];
       const int n = bisector_rays(poly, 0.35, mode, rays);
+      REQUIRE(bisectors(poly, 0.35, mode, lines) == n);  // what a simulation keeps: the same, in order
       for (int r = 0; r < n; ++r) {
-        const Ray& ray = rays[r];
+        CHECK(lines[r].line_a == rays[r].lines.line_a);
+        CHECK(lines[r].line_b == rays[r].lines.line_b);
+        CHECK(lines[r].d0 == rays[r].lines.d0);
+        const Bisector& ray = rays[r].lines;
         REQUIRE(ray.line_a >= 0);
         REQUIRE(ray.line_b >= 0);
         REQUIRE(ray.line_a != ray.line_b);
         if (ray.d0 > 0.0) ++virtual_rays;
         for (double s : {0.0, 0.05, 0.2, 0.4}) {
-          const Vec2 x = ray.origin + s * ray.dir;
+          const Vec2 x = rays[r].origin + s * rays[r].dir;
           const double da = line_distance(poly, ray.line_a, x), db = line_distance(poly, ray.line_b, x);
           CHECK(da == Approx(db).margin(1e-12));
           if (s == 0.0) CHECK(da == Approx(ray.d0).margin(1e-12));

@@ -24,11 +24,11 @@ struct PotentialSide {
   double kn_over_h = 0.0;   // kn / H, Pa / m
   double small_edge = 0.0;  // edges shorter than this get a virtual node, m
   SmallEdgeRays small_edge_rays = SmallEdgeRays::kVirtualAndVertex;
-  // The polygon's bisector rays for (small_edge, small_edge_rays), if the
+  // The polygon's bisectors for (small_edge, small_edge_rays), if the
   // caller keeps them (a simulation builds them once per block and step);
   // null: built on each call.
-  const Ray* rays = nullptr;
-  int ray_count = 0;
+  const Bisector* bisectors = nullptr;
+  int bisector_count = 0;
 };
 
 // Global normal force on CP (f_TP = -force) and where it acts.

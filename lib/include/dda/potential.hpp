@@ -37,17 +37,23 @@ struct InscribedCircle {
 };
 InscribedCircle inscribed_circle(const Polygon& poly);
 
-// A ray from `origin` along unit `dir` into the polygon. Every ray of
-// bisector_rays is also where two edge lines are equally far: the points
-// with d_line_a = d_line_b >= d0 (signed distances inside the lines, as in
-// exit_distance). The contact integration finds crossings in that form,
-// from distances it has anyway (vertex ray at v_i: lines i-1 and i, d0 = 0;
-// virtual node of small edge e: lines e-1 and e+1, d0 = the node's distance).
+// A bisector of Sect. 3.2.3 in the form the contact integration uses: the
+// points where edge lines line_a and line_b of a polygon are equally far,
+// d_line_a = d_line_b >= d0 (signed distances inside the lines, as in
+// exit_distance). Along an IP edge those distances are at hand, so a
+// crossing costs two subtractions and a sign test. The vertex ray at v_i
+// is lines i-1 and i with d0 = 0; the virtual node of a small edge e is
+// lines e-1 and e+1 with d0 = the node's distance from them.
+struct Bisector {
+  int line_a = -1, line_b = -1;  // edge indices of the polygon
+  double d0 = 0.0;               // distance of the ray's origin from both lines, m
+};
+
+// The same ray drawn: from `origin` along unit `dir` into the polygon.
 struct Ray {
   Vec2 origin{};
   Vec2 dir{};
-  int line_a = -1, line_b = -1;  // edge indices of the polygon the ray belongs to
-  double d0 = 0.0;               // distance of the origin from both lines, m
+  Bisector lines;
 };
 
 // What a virtual node does to the rays of a small edge's two vertices.
@@ -68,6 +74,9 @@ enum class SmallEdgeRays {
 // replaces the two vertex rays. Returns the number of rays written to `out`,
 // at most 2 * poly.count (out must hold that many).
 int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out);
+// The same rays (count and order) as bisectors only: what a simulation
+// rebuilds per block and step (no direction, so no square root per vertex).
+int bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Bisector* out);
 // The replacing form (at most poly.count rays).
 inline int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
   return bisector_rays(poly, small_edge, SmallEdgeRays::kVirtualReplacesVertex, out);
@@ -92,10 +101,10 @@ inline double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray) {
   return nt / den;
 }
 
-// The bisector rays of one polygon (bisector_rays), kept so that a block's
-// rays are built once per step, not once per contact.
-struct RaySet {
-  std::array<Ray, 2 * kMaxVertices> ray;  // left uninitialised: count says how many are set
+// The bisectors of one polygon, kept so that a block's are built once per
+// step, not once per contact.
+struct BisectorSet {
+  std::array<Bisector, 2 * kMaxVertices> b;  // left uninitialised: count says how many are set
   int count = 0;
 };
 

@@ -171,6 +171,7 @@ class Simulation {
   std::vector<AreaMoments> moments_;
   std::vector<Vec6> vel_, acc_, force_, step_disp_, disp_;
   std::vector<Vec2> start_centroid_;  // centroid at the start of the step (friction history)
+  std::vector<double> step_motion2_;  // largest vertex motion of the step, squared, m^2 (guard)
   std::vector<Vec3> stress_;
 
   // Per-block constants and bookkeeping.
@@ -194,10 +195,10 @@ class Simulation {
   int threads_ = 1;
   std::vector<ContactInfo> contact_info_;
   std::vector<Aabb> boxes_;
-  // Bisector rays of each block (paper integration rule), rebuilt with the
-  // geometry: block i's rays are ray_store_[ray_offset_[i] ...], count ray_count_[i].
-  std::vector<Ray> ray_store_;
-  std::vector<int> ray_offset_, ray_count_;
+  // Bisectors of each block (paper integration rule), rebuilt with the
+  // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count bisector_count_[i].
+  std::vector<Bisector> bisector_store_;
+  std::vector<int> bisector_offset_, bisector_count_;
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last
