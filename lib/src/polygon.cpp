@@ -179,8 +179,9 @@ double perimeter(const Polygon& poly) {
   return l;
 }
 
-double geometric_tolerance(const Polygon& poly) {
-  const Aabb b = bounds(poly);
+double geometric_tolerance(const Polygon& poly) { return geometric_tolerance(bounds(poly)); }
+
+double geometric_tolerance(const Aabb& b) {
   const double coord = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
   const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
   return kRoundoffUlps * DBL_EPSILON * (coord + size);

@@ -368,7 +368,7 @@ void Simulation::update_block_geometry(int i) {
   update_normals(poly_[i]);
   moments_[i] = area_moments(poly_[i]);
   boxes_[i] = bounds(poly_[i]);
-  tol_[i] = geometric_tolerance(poly_[i]);
+  tol_[i] = geometric_tolerance(boxes_[i]);
   if (scene_.contact.integration == Integration::kPaperBisector)
     bisector_count_[i] = bisectors(poly_[i], scene_.contact.small_edge_fraction * h_[i], scene_.contact.small_edge_rays,
                                    bisector_store_.data() + bisector_offset_[i]);

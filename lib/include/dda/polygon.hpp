@@ -101,6 +101,8 @@ double perimeter(const Polygon& poly);
 // Absolute tolerance for predicates on this polygon: kRoundoffUlps * eps times
 // (largest |coordinate| + diameter). Scales with offsets and with size.
 double geometric_tolerance(const Polygon& poly);
+// The same from the polygon's bounds (a caller that has them).
+double geometric_tolerance(const Aabb& bounds);
 
 enum class PointLocation { kInside, kOnBoundary, kOutside };
 
