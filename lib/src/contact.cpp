@@ -33,20 +33,24 @@ struct Crossings {
 // a + t (b - a), t in [0, 1]: d_i(t) = c_i + s_i t (Eq. 13), so that
 // d_exit(t) = min_i d_i(t) (Eq. 14). Built once per edge and side; every
 // demarcation point of the edge, and every ray test, reuses them.
+// kN: the polygon's vertex count when known at compile time (0: read it),
+// so that the loops over a quadrilateral's lines are unrolled.
+template <int kN>
 struct EdgeLines {
   std::array<double, kMaxVertices> c, s;  // left uninitialised: the first `count` are set
-  int count = 0;
+  int count = kN;
   void build(const Polygon& poly, Vec2 a, Vec2 ab) {
-    count = poly.count;
-    for (int i = 0; i < count; ++i) {
+    if (!kN) count = poly.count;
+    for (int i = 0; i < size(); ++i) {
       const Vec2 n = poly.normal(i);
       c[static_cast<std::size_t>(i)] = dot(n, poly.vertex(i) - a);
       s[static_cast<std::size_t>(i)] = -dot(n, ab);
     }
   }
+  int size() const { return kN ? kN : count; }
   double at(double t) const {
     double d = DBL_MAX;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < size(); ++i) {
       const double di = c[static_cast<std::size_t>(i)] + s[static_cast<std::size_t>(i)] * t;
       d = di < d ? di : d;
     }
@@ -54,7 +58,7 @@ struct EdgeLines {
   }
   double at_start() const {
     double d = DBL_MAX;
-    for (int i = 0; i < count; ++i) d = c[static_cast<std::size_t>(i)] < d ? c[static_cast<std::size_t>(i)] : d;
+    for (int i = 0; i < size(); ++i) d = c[static_cast<std::size_t>(i)] < d ? c[static_cast<std::size_t>(i)] : d;
     return d;
   }
   // Where the edge crosses bisector `ray` (Sect. 3.2.3): d_a(t) = d_b(t) >=
@@ -76,18 +80,18 @@ struct EdgeLines {
 // Kinks of the lower envelope of d_i(t) = c_i + s_i t on (0, 1). Walks the
 // envelope from t = 0: at each step the next kink is the earliest crossing
 // with a line that falls faster than the current one.
-template <class Add>
-void add_envelope_breaks(const EdgeLines& lines, Add&& add) {
+template <class Lines, class Add>
+void add_envelope_breaks(const Lines& lines, Add&& add) {
   const auto& c = lines.c;
   const auto& s = lines.s;
   int cur = 0;
-  for (int i = 1; i < lines.count; ++i)
+  for (int i = 1; i < lines.size(); ++i)
     if (c[i] < c[cur] || (c[i] == c[cur] && s[i] < s[cur])) cur = i;
   double t = 0.0;
-  for (int guard = 0; guard < lines.count; ++guard) {
+  for (int guard = 0; guard < lines.size(); ++guard) {
     int next = -1;
     double tn = 1.0;
-    for (int j = 0; j < lines.count; ++j) {
+    for (int j = 0; j < lines.size(); ++j) {
       if (s[j] >= s[cur]) continue;
       const double tj = (c[j] - c[cur]) / (s[cur] - s[j]);
       if (tj > t && tj < tn) {
@@ -107,10 +111,10 @@ struct BisectorSpan {
   int count = 0;
 };
 
-}  // namespace
-
-NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
-                                 Integration rule, double tol, const IpEdge* source) {
+// normal_contact_force for CP and TP with kNc and kNt vertices (0: any).
+template <int kNc, int kNt>
+NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
+                            double tol, const IpEdge* source) {
   NormalForce out;
   if (ip.count < 3) return out;
   const AreaMoments am = area_centroid(ip);
@@ -146,7 +150,8 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
       if ((in.known() && !in.on_contact) || (out_edge.known() && !out_edge.on_contact)) zero_tp |= bit;
     }
   }
-  EdgeLines lines_cp, lines_tp;
+  EdgeLines<kNc> lines_cp;
+  EdgeLines<kNt> lines_tp;
   Crossings cr;
   for (int e = 0; e < ip.count; ++e) {
     const int e1 = ip.next(e);
@@ -247,6 +252,14 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
   out.point = c + lambda * (perp_left(force) / fl);
   out.valid = true;
   return out;
+}
+
+}  // namespace
+
+NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
+                                 Integration rule, double tol, const IpEdge* source) {
+  if (cp.poly->count == 4 && tp.poly->count == 4) return contact_force_n<4, 4>(cp, tp, ip, rule, tol, source);
+  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source);
 }
 
 void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol) {

@@ -91,29 +91,33 @@ namespace {
 // and snapped to 0, so the line does not cut.
 // witness: see overlap_and_intersection. Axis j < b.count is edge j of B,
 // b.count + i is edge i of A.
-template <bool kCuts>
-OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+// kA, kB: the vertex counts when known at compile time (0: read them), so
+// that the common quadrilateral pair runs unrolled; the same operations in
+// the same order either way.
+template <bool kCuts, int kA = 0, int kB = 0>
+OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+  const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   // The distance of edge line j of B to A (> 0: A lies outside it), and of
   // edge line i of A to B.
   auto b_axis = [&](int j) {
     const Vec2 n = b.normal(j);
     double lo = DBL_MAX;
-    for (int i = 0; i < a.count; ++i) lo = std::min(lo, dot(n, a.vertex(i)));
+    for (int i = 0; i < na; ++i) lo = std::min(lo, dot(n, a.vertex(i)));
     return lo - dot(n, b.vertex(j));
   };
   if (witness && *witness >= 0) {
     const int w = *witness;
-    if (w < b.count) {
+    if (w < nb) {
       if (b_axis(w) > tol) return OverlapState::kSeparate;
-    } else if (w - b.count < a.count) {
-      const Vec2 n = a.normal(w - b.count);
+    } else if (w - nb < na) {
+      const Vec2 n = a.normal(w - nb);
       double lo = DBL_MAX;
-      for (int j = 0; j < b.count; ++j) lo = std::min(lo, dot(n, b.vertex(j)));
-      if (lo - dot(n, a.vertex(w - b.count)) > tol) return OverlapState::kSeparate;
+      for (int j = 0; j < nb; ++j) lo = std::min(lo, dot(n, b.vertex(j)));
+      if (lo - dot(n, a.vertex(w - nb)) > tol) return OverlapState::kSeparate;
     }
   }
   double d = -DBL_MAX;
-  for (int j = 0; j < b.count; ++j) {
+  for (int j = 0; j < nb; ++j) {
     d = std::max(d, b_axis(j));
     if (d > tol) {
       if (witness) *witness = j;
@@ -121,10 +125,10 @@ OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std
     }
   }
   std::uint32_t mask = 0;
-  for (int i = 0; i < a.count; ++i) {
+  for (int i = 0; i < na; ++i) {
     const Vec2 n = a.normal(i);
     double lo = DBL_MAX, hi = -DBL_MAX;
-    for (int j = 0; j < b.count; ++j) {
+    for (int j = 0; j < nb; ++j) {
       const double x = dot(n, b.vertex(j));
       lo = std::min(lo, x);
       if (kCuts) hi = std::max(hi, x);
@@ -132,13 +136,19 @@ OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std
     const double ai = dot(n, a.vertex(i));
     d = std::max(d, lo - ai);
     if (d > tol) {
-      if (witness) *witness = b.count + i;
+      if (witness) *witness = nb + i;
       return OverlapState::kSeparate;
     }
     if (kCuts && hi - ai > 0.5 * tol) mask |= std::uint32_t{1} << i;
   }
   if (kCuts) *cuts = mask;
   return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
+}
+
+template <bool kCuts>
+OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+  if (a.count == 4 && b.count == 4) return separating_axes_n<kCuts, 4, 4>(a, b, tol, cuts, witness);
+  return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
 }
 
 // Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.
