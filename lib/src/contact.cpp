@@ -278,22 +278,37 @@ void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol) {
 double potential_integral(const PotentialSide& side, const Polygon& region, double tol) {
   // Cell of edge i: where d_i <= d_j for all j, i.e. (n_j - n_i).x <=
   // n_j.v_j - n_i.v_i. On it phi = kn/H d_i is linear, so its integral is
-  // area * phi(cell centroid).
+  // area * phi(cell centroid). Each cell is cut from the region in two
+  // small ping-pong rings (not Polygon copies: no normals are needed).
   const Polygon& p = *side.poly;
+  const double snap = tol * 1e-3;  // a vertex this close to a cell line is on it
   double total = 0.0;
+  std::array<Vec2, kMaxVertices> ring[2];  // left uninitialised: counts say how many are set
+  std::array<double, kMaxVertices> d;
   for (int i = 0; i < p.count; ++i) {
-    Polygon cell = region;
     const Vec2 ni = p.normal(i);
     const double ci = dot(ni, p.vertex(i));
-    for (int j = 0; j < p.count && cell.count >= 3; ++j) {
+    const Vec2* cell = region.v.data();
+    int count = region.count, next = 0;
+    for (int j = 0; j < p.count && count >= 3; ++j) {
       if (j == i) continue;
       const Vec2 nj = p.normal(j);
-      clip_half_plane(cell, nj - ni, dot(nj, p.vertex(j)) - ci, tol * 1e-3);
+      const Vec2 normal = nj - ni;
+      const double offset = dot(nj, p.vertex(j)) - ci;
+      for (int k = 0; k < count; ++k) {
+        double dk = dot(normal, cell[k]) - offset;
+        if (std::fabs(dk) <= snap) dk = 0.0;
+        d[static_cast<std::size_t>(k)] = dk;
+      }
+      count = clip_ring(cell, d.data(), count, ring[next].data());
+      if (count < 3) count = 0;
+      cell = ring[next].data();
+      next = 1 - next;
     }
-    if (cell.count < 3) continue;
-    const AreaMoments m = area_moments(cell);
-    const double d = dot(ni, p.vertex(i) - m.centroid);
-    total += m.area * side.kn_over_h * std::max(d, 0.0);
+    if (count < 3) continue;
+    const AreaMoments m = area_centroid(cell, count);
+    const double dc = dot(ni, p.vertex(i) - m.centroid);
+    total += m.area * side.kn_over_h * std::max(dc, 0.0);
   }
   return total;
 }

@@ -93,14 +93,14 @@ namespace {
 // kSecond: also the second moments (area_centroid leaves them out; the
 // area and centroid are the same bits either way).
 template <bool kSecond>
-AreaMoments green_moments(const Polygon& poly) {
+AreaMoments green_moments(const Vec2* v, int count) {
   AreaMoments m;
-  if (poly.count < 3) return m;
-  const Vec2 o = poly.v[0];
+  if (count < 3) return m;
+  const Vec2 o = v[0];
   double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
-  for (int i = 0; i < poly.count; ++i) {
-    const Vec2 a = poly.vertex(i) - o;
-    const Vec2 b = poly.vertex(poly.next(i)) - o;
+  for (int i = 0; i < count; ++i) {
+    const Vec2 a = v[i] - o;
+    const Vec2 b = v[i + 1 == count ? 0 : i + 1] - o;
     const double c = cross(a, b);
     s += c;
     sx += c * (a.x + b.x);
@@ -128,9 +128,11 @@ AreaMoments green_moments(const Polygon& poly) {
 
 }  // namespace
 
-AreaMoments area_moments(const Polygon& poly) { return green_moments<true>(poly); }
+AreaMoments area_moments(const Polygon& poly) { return green_moments<true>(poly.v.data(), poly.count); }
 
-AreaMoments area_centroid(const Polygon& poly) { return green_moments<false>(poly); }
+AreaMoments area_centroid(const Polygon& poly) { return green_moments<false>(poly.v.data(), poly.count); }
+
+AreaMoments area_centroid(const Vec2* ring, int count) { return green_moments<false>(ring, count); }
 
 double area(const Polygon& poly) {
   if (poly.count < 3) return 0.0;

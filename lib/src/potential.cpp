@@ -62,9 +62,21 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
   int count = 0;
   // Inward bisector at vertex i, between edges i-1 and i.
   auto vertex_dir = [&](int i) { return normalized(-(poly.normal(poly.prev(i)) + poly.normal(i))); };
-  std::array<bool, kMaxVertices> replaced{};
   const double small2 = small_edge * small_edge;  // squared: no square root per edge
-  for (int e = 0; e < n; ++e) {
+  int first_small = 0;
+  while (first_small < n && length_squared(poly.edge(first_small)) >= small2) ++first_small;
+  if (first_small == n) {  // the usual case: no small edge, one ray per vertex
+    for (int i = 0; i < n; ++i) {
+      const Bisector lines{i == 0 ? n - 1 : i - 1, i, 0.0};
+      if constexpr (kDraw)
+        out[i] = {poly.vertex(i), vertex_dir(i), lines};
+      else
+        out[i] = lines;
+    }
+    return n;
+  }
+  std::array<bool, kMaxVertices> replaced{};
+  for (int e = first_small; e < n; ++e) {
     if (length_squared(poly.edge(e)) >= small2) continue;
     const int a = e, b = poly.next(e);
     if (replaced[a] || replaced[b]) continue;  // consecutive small edges: first one wins

@@ -82,6 +82,8 @@ struct AreaMoments {
 AreaMoments area_moments(const Polygon& poly);
 // Area and centroid only (second moments left 0), bit-identical to area_moments'.
 AreaMoments area_centroid(const Polygon& poly);
+// The same for a CCW ring of `count` points (no normals needed).
+AreaMoments area_centroid(const Vec2* ring, int count);
 double area(const Polygon& poly);
 Vec2 centroid(const Polygon& poly);
 
