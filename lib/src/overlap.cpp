@@ -181,8 +181,10 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
   const int* in_label = target_label.data();
   int in_count = target.count;
   int next_buf = 0;
-  for (int c = 0; c < contact.count && in_count >= 3; ++c) {
-    if (!(lines >> c & 1u)) continue;
+  // Only the lines whose bit is set, in increasing order.
+  if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
+  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
+    const int c = __builtin_ctz(lines);
     const Vec2 nc = contact.normal(c);
     const Vec2 pc = contact.vertex(c);
     bool cuts = false;
@@ -190,7 +192,7 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
       double d = dot(nc, in[i] - pc);
       if (std::fabs(d) <= tol) d = 0.0;  // on the line: no duplicate vertex, no sliver edge
       dist[static_cast<std::size_t>(i)] = d;
-      cuts = cuts || d > 0.0;
+      cuts |= d > 0.0;
     }
     if (!cuts) continue;
     Ring& out = buf[next_buf];
