@@ -98,23 +98,30 @@ template <bool kCuts, int kA = 0, int kB = 0>
 OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   // The distance of edge line j of B to A (> 0: A lies outside it), and of
-  // edge line i of A to B.
+  // edge line i of A to B; the latter also gives how far B's farthest vertex
+  // lies outside that line (*beyond, for the cut mask).
   auto b_axis = [&](int j) {
     const Vec2 n = b.normal(j);
     double lo = DBL_MAX;
     for (int i = 0; i < na; ++i) lo = std::min(lo, dot(n, a.vertex(i)));
     return lo - dot(n, b.vertex(j));
   };
+  auto a_axis = [&](int i, double* beyond) {
+    const Vec2 n = a.normal(i);
+    double lo = DBL_MAX, hi = -DBL_MAX;
+    for (int j = 0; j < nb; ++j) {
+      const double x = dot(n, b.vertex(j));
+      lo = std::min(lo, x);
+      if (kCuts) hi = std::max(hi, x);
+    }
+    const double ai = dot(n, a.vertex(i));
+    if (kCuts) *beyond = hi - ai;
+    return lo - ai;
+  };
+  double beyond = 0.0;
   if (witness && *witness >= 0) {
     const int w = *witness;
-    if (w < nb) {
-      if (b_axis(w) > tol) return OverlapState::kSeparate;
-    } else if (w - nb < na) {
-      const Vec2 n = a.normal(w - nb);
-      double lo = DBL_MAX;
-      for (int j = 0; j < nb; ++j) lo = std::min(lo, dot(n, b.vertex(j)));
-      if (lo - dot(n, a.vertex(w - nb)) > tol) return OverlapState::kSeparate;
-    }
+    if (w < nb ? b_axis(w) > tol : w - nb < na && a_axis(w - nb, &beyond) > tol) return OverlapState::kSeparate;
   }
   double d = -DBL_MAX;
   for (int j = 0; j < nb; ++j) {
@@ -126,20 +133,12 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
   }
   std::uint32_t mask = 0;
   for (int i = 0; i < na; ++i) {
-    const Vec2 n = a.normal(i);
-    double lo = DBL_MAX, hi = -DBL_MAX;
-    for (int j = 0; j < nb; ++j) {
-      const double x = dot(n, b.vertex(j));
-      lo = std::min(lo, x);
-      if (kCuts) hi = std::max(hi, x);
-    }
-    const double ai = dot(n, a.vertex(i));
-    d = std::max(d, lo - ai);
+    d = std::max(d, a_axis(i, &beyond));
     if (d > tol) {
       if (witness) *witness = nb + i;
       return OverlapState::kSeparate;
     }
-    if (kCuts && hi - ai > 0.5 * tol) mask |= std::uint32_t{1} << i;
+    if (kCuts && beyond > 0.5 * tol) mask |= std::uint32_t{1} << i;
   }
   if (kCuts) *cuts = mask;
   return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
@@ -157,16 +156,17 @@ constexpr int contact_label(int c) { return -1 - c; }
 // The target cut by the lines of the contact's edges whose bit is set in
 // `lines` (Table 3), with edge labels; normals taken from the labelled
 // source edges. Two buffers, ping-ponged: each cut of a convex polygon by a
-// half-plane adds at most one vertex, so n + m fits in kMaxVertices.
-// Thread-local scratch: a Polygon is 1 KB that would otherwise be zeroed on
-// every call. The first input is the target itself, and a line that leaves
-// every vertex inside (the usual case: a shallow contact is cut by one or
-// two of the contact polygon's edge lines) costs one distance per vertex
-// and no copy.
+// half-plane adds at most one vertex, so n + m fits in kMaxVertices. They
+// are thread-local scratch: a local ring would be zeroed on every call
+// (Vec2 zero-initialises); the distances too (measured: fewer instructions
+// than a stack array). The first input is the target itself, and a line
+// that leaves every vertex inside (the usual case: a shallow contact is cut
+// by one or two of the contact polygon's edge lines) costs one distance per
+// vertex and no copy.
 void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
                  IpEdge* source) {
   struct Ring {
-    std::array<Vec2, kMaxVertices> v;    // left uninitialised: count says how many are set
+    std::array<Vec2, kMaxVertices> v;  // the ring's count says how many are in use
     std::array<int, kMaxVertices> label;
   };
   static thread_local Ring buf[2];

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 
 namespace dda {
@@ -63,23 +64,14 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
   // Inward bisector at vertex i, between edges i-1 and i.
   auto vertex_dir = [&](int i) { return normalized(-(poly.normal(poly.prev(i)) + poly.normal(i))); };
   const double small2 = small_edge * small_edge;  // squared: no square root per edge
-  int first_small = 0;
-  while (first_small < n && length_squared(poly.edge(first_small)) >= small2) ++first_small;
-  if (first_small == n) {  // the usual case: no small edge, one ray per vertex
-    for (int i = 0; i < n; ++i) {
-      const Bisector lines{i == 0 ? n - 1 : i - 1, i, 0.0};
-      if constexpr (kDraw)
-        out[i] = {poly.vertex(i), vertex_dir(i), lines};
-      else
-        out[i] = lines;
-    }
-    return n;
-  }
-  std::array<bool, kMaxVertices> replaced{};
-  for (int e = first_small; e < n; ++e) {
+  std::uint32_t replaced = 0;                      // bit i: vertex i's ray gave way to a virtual node
+  int e = 0;  // the first small edge (usually none: straight to the vertex rays)
+  while (e < n && length_squared(poly.edge(e)) >= small2) ++e;
+  for (; e < n; ++e) {
     if (length_squared(poly.edge(e)) >= small2) continue;
     const int a = e, b = poly.next(e);
-    if (replaced[a] || replaced[b]) continue;  // consecutive small edges: first one wins
+    const std::uint32_t ab_bits = (std::uint32_t{1} << a) | (std::uint32_t{1} << b);
+    if (replaced & ab_bits) continue;  // consecutive small edges: first one wins
     // Virtual node: crossing of the bisectors from v_a and v_b. By symmetry
     // of the construction it lies on the line equidistant from edges e-1 and
     // e+1 at distance (|e| / 2) / tan-ish from the edge; solve the 2x2 system.
@@ -89,7 +81,7 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
     if (std::fabs(den) < 1e-14) continue;  // parallel bisectors (cannot happen when convex)
     const double s = cross(pb - pa, db) / den;
     const Vec2 node = pa + s * da;
-    if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced[a] = replaced[b] = true;
+    if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced |= ab_bits;
     // The node is as far from edge e's line as from its neighbours'.
     const Bisector lines{poly.prev(a), b, dot(poly.normal(e), pa - node)};
     if constexpr (kDraw)
@@ -98,8 +90,8 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
       out[count++] = lines;
   }
   for (int i = 0; i < n; ++i) {
-    if (replaced[i]) continue;
-    const Bisector lines{poly.prev(i), i, 0.0};
+    if (replaced >> i & 1u) continue;
+    const Bisector lines{i == 0 ? n - 1 : i - 1, i, 0.0};
     if constexpr (kDraw)
       out[count++] = {poly.vertex(i), vertex_dir(i), lines};
     else

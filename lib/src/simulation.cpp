@@ -184,6 +184,7 @@ void Simulation::build_blocks() {
   tol_.assign(n, 0.0);
   radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
+  kn_over_h_.assign(n, 0.0);
   elastic_.assign(n, Mat3::Zero());
   fixed_.assign(n, 1);
   group_.assign(n, 0);
@@ -273,8 +274,10 @@ void Simulation::choose_potential_length() {
     case HRule::kGiven: h = c.h; break;
     case HRule::kInscribedRadius: break;
   }
-  for (int i = 0; i < block_count(); ++i)
+  for (int i = 0; i < block_count(); ++i) {
     h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(poly_[i]).radius : h;
+    kn_over_h_[i] = c.kn / h_[i];
+  }
 }
 
 void Simulation::step() { run_steps(1); }
@@ -548,9 +551,9 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
   if (overlap_and_intersection(a, b, tol, ip, source.data(), witness) != OverlapState::kOverlapping) return false;
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
-  const PotentialSide side_a{&a, c.kn / h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,
+  const PotentialSide side_a{&a, kn_over_h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,
                              bisector_store_.data() + bisector_offset_[cp], bisector_count_[cp]};
-  const PotentialSide side_b{&b, c.kn / h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays,
+  const PotentialSide side_b{&b, kn_over_h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays,
                              bisector_store_.data() + bisector_offset_[tp], bisector_count_[tp]};
   const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol, source.data());  // Eqs. 11-20
   if (!nf.valid) return false;
@@ -819,14 +822,13 @@ Energy Simulation::energy() const {
     e.gravity -= mass(i) * dot(scene_.gravity, moments_[i].centroid);
     if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic_[i].ldlt().solve(stress_[i]));
   }
-  const ContactParams& c = scene_.contact;
   for (const ContactInfo& ci : contact_info_) {
     const Polygon& a = poly_[ci.cp];
     const Polygon& b = poly_[ci.tp];
     const double tol = pair_tolerance(a, b);
     const Polygon ip = intersection_polygon(a, b, tol);
-    const PotentialSide sa{&a, c.kn / h_[ci.cp], 0.0};
-    const PotentialSide sb{&b, c.kn / h_[ci.tp], 0.0};
+    const PotentialSide sa{&a, kn_over_h_[ci.cp], 0.0};
+    const PotentialSide sb{&b, kn_over_h_[ci.tp], 0.0};
     e.contact += contact_energy(sa, sb, ip, tol);
   }
   return e;

@@ -50,7 +50,9 @@ TEST_CASE("bisector rays and the virtual node of a small edge", "[potential]") {
   CHECK(rays[0].origin.x == Approx(rays[0].origin.y));
   CHECK(rays[0].dir.x == Approx(-std::sqrt(0.5)));
   CHECK(rays[0].dir.y == Approx(-std::sqrt(0.5)));
-  CHECK(segment_ray_crossing({0, 0.5}, {1, 0.5}, rays[0]) == Approx(0.5));
+  // It passes through the centre (0.5, 0.5), ahead of its origin.
+  CHECK(cross(Vec2{0.5, 0.5} - rays[0].origin, rays[0].dir) == Approx(0.0).margin(1e-12));
+  CHECK(dot(Vec2{0.5, 0.5} - rays[0].origin, rays[0].dir) > 0.0);
 }
 
 TEST_CASE("a small edge's virtual node adds to or replaces the vertex rays", "[potential]") {

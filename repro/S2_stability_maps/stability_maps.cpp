@@ -153,7 +153,7 @@ RestCase resting(double kn, bool inscribed, bool strains, bool two_high) {
 // the limit on stiff contacts the unstable mode lifts the block off within
 // the first tenth of the run and then stays bounded (it saturates: the
 // contact is open half the time), which the energy ratio alone misses.
-bool grows(dda::Scene s, double dt, int steps) {
+bool unstable(dda::Scene s, double dt, int steps) {
   s.dt = dt;
   try {
     dda::Simulation sim(s);
@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
       double lo = 0.3 * lin, hi = 3.0 * lin;
       for (int it = 0; it < 14; ++it) {
         const double mid = std::sqrt(lo * hi);
-        (grows(rc.scene, mid, 20000) ? hi : lo) = mid;
+        (unstable(rc.scene, mid, 20000) ? hi : lo) = mid;
       }
       const double emp = std::sqrt(lo * hi);
       const double cur = sim.critical_time_step(), pred = sim.predicted_critical_step(), old = old_prior(sim);

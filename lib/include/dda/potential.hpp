@@ -82,25 +82,6 @@ inline int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
   return bisector_rays(poly, small_edge, SmallEdgeRays::kVirtualReplacesVertex, out);
 }
 
-// Parameter t in [0, 1] where segment a->b meets the ray, or -1 if it does not.
-// a + t (b - a) = o + s d  ->  t = cross(o - a, d) / cross(b - a, d), s
-// likewise; the range tests are done on the numerators (signs against the
-// denominator), so a miss costs no division. Inline: called for every ray
-// and every edge of an intersection polygon.
-inline double segment_ray_crossing(Vec2 a, Vec2 b, const Ray& ray) {
-  const Vec2 ab = b - a, ao = ray.origin - a;
-  double den = cross(ab, ray.dir);
-  if (den == 0.0) return -1.0;
-  double nt = cross(ao, ray.dir), ns = cross(ao, ab);
-  if (den < 0.0) {
-    den = -den;
-    nt = -nt;
-    ns = -ns;
-  }
-  if (nt < 0.0 || nt > den || ns < 0.0) return -1.0;
-  return nt / den;
-}
-
 // The bisectors of one polygon, kept so that a block's are built once per
 // step, not once per contact.
 struct BisectorSet {

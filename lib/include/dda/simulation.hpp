@@ -176,6 +176,7 @@ class Simulation {
 
   // Per-block constants and bookkeeping.
   std::vector<double> density_, mass_, h_, tol_;  // density follows area: mass_ is conserved
+  std::vector<double> kn_over_h_;  // kn / H of each block (H is fixed at construction), Pa/m
   std::vector<Mat3> elastic_;
   std::vector<char> fixed_;
   std::vector<int> group_;
