@@ -6,6 +6,10 @@
 #include <exception>
 #include <sstream>
 
+#if defined(DDA_HAVE_OPENMP)
+#include <omp.h>
+#endif
+
 // OpenMP worksharing inside the phase functions. They are "orphaned"
 // directives: called from run_steps' parallel region they split the work of
 // one team that lives for the whole call (no thread start-up per step);
@@ -183,6 +187,7 @@ void Simulation::build_blocks() {
   mass_.assign(n, 0.0);
   tol_.assign(n, 0.0);
   radius_.assign(n, 0.0);
+  reach_radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
   kn_over_h_.assign(n, 0.0);
   elastic_.assign(n, Mat3::Zero());
@@ -290,41 +295,78 @@ void Simulation::advance_to(double t) {
 
 void Simulation::run_steps(std::int64_t count) {
   // One parallel region for all `count` steps; every thread runs the loop
-  // and the phases share out their loops (per block, per history entry,
-  // per candidate pair). Each block's and each pair's result is computed by
-  // one thread from the same inputs, and the pair forces are summed in
-  // candidate order by one thread: the same bits for any thread count.
-  // A guard's SimulationError cannot leave a parallel region: it is caught
-  // where it is thrown, every thread stops after that step, and it is
-  // rethrown here.
+  // and the phases share out their loops (per block, per near pair). Each
+  // block's and each pair's result is computed by one thread from the same
+  // inputs, and each block sums its pair forces in pair order: the same
+  // bits for any thread count. Three barriers per step (after the moves,
+  // the pair forces and the kicks), more only when the broad phase rebuilds
+  // or a guard is due. A guard's SimulationError cannot leave a parallel
+  // region: it is caught where it is thrown, every thread stops after that
+  // step, and it is rethrown here.
+  if (count <= 0) return;
+  flags_.assign(static_cast<std::size_t>(threads_), ThreadFlags{});
+  const std::int64_t first = steps_;
+  const int every = scene_.guards.energy_check_every;
   std::exception_ptr error;
-  DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1 && count > 0))
+  DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1))
   {
     for (std::int64_t k = 0; k < count; ++k) {
-      move_blocks();     // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}; geometry; body forces
-      contact_forces();  // friction history, broad phase, pair forces at t^{n+1}, summed in candidate order
-      kick();            // a^{n+1}; v^{n+1} = v^{n+1/2} + h/2 a^{n+1}
-      DDA_OMP(omp single)
-      {
-        ++steps_;
-        time_ = static_cast<double>(steps_) * dt_;
-        try {
-          check_state();  // non-finite state, collapsed area, step motion, energy growth
-        } catch (...) {
-          error = std::current_exception();
-        }
-      }  // implicit barrier: every thread sees `error` before reading it
-      if (error) break;
+      move_blocks();        // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}; geometry; body forces
+      update_near_pairs();  // only when a block left its grown box
+      pair_forces();        // friction history, overlap, pair forces at t^{n+1}
+      gather_and_kick();    // contact forces summed in pair order; a^{n+1}; v^{n+1}; per-block guards
+      // The flags were set before the kick loop's barrier: every thread
+      // takes the same branch.
+      bool failed = false;
+      for (const ThreadFlags& f : flags_) failed = failed || f.guard_failed;
+      const std::int64_t done = first + k + 1;
+      if (failed || (every > 0 && done % every == 0)) {
+        DDA_OMP(omp single)
+        {
+          steps_ = done;
+          time_ = static_cast<double>(steps_) * dt_;
+          try {
+            collect_contacts();
+            check_state();  // stops at the failed block; the energy check when due
+          } catch (...) {
+            error = std::current_exception();
+          }
+        }  // implicit barrier: every thread sees `error` before reading it
+        if (error) break;
+      }
     }
   }
   if (error) std::rethrow_exception(error);
+  steps_ = first + count;
+  time_ = static_cast<double>(steps_) * dt_;
+  collect_contacts();
 }
 
+namespace {
+
+// This thread's index in the team (0 outside a parallel region).
+int thread_index() {
+#if defined(DDA_HAVE_OPENMP)
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
+bool inside(const Aabb& b, const Aabb& grown) {
+  return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
+}
+
+}  // namespace
+
 void Simulation::move_blocks() {
-  // One pass per block (one barrier per step for all of it): the half kick
-  // and drift of Eq. 8, the moved block's geometry, its body forces.
+  // One pass per block: the half kick and drift of Eq. 8, the moved
+  // block's geometry, its body forces, and whether its box left its grown
+  // box (the broad phase's list then needs a rebuild).
   const int nb = block_count();
-  DDA_OMP(omp for schedule(static))
+  const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
+  bool left_skin = false;
+  DDA_OMP(omp for schedule(static) nowait)
   for (int i = 0; i < nb; ++i) {
     if (fixed_[i]) continue;
     vel_[i] += 0.5 * dt_ * acc_[i];
@@ -334,7 +376,7 @@ void Simulation::move_blocks() {
     Polygon& p = poly_[i];
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
-    double motion2 = 0.0;  // the largest vertex motion of the step, squared (for check_state)
+    double motion2 = 0.0;  // the largest vertex motion of the step, squared (for the guard)
     for (int k = 0; k < p.count; ++k) {
       const Vec2 u = point_displacement(c, p.v[k], dd);
       p.v[k] += u;
@@ -344,23 +386,33 @@ void Simulation::move_blocks() {
     if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
     update_block_geometry(i);
     body_force(i);
+    if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   }
+  flags_[static_cast<std::size_t>(thread_index())].left_skin = left_skin;
+  DDA_OMP(omp barrier)
 }
 
-void Simulation::update_contact_history() {
-  if (!friction_) return;
+void Simulation::update_near_pairs() {
+  // Every thread reads every flag after move_blocks' barrier: the same
+  // verdict in all of them.
+  bool rebuild = false;
+  for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
+  if (!rebuild) return;
+  DDA_OMP(omp single)
+  rebuild_near_pairs();
+}
+
+void Simulation::advance_pair_history(PairHistory& h) const {
   // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at pg; a sticking
   // pair accumulates it, a sliding pair restarts from it (kPaper) or, with
   // the return mapping, accumulates it onto the shear it was returned to
   // (pair_force). The centroids are those of the step's start configuration.
   const bool restart = scene_.contact.friction_update == FrictionUpdate::kPaper;
-  for (PairHistory& h : history_) {
-    const int cp = static_cast<int>(h.key >> 32), tp = static_cast<int>(h.key & 0xffffffffu);
-    const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(start_centroid_[cp], h.point, step_disp_[cp]);
-    const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(start_centroid_[tp], h.point, step_disp_[tp]);
-    const Vec2 dd = du_cp - du_tp;
-    h.d = h.sliding && restart ? dd : h.d + dd;
-  }
+  const int cp = static_cast<int>(h.key >> 32), tp = static_cast<int>(h.key & 0xffffffffu);
+  const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(start_centroid_[cp], h.point, step_disp_[cp]);
+  const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(start_centroid_[tp], h.point, step_disp_[tp]);
+  const Vec2 dd = du_cp - du_tp;
+  h.d = h.sliding && restart ? dd : h.d + dd;
 }
 
 void Simulation::update_geometry() {
@@ -380,32 +432,21 @@ void Simulation::update_block_geometry(int i) {
   density_[i] = mass_[i] / moments_[i].area;
 }
 
-void Simulation::find_candidate_pairs() {
-  candidates_.clear();
-  candidate_near_.clear();
+void Simulation::rebuild_near_pairs() {
+  // The pairs that may touch before the next rebuild, sorted by (i, j).
+  // Sweep: sort and sweep along x on the boxes grown by the skin; the order
+  // of the last rebuild is nearly sorted, so insertion sort is linear in
+  // practice. Every pair whose current boxes overlap is in the list as
+  // long as both boxes stay inside their grown boxes, so skipping the
+  // others gives exactly the pairs a full sweep would give, in the same
+  // order. Without the sweep: every pair with a free block, once.
   const int n = block_count();
+  std::vector<NearPair> pairs;
   if (scene_.broad_phase == BroadPhase::kNone) {
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) {
-          candidates_.emplace_back(i, j);
-          candidate_near_.push_back(-1);
-        }
-    return;
-  }
-  // Sort and sweep along x on the grown boxes, only when a block's box has
-  // left its grown box; the order of the last rebuild is nearly sorted, so
-  // insertion sort is linear in practice. Every pair whose current boxes
-  // overlap is in near_pairs_ (both boxes lie inside their grown boxes), so
-  // filtering it gives exactly the pairs a full sweep would give, in the
-  // same (sorted) order.
-  bool rebuild = skin_boxes_.size() != static_cast<std::size_t>(n);
-  for (int i = 0; i < n && !rebuild; ++i) {
-    const Aabb& b = boxes_[i];
-    const Aabb& g = skin_boxes_[i];
-    rebuild = b.lo.x < g.lo.x || b.lo.y < g.lo.y || b.hi.x > g.hi.x || b.hi.y > g.hi.y;
-  }
-  if (rebuild) {
+        if (!(fixed_[i] && fixed_[j])) pairs.push_back({i, j, -1});
+  } else {
     ++broad_phase_rebuilds_;
     skin_boxes_.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
@@ -428,7 +469,6 @@ void Simulation::find_candidate_pairs() {
       }
       order_[b] = key;
     }
-    near_pairs_.clear();
     for (std::size_t a = 0; a < order_.size(); ++a) {
       const int i = order_[a];
       for (std::size_t b = a + 1; b < order_.size(); ++b) {
@@ -436,24 +476,49 @@ void Simulation::find_candidate_pairs() {
         if (g[j].lo.x > g[i].hi.x) break;
         if (fixed_[i] && fixed_[j]) continue;
         if (g[j].lo.y > g[i].hi.y || g[i].lo.y > g[j].hi.y) continue;
-        near_pairs_.emplace_back(std::min(i, j), std::max(i, j));
+        pairs.push_back({std::min(i, j), std::max(i, j), -1});
       }
     }
-    std::sort(near_pairs_.begin(), near_pairs_.end());
-    near_witness_.assign(near_pairs_.size(), -1);
+    std::sort(pairs.begin(), pairs.end(),
+              [](const NearPair& x, const NearPair& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); });
   }
-  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
-    const auto [i, j] = near_pairs_[k];
-    if (aabb_overlap(boxes_[i], boxes_[j])) {
-      candidates_.emplace_back(i, j);
-      candidate_near_.push_back(static_cast<int>(k));
+  // A pair on both lists keeps its slot's state (witness, contact, history):
+  // one merge pass over the two sorted lists. A pair in contact now is on
+  // both (its boxes overlap, so its grown boxes do).
+  std::vector<PairResult> results(pairs.size());
+  std::size_t h = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto before = [](const NearPair& x, const NearPair& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); };
+    while (h < near_pairs_.size() && before(near_pairs_[h], pairs[k])) ++h;
+    if (h < near_pairs_.size() && near_pairs_[h].i == pairs[k].i && near_pairs_[h].j == pairs[k].j) {
+      pairs[k].witness = near_pairs_[h].witness;
+      results[k] = pair_results_[h];
     }
+  }
+  near_pairs_.swap(pairs);
+  pair_results_.swap(results);
+  // Each block's pairs in increasing order (CSR).
+  near_pair_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const NearPair& p : near_pairs_) {
+    ++near_pair_offset_[static_cast<std::size_t>(p.i) + 1];
+    ++near_pair_offset_[static_cast<std::size_t>(p.j) + 1];
+  }
+  for (int i = 0; i < n; ++i) near_pair_offset_[i + 1] += near_pair_offset_[i];
+  near_pair_index_.resize(static_cast<std::size_t>(near_pair_offset_[n]));
+  std::vector<int> fill(near_pair_offset_.begin(), near_pair_offset_.end() - 1);
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+    near_pair_index_[static_cast<std::size_t>(fill[near_pairs_[k].i]++)] = static_cast<int>(k);
+    near_pair_index_[static_cast<std::size_t>(fill[near_pairs_[k].j]++)] = static_cast<int>(k);
   }
 }
 
 void Simulation::compute_forces() {
+  // Serial: the forces at the current state (the constructor's a^0).
   for (int i = 0; i < block_count(); ++i) body_force(i);
-  contact_forces();
+  rebuild_near_pairs();
+  pair_forces();
+  for (int i = 0; i < block_count(); ++i) gather_contact_forces(i);
+  collect_contacts();
 }
 
 void Simulation::body_force(int i) {
@@ -468,77 +533,98 @@ void Simulation::body_force(int i) {
   if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
 }
 
-void Simulation::contact_forces() {
-  // 1. Serial bookkeeping in one single (one barrier): the history's
-  //    relative displacement over the step just taken (nothing to do at
-  //    construction, where the history is empty), the broad phase, and each
-  //    candidate's history.
-  DDA_OMP(omp single)
-  {
-    update_contact_history();
-    find_candidate_pairs();
-    take_over_history();
-  }
-  // 2. Pair forces, independent of each other. Split statically, one
-  //    contiguous share of the candidate list per thread: a dynamic
-  //    schedule's shared chunk counter costs a cross-core round trip per
-  //    chunk, which on a virtual machine with slow core-to-core latency cost
-  //    more than the uneven pair costs it evens out (measured: 2 threads 0.9x
-  //    of 1 thread with dynamic chunks of 16, 1.16x static). On the collapse
-  //    the two shares stayed balanced (0.338 and 0.344 s of pair work per thread): touching
-  //    and separate candidates are mixed along the sweep.
-  const long n = static_cast<long>(candidates_.size());
+void Simulation::pair_forces() {
+  // Pair forces, independent of each other. Split statically, one
+  // contiguous share of the near-pair list per thread: a dynamic
+  // schedule's shared chunk counter costs a cross-core round trip per
+  // chunk, which on a virtual machine with slow core-to-core latency cost
+  // more than the uneven pair costs it evens out (measured: 2 threads 0.9x
+  // of 1 thread with dynamic chunks of 16, 1.16x static). On the collapse
+  // the two shares stayed balanced: touching and separate pairs are mixed
+  // along the list. A pair whose boxes do not overlap is no candidate; a
+  // pair that does not touch forgets its friction history.
+  const long n = static_cast<long>(near_pairs_.size());
   DDA_OMP(omp for schedule(static))
   for (long k = 0; k < n; ++k) {
-    const std::size_t kk = static_cast<std::size_t>(k);
-    const int near = candidate_near_[kk];  // each near pair is one candidate: one thread writes its witness
-    results_[kk].active = pair_force(candidates_[kk].first, candidates_[kk].second, results_[kk],
-                                     near < 0 ? nullptr : &near_witness_[static_cast<std::size_t>(near)]);
-  }
-  DDA_OMP(omp single)
-  scatter_pair_forces();
-}
-
-void Simulation::take_over_history() {
-  // Each candidate takes over its pair's history (friction only): both
-  // lists are sorted by key, so one merge pass.
-  const std::size_t nc = candidates_.size();
-  results_.resize(nc);
-  if (friction_) {
-    std::size_t h = 0;
-    for (std::size_t k = 0; k < nc; ++k) {
-      const auto [i, j] = candidates_[k];
-      const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
-      while (h < history_.size() && history_[h].key < key) ++h;
-      PairHistory& hist = results_[k].history;
-      if (h < history_.size() && history_[h].key == key) {
-        hist = history_[h];
+    NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
+    PairResult& r = pair_results_[static_cast<std::size_t>(k)];
+    r.candidate = aabb_overlap(boxes_[p.i], boxes_[p.j]);
+    if (friction_) {
+      if (r.active && r.candidate) {
+        advance_pair_history(r.history);
       } else {
-        hist = PairHistory{};
-        hist.key = key;
+        r.history = PairHistory{};
+        r.history.key = (static_cast<std::uint64_t>(p.i) << 32) | static_cast<std::uint64_t>(p.j);
       }
     }
+    r.active = r.candidate && pair_force(p.i, p.j, r, &p.witness);
   }
 }
 
-void Simulation::scatter_pair_forces() {
-  const std::size_t nc = candidates_.size();
-  // Scatter in candidate order: the sums are the same bits for any thread
-  // count. A pair that does not touch forgets its history.
-  contact_info_.clear();
-  next_history_.clear();
-  for (std::size_t k = 0; k < nc; ++k) {
-    const PairResult& r = results_[k];
-    if (!r.active) continue;
-    const ContactInfo& info = r.info;
-    const Vec2 f = info.normal_force + info.tangential_force;
-    // Eqs. 22-23 and 28-29: into both blocks through T(pg)^T.
-    if (!fixed_[info.cp]) force_[info.cp] += point_load(moments_[info.cp].centroid, info.point, f);
-    if (!fixed_[info.tp]) force_[info.tp] -= point_load(moments_[info.tp].centroid, info.point, f);
-    contact_info_.push_back(info);
-    if (friction_) next_history_.push_back(r.history);
+void Simulation::gather_contact_forces(int i) {
+  // Block i's contact forces, Eqs. 22-23 and 28-29 through T(pg)^T, added
+  // in increasing pair order (the same bits for any thread count); and the
+  // smallest inscribed radius within its reach (itself and its candidates)
+  // for the step-motion guard.
+  double reach = radius_[i];
+  const Vec2 c = moments_[i].centroid;
+  for (int q = near_pair_offset_[i]; q < near_pair_offset_[i + 1]; ++q) {
+    const std::size_t k = static_cast<std::size_t>(near_pair_index_[static_cast<std::size_t>(q)]);
+    const PairResult& r = pair_results_[k];
+    if (!r.candidate) continue;
+    const NearPair& p = near_pairs_[k];
+    reach = std::min(reach, radius_[p.i == i ? p.j : p.i]);
+    if (!r.active || fixed_[i]) continue;
+    const Vec2 f = r.info.normal_force + r.info.tangential_force;
+    if (p.i == i) force_[i] += point_load(c, r.info.point, f);
+    else force_[i] -= point_load(c, r.info.point, f);
   }
-  if (friction_) history_.swap(next_history_);
+  reach_radius_[i] = reach;
+}
+
+void Simulation::collect_contacts() {
+  // The active pairs in pair order, for the accessors and the guards.
+  contact_info_.clear();
+  candidate_count_ = 0;
+  for (const PairResult& r : pair_results_) {
+    candidate_count_ += r.candidate ? 1 : 0;
+    if (r.active) contact_info_.push_back(r.info);
+  }
+}
+
+void Simulation::gather_and_kick() {
+  // Per block: its contact forces, a^{n+1}, the second half kick, and the
+  // per-block guards (flagged here, reported by check_state).
+  const int nb = block_count();
+  bool failed = false;
+  DDA_OMP(omp for schedule(static) nowait)
+  for (int i = 0; i < nb; ++i) {
+    gather_contact_forces(i);
+    if (fixed_[i]) continue;
+    kick_block(i);
+    if (block_fails_guards(i)) failed = true;
+  }
+  flags_[static_cast<std::size_t>(thread_index())].guard_failed = failed;
+  DDA_OMP(omp barrier)
+}
+
+void Simulation::kick_block(int i) {
+  const AreaMoments& m = moments_[i];
+  const double mass = density_[i] * m.area;
+  acc_[i][0] = force_[i][0] / mass;
+  acc_[i][1] = force_[i][1] / mass;
+  if (strains_) {
+    // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
+    acc_[i].tail<4>() = rotation_strain_acceleration(m, density_[i], force_[i].tail<4>());
+  } else {
+    acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
+  }
+  vel_[i] += 0.5 * dt_ * acc_[i];
+}
+
+void Simulation::kick() {
+  for (int i = 0; i < block_count(); ++i)
+    if (!fixed_[i]) kick_block(i);
 }
 
 bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
@@ -614,25 +700,6 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
   return true;
 }
 
-void Simulation::kick() {
-  const int nb = block_count();
-  DDA_OMP(omp for schedule(static))
-  for (int i = 0; i < nb; ++i) {
-    if (fixed_[i]) continue;
-    const AreaMoments& m = moments_[i];
-    const double mass = density_[i] * m.area;
-    acc_[i][0] = force_[i][0] / mass;
-    acc_[i][1] = force_[i][1] / mass;
-    if (strains_) {
-      // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
-      acc_[i].tail<4>() = rotation_strain_acceleration(m, density_[i], force_[i].tail<4>());
-    } else {
-      acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
-    }
-    vel_[i] += 0.5 * dt_ * acc_[i];
-  }
-}
-
 [[noreturn]] void Simulation::stop(int block, const std::string& what) const {
   std::ostringstream s;
   s << "step " << steps_ << " (t = " << time_ << " s): block " << block;
@@ -653,36 +720,35 @@ void Simulation::kick() {
   throw SimulationError(s.str());
 }
 
+bool Simulation::block_fails_guards(int i) const {
+  // Block i (free) after its kick: a non-finite state, a collapsed area, or
+  // a vertex that moved more in this step than max_step_motion of the
+  // thinnest block within its reach (itself and its candidates: a block in
+  // free flight is not stopped because a thin plate exists somewhere else).
+  const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
+                      std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
+  const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
+  return !finite || !(moments_[i].area > 0.0) || step_motion2_[i] > motion_limit * motion_limit;
+}
+
 void Simulation::check_state() {
-  // The step-motion limit of a block uses the thinnest block within its
-  // reach (itself and its broad-phase candidates): a block in free flight is
-  // not stopped because a thin plate exists somewhere else.
-  reach_radius_ = radius_;
-  for (const auto& [i, j] : candidates_) {
-    reach_radius_[i] = std::min(reach_radius_[i], radius_[j]);
-    reach_radius_[j] = std::min(reach_radius_[j], radius_[i]);
-  }
+  // The first block that fails a per-block guard, with the reason.
   for (int i = 0; i < block_count(); ++i) {
-    const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
-    if (fixed_[i]) continue;
+    if (fixed_[i] || !block_fails_guards(i)) continue;
     const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
                         std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
     if (!finite) stop(i, "non-finite velocity or position");
+    std::ostringstream s;
     if (!(moments_[i].area > 0.0)) {
-      std::ostringstream s;
       s << "area collapsed to " << moments_[i].area << " m^2";
-      stop(i, s.str());
+    } else {
+      // Largest vertex motion of this step, |T(p) dd| at the vertices
+      // (squared, recorded by move_blocks as it moved them).
+      s << "a vertex moved " << std::sqrt(step_motion2_[i]) << " m in one step, more than "
+        << scene_.guards.max_step_motion << " of the smallest inscribed radius within reach (" << reach_radius_[i]
+        << " m)";
     }
-    // Largest vertex motion of this step, |T(p) dd| at the vertices (squared,
-    // recorded by move_blocks as it moved them).
-    const double motion2 = step_motion2_[i];
-    if (motion2 > motion_limit * motion_limit) {
-      const double motion = std::sqrt(motion2);
-      std::ostringstream s;
-      s << "a vertex moved " << motion << " m in one step, more than " << scene_.guards.max_step_motion
-        << " of the smallest inscribed radius within reach (" << reach_radius_[i] << " m)";
-      stop(i, s.str());
-    }
+    stop(i, s.str());
   }
   const int every = scene_.guards.energy_check_every;
   if (every > 0 && steps_ % every == 0) {

@@ -114,9 +114,10 @@ class Simulation {
   Vec2 momentum() const;
   Energy energy() const;  // recomputes contact energy: call at output time
   const std::vector<ContactInfo>& contacts() const { return contact_info_; }
-  // Broad-phase candidate pairs of the last force evaluation (touching or
-  // not): with contacts().size() the per-pair cost of a step can be measured.
-  std::size_t candidate_count() const { return candidates_.size(); }
+  // Broad-phase candidate pairs of the last force evaluation (boxes
+  // overlapping, touching or not): with contacts().size() the per-pair cost
+  // of a step can be measured.
+  std::size_t candidate_count() const { return candidate_count_; }
   // Times the sweep broad phase rebuilt its pair list (BroadPhase::kSweep).
   std::int64_t broad_phase_rebuilds() const { return broad_phase_rebuilds_; }
 
@@ -132,25 +133,31 @@ class Simulation {
 
   void build_blocks();
   void choose_potential_length();
-  void move_blocks();
-  void update_contact_history();
+  void run_steps(std::int64_t count);
+  // The phases of a step (run_steps), each one worksharing loop of the team.
+  void move_blocks();        // per block: half kick, drift, geometry, body force
+  void update_near_pairs();  // the broad phase's list, rebuilt when a block left its skin
+  void pair_forces();        // per near pair: friction history, overlap, contact force
+  void gather_and_kick();    // per block: contact forces in pair order, kick, guard flags
   void update_geometry();
   void update_block_geometry(int i);
   void compute_forces();
   void body_force(int i);
-  void contact_forces();
-  void find_candidate_pairs();
-  void take_over_history();
-  void scatter_pair_forces();
-  void run_steps(std::int64_t count);
-  // One candidate pair's contact, computed independently of all others.
+  void gather_contact_forces(int i);
+  void kick_block(int i);
+  void rebuild_near_pairs();
+  void collect_contacts();
+  // One near pair's contact, computed independently of all others.
   struct PairResult {
-    bool active = false;
+    bool candidate = false;  // the two boxes overlap at this step
+    bool active = false;     // in contact: info (and history) are this step's
     ContactInfo info;
     PairHistory history;
   };
   bool pair_force(int cp, int tp, PairResult& r, int* witness) const;
+  void advance_pair_history(PairHistory& h) const;
   void kick();
+  bool block_fails_guards(int i) const;
   void check_state();
   void predict_critical_step();
   void choose_broad_phase_skin();
@@ -189,12 +196,28 @@ class Simulation {
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
 
-  // Contacts.
-  std::vector<std::pair<int, int>> candidates_;
-  std::vector<PairHistory> history_, next_history_;
-  std::vector<PairResult> results_;
+  // Contacts. The broad phase's near pairs (i < j, sorted) each own a
+  // result slot that lives as long as the pair stays near: its friction
+  // history stays in place from step to step. near_pair_offset_ and
+  // near_pair_index_ list each block's near pairs in increasing order (CSR),
+  // so that each block sums its contact forces in that fixed order.
+  struct NearPair {
+    int i = -1, j = -1;
+    int witness = -1;  // separating axis the overlap test found last (-1: none yet)
+  };
+  std::vector<NearPair> near_pairs_;
+  std::vector<PairResult> pair_results_;
+  std::vector<int> near_pair_offset_, near_pair_index_;
+  std::vector<ContactInfo> contact_info_;  // active pairs in near-pair order, after each advance
+  std::size_t candidate_count_ = 0;
   int threads_ = 1;
-  std::vector<ContactInfo> contact_info_;
+  // One flag block per thread, each on its own cache line: set in a
+  // worksharing loop, read by every thread after the loop's barrier.
+  struct alignas(64) ThreadFlags {
+    bool left_skin = false;     // a block of this thread's share left its grown box
+    bool guard_failed = false;  // a block of this thread's share failed a per-block guard
+  };
+  std::vector<ThreadFlags> flags_;
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
   // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count bisector_count_[i].
@@ -204,12 +227,9 @@ class Simulation {
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last
   // rebuild; it stays valid while every block's box stays inside its grown
-  // box (skin_boxes_), and each step filters it by the current boxes.
-  std::vector<std::pair<int, int>> near_pairs_;
-  // Per near pair, the separating axis the overlap test found last
-  // (overlap_and_intersection's witness; -1: none yet); candidate k is
-  // near pair candidate_near_[k] (-1 without the sweep).
-  std::vector<int> near_witness_, candidate_near_;
+  // box (skin_boxes_), and each step's pair loop skips the pairs whose
+  // current boxes do not overlap. Without the sweep (BroadPhase::kNone)
+  // near_pairs_ holds every pair with a free block, built once.
   std::vector<Aabb> skin_boxes_;
   double skin_ = 0.0;  // m
   std::int64_t broad_phase_rebuilds_ = 0;
