@@ -118,21 +118,27 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
     if (kCuts) *beyond = hi - ai;
     return lo - ai;
   };
+  // The witness axis first; when it does not separate, its distance starts
+  // the maximum (max is exact in any order) and the loops skip it.
   double beyond = 0.0;
-  if (witness && *witness >= 0) {
-    const int w = *witness;
-    if (w < nb ? b_axis(w) > tol : w - nb < na && a_axis(w - nb, &beyond) > tol) return OverlapState::kSeparate;
-  }
   double d = -DBL_MAX;
+  std::uint32_t mask = 0;
+  const int w = witness && *witness >= 0 && *witness < nb + na ? *witness : -1;
+  if (w >= 0) {
+    d = w < nb ? b_axis(w) : a_axis(w - nb, &beyond);
+    if (d > tol) return OverlapState::kSeparate;
+    if (kCuts && w >= nb && beyond > 0.5 * tol) mask |= std::uint32_t{1} << (w - nb);
+  }
   for (int j = 0; j < nb; ++j) {
+    if (j == w) continue;
     d = std::max(d, b_axis(j));
     if (d > tol) {
       if (witness) *witness = j;
       return OverlapState::kSeparate;
     }
   }
-  std::uint32_t mask = 0;
   for (int i = 0; i < na; ++i) {
+    if (nb + i == w) continue;
     d = std::max(d, a_axis(i, &beyond));
     if (d > tol) {
       if (witness) *witness = nb + i;

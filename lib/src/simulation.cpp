@@ -548,16 +548,19 @@ void Simulation::pair_forces() {
   for (long k = 0; k < n; ++k) {
     NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
     PairResult& r = pair_results_[static_cast<std::size_t>(k)];
+    const bool was_active = r.active;
     r.candidate = aabb_overlap(boxes_[p.i], boxes_[p.j]);
+    r.active = false;
+    if (!r.candidate) continue;
     if (friction_) {
-      if (r.active && r.candidate) {
+      if (was_active) {
         advance_pair_history(r.history);
       } else {
         r.history = PairHistory{};
         r.history.key = (static_cast<std::uint64_t>(p.i) << 32) | static_cast<std::uint64_t>(p.j);
       }
     }
-    r.active = r.candidate && pair_force(p.i, p.j, r, &p.witness);
+    r.active = pair_force(p.i, p.j, r, &p.witness);
   }
 }
 
