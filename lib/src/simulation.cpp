@@ -237,6 +237,7 @@ void Simulation::build_blocks() {
   // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
   bisector_offset_.assign(n, 0);
   bisector_count_.assign(n, 0);
+  plain_bisectors_.assign(n, 0);
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
     bisector_offset_[i] = total;
@@ -431,9 +432,16 @@ void Simulation::update_block_geometry(int i) {
   moments_[i] = area_moments(poly_[i]);
   boxes_[i] = bounds(poly_[i]);
   tol_[i] = geometric_tolerance(boxes_[i]);
-  if (scene_.contact.integration == Integration::kPaperBisector)
-    bisector_count_[i] = bisectors(poly_[i], scene_.contact.small_edge_fraction * h_[i], scene_.contact.small_edge_rays,
-                                   bisector_store_.data() + bisector_offset_[i]);
+  if (scene_.contact.integration == Integration::kPaperBisector) {
+    // Without a small edge the bisectors are the vertex rays, the same list
+    // from step to step: rebuilt only when a small edge comes or goes.
+    const double small = scene_.contact.small_edge_fraction * h_[i];
+    const bool plain = !has_small_edge(poly_[i], small);
+    if (!(plain && plain_bisectors_[i]))
+      bisector_count_[i] =
+          bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
+    plain_bisectors_[i] = plain ? 1 : 0;
+  }
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
   density_[i] = mass_[i] / moments_[i].area;

@@ -223,6 +223,7 @@ class Simulation {
   // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count bisector_count_[i].
   std::vector<Bisector> bisector_store_;
   std::vector<int> bisector_offset_, bisector_count_;
+  std::vector<char> plain_bisectors_;  // 1: block i's bisectors are its vertex rays (no small edge)
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last
