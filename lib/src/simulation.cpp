@@ -402,8 +402,8 @@ void Simulation::move_blocks() {
 
 void Simulation::update_near_pairs() {
   // Every thread reads every flag after move_blocks' barrier: the same
-  // verdict in all of them.
-  bool rebuild = false;
+  // verdict in all of them. Without the sweep the list is rebuilt every step.
+  bool rebuild = scene_.broad_phase == BroadPhase::kNone;
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;
   DDA_OMP(omp single)
@@ -454,13 +454,14 @@ void Simulation::rebuild_near_pairs() {
   // practice. Every pair whose current boxes overlap is in the list as
   // long as both boxes stay inside their grown boxes, so skipping the
   // others gives exactly the pairs a full sweep would give, in the same
-  // order. Without the sweep: every pair with a free block, once.
+  // order. Without the sweep (rebuilt every step): every pair with a free
+  // block whose boxes overlap now, by testing all pairs.
   const int n = block_count();
   std::vector<NearPair> pairs;
   if (scene_.broad_phase == BroadPhase::kNone) {
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if (!(fixed_[i] && fixed_[j])) pairs.push_back({i, j, -1});
+        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) pairs.push_back({i, j, -1});
   } else {
     ++broad_phase_rebuilds_;
     skin_boxes_.resize(static_cast<std::size_t>(n));

@@ -230,7 +230,8 @@ class Simulation {
   // rebuild; it stays valid while every block's box stays inside its grown
   // box (skin_boxes_), and each step's pair loop skips the pairs whose
   // current boxes do not overlap. Without the sweep (BroadPhase::kNone)
-  // near_pairs_ holds every pair with a free block, built once.
+  // near_pairs_ is rebuilt every step from all pairs: the pairs with a free
+  // block whose boxes overlap.
   std::vector<Aabb> skin_boxes_;
   double skin_ = 0.0;  // m
   std::int64_t broad_phase_rebuilds_ = 0;
