@@ -319,23 +319,24 @@ void Simulation::run_steps(std::int64_t count) {
   DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1))
   {
     for (std::int64_t k = 0; k < count; ++k) {
-      move_blocks();        // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}; geometry; body forces
-      update_near_pairs();  // only when a block left its grown box
-      pair_forces();        // friction history, overlap, pair forces at t^{n+1}
-      gather_and_kick();    // contact forces summed in pair order; a^{n+1}; v^{n+1}; per-block guards
+      const std::int64_t done = first + k + 1;
+      const bool energy_due = every > 0 && done % every == 0;
+      move_blocks();                // v^{n+1/2} = v^n + h/2 a^n; move by h v^{n+1/2}; geometry; body forces
+      update_near_pairs();          // only when a block left its grown box
+      pair_forces(energy_due);      // friction history, overlap, pair forces at t^{n+1} (and energies when due)
+      gather_and_kick();            // contact forces summed in pair order; a^{n+1}; v^{n+1}; per-block guards
       // The flags were set before the kick loop's barrier: every thread
       // takes the same branch.
       bool failed = false;
       for (const ThreadFlags& f : flags_) failed = failed || f.guard_failed;
-      const std::int64_t done = first + k + 1;
-      if (failed || (every > 0 && done % every == 0)) {
+      if (failed || energy_due) {
         DDA_OMP(omp single)
         {
           steps_ = done;
           time_ = static_cast<double>(steps_) * dt_;
           try {
             collect_contacts();
-            check_state();  // stops at the failed block; the energy check when due
+            check_state(energy_due);  // stops at the failed block; the energy check when due
           } catch (...) {
             error = std::current_exception();
           }
@@ -532,7 +533,7 @@ void Simulation::compute_forces() {
   // Serial: the forces at the current state (the constructor's a^0).
   for (int i = 0; i < block_count(); ++i) body_force(i);
   rebuild_near_pairs();
-  pair_forces();
+  pair_forces(false);
   for (int i = 0; i < block_count(); ++i) gather_contact_forces(i);
   collect_contacts();
 }
@@ -549,7 +550,7 @@ void Simulation::body_force(int i) {
   if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
 }
 
-void Simulation::pair_forces() {
+void Simulation::pair_forces(bool with_energy) {
   // Pair forces, independent of each other. Split statically, in chunks
   // of kPairChunk dealt round-robin: a dynamic schedule's shared chunk
   // counter costs a cross-core round trip per chunk, which on a virtual
@@ -557,6 +558,8 @@ void Simulation::pair_forces() {
   // costs it evens out (measured: 2 threads 0.9x of 1 thread with dynamic
   // chunks of 16, 1.16x static). A pair whose boxes do not overlap is no
   // candidate; a pair that does not touch forgets its friction history.
+  // with_energy: each contact also stores its penalty energy (for the
+  // energy guard, summed in pair order as energy() sums it).
   const long n = static_cast<long>(near_pairs_.size());
   DDA_OMP(omp for schedule(static, kPairChunk))
   for (long k = 0; k < n; ++k) {
@@ -574,7 +577,7 @@ void Simulation::pair_forces() {
         r.history.key = (static_cast<std::uint64_t>(p.i) << 32) | static_cast<std::uint64_t>(p.j);
       }
     }
-    r.active = pair_force(p.i, p.j, r, &p.witness);
+    r.active = pair_force(p.i, p.j, r, &p.witness, with_energy);
   }
 }
 
@@ -644,7 +647,7 @@ void Simulation::kick() {
     if (!fixed_[i]) kick_block(i);
 }
 
-bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
+bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness, bool with_energy) const {
   const Polygon& a = poly_[cp];
   const Polygon& b = poly_[tp];
   const double tol = std::max(tol_[cp], tol_[tp]);
@@ -669,6 +672,9 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness) const {
   info.point = nf.point;
   info.ip_area = nf.ip_area;
   info.ip_length = 0.5 * nf.ip_perimeter;
+  // The penalty energy of the contact, as energy() computes it (the same
+  // IP: the lines left out of the cut leave it unchanged).
+  if (with_energy) r.energy = contact_energy({&a, kn_over_h_[cp], 0.0}, {&b, kn_over_h_[tp], 0.0}, ip, tol);
   if (friction_) {
     // Coulomb friction with stick/slide history, Eqs. 24-26.
     PairHistory& hist = r.history;
@@ -748,7 +754,7 @@ bool Simulation::block_fails_guards(int i) const {
   return !finite || !(moments_[i].area > 0.0) || step_motion2_[i] > motion_limit * motion_limit;
 }
 
-void Simulation::check_state() {
+void Simulation::check_state(bool energy_due) {
   // The first block that fails a per-block guard, with the reason.
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i] || !block_fails_guards(i)) continue;
@@ -767,9 +773,11 @@ void Simulation::check_state() {
     }
     stop(i, s.str());
   }
-  const int every = scene_.guards.energy_check_every;
-  if (every > 0 && steps_ % every == 0) {
-    const Energy e = energy();
+  if (energy_due) {
+    // energy() with this step's stored contact energies, in pair order.
+    Energy e = block_energy();
+    for (const PairResult& r : pair_results_)
+      if (r.active) e.contact += r.energy;
     energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
     const double growth = (e.total() - energy0_) / std::max(energy_scale_, DBL_MIN);
     if (growth > scene_.guards.max_energy_growth) {
@@ -897,14 +905,7 @@ Vec2 Simulation::momentum() const {
 }
 
 Energy Simulation::energy() const {
-  Energy e;
-  for (int i = 0; i < block_count(); ++i) {
-    if (fixed_[i]) continue;
-    const Mat6 m = mass_matrix(moments_[i], density_[i]);
-    e.kinetic += 0.5 * vel_[i].dot(m * vel_[i]);
-    e.gravity -= mass(i) * dot(scene_.gravity, moments_[i].centroid);
-    if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic_[i].ldlt().solve(stress_[i]));
-  }
+  Energy e = block_energy();
   for (const ContactInfo& ci : contact_info_) {
     const Polygon& a = poly_[ci.cp];
     const Polygon& b = poly_[ci.tp];
@@ -913,6 +914,19 @@ Energy Simulation::energy() const {
     const PotentialSide sa{&a, kn_over_h_[ci.cp], 0.0};
     const PotentialSide sb{&b, kn_over_h_[ci.tp], 0.0};
     e.contact += contact_energy(sa, sb, ip, tol);
+  }
+  return e;
+}
+
+Energy Simulation::block_energy() const {
+  // Kinetic, gravity and strain energy of the free blocks (no contacts).
+  Energy e;
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    const Mat6 m = mass_matrix(moments_[i], density_[i]);
+    e.kinetic += 0.5 * vel_[i].dot(m * vel_[i]);
+    e.gravity -= mass(i) * dot(scene_.gravity, moments_[i].centroid);
+    if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic_[i].ldlt().solve(stress_[i]));
   }
   return e;
 }

@@ -137,7 +137,7 @@ class Simulation {
   // The phases of a step (run_steps), each one worksharing loop of the team.
   void move_blocks();        // per block: half kick, drift, geometry, body force
   void update_near_pairs();  // the broad phase's list, rebuilt when a block left its skin
-  void pair_forces();        // per near pair: friction history, overlap, contact force
+  void pair_forces(bool with_energy);  // per near pair: friction history, overlap, contact force
   void gather_and_kick();    // per block: contact forces in pair order, kick, guard flags
   void update_geometry();
   void update_block_geometry(int i);
@@ -152,13 +152,15 @@ class Simulation {
     bool candidate = false;  // the two boxes overlap at this step
     bool active = false;     // in contact: info (and history) are this step's
     ContactInfo info;
+    double energy = 0.0;     // penalty energy, J/m (set on steps with an energy check)
     PairHistory history;
   };
-  bool pair_force(int cp, int tp, PairResult& r, int* witness) const;
+  bool pair_force(int cp, int tp, PairResult& r, int* witness, bool with_energy) const;
   void advance_pair_history(PairHistory& h) const;
   void kick();
   bool block_fails_guards(int i) const;
-  void check_state();
+  void check_state(bool energy_due);
+  Energy block_energy() const;
   void predict_critical_step();
   void choose_broad_phase_skin();
   double block_strain_omega2(int i) const;
