@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "ring_kernels.hpp"
+
 namespace dda {
 
 namespace {
@@ -159,24 +161,75 @@ OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std
 // Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.
 constexpr int contact_label(int c) { return -1 - c; }
 
+// One cut of clip_target: the ring in[0..n) with its labels cut by the line
+// through pc with unit normal nc, keeping the inner side. Signed distances
+// within tol of the line are snapped to 0 (no duplicate vertex, no sliver
+// edge). Returns -1, and writes nothing, when no vertex lies outside (the
+// ring stays as it is); else the new count. kN: n when known at compile
+// time (0: read it), so that the common small rings run unrolled; the same
+// operations in the same order either way.
+template <int kN>
+int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, double tol, int line_label, Vec2* out,
+             int* out_label) {
+  const int n = kN ? kN : n_in;
+  std::array<double, kN ? kN : kMaxVertices> dist;  // left uninitialised: the first n are set
+  bool cuts = false;
+  for (int i = 0; i < n; ++i) {
+    double d = dot(nc, in[i] - pc);
+    if (std::fabs(d) <= tol) d = 0.0;
+    dist[static_cast<std::size_t>(i)] = d;
+    cuts |= d > 0.0;
+  }
+  if (!cuts) return -1;
+  return 2 * n > kMaxVertices
+             ? detail::clip_ring_n<true, true>(in, dist.data(), n, out, in_label, line_label, out_label)
+             : detail::clip_ring_n<true, false>(in, dist.data(), n, out, in_label, line_label, out_label);
+}
+
+// The last ring of clip_target into `result`: its vertices, the source
+// edges' normals and the sources (clipping labels are a target edge j >= 0
+// or a contact edge -1 - c, never kMixedEdgeLabel), while testing each
+// vertex between its two neighbours as clean_ring does. Returns false when
+// some vertex is removable (then `result` is to be cleaned). kN as cut_ring's.
+template <int kN>
+bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& contact, const Polygon& target,
+               double tol, Polygon& result, IpEdge* source) {
+  const int n = kN ? kN : n_in;
+  const double tol2 = tol * tol;
+  bool clean = true;
+  Vec2 a = in[n - 1], b = in[0];
+  for (int i = 0; i < n; ++i) {
+    const Vec2 c = in[i + 1 == n ? 0 : i + 1];
+    clean &= !detail::removable_vertex(a, b, c, tol2);
+    a = b;
+    b = c;
+    const int l = in_label[i];
+    const bool on_contact = l < 0;
+    const int e = on_contact ? -1 - l : l;
+    result.v[static_cast<std::size_t>(i)] = in[i];
+    result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
+    if (source) source[i] = {on_contact, e};
+  }
+  result.count = n;
+  return clean;
+}
+
 // The target cut by the lines of the contact's edges whose bit is set in
 // `lines` (Table 3), with edge labels; normals taken from the labelled
 // source edges. Two buffers, ping-ponged: each cut of a convex polygon by a
-// half-plane adds at most one vertex, so n + m fits in kMaxVertices. They
-// are thread-local scratch: a local ring would be zeroed on every call
-// (Vec2 zero-initialises); the distances too (measured: fewer instructions
-// than a stack array). The first input is the target itself, and a line
-// that leaves every vertex inside (the usual case: a shallow contact is cut
-// by one or two of the contact polygon's edge lines) costs one distance per
-// vertex and no copy.
+// half-plane adds at most one vertex, so n + m fits in kMaxVertices. The
+// vertex buffers are thread-local scratch: a local ring would be zeroed on
+// every call (Vec2 zero-initialises); the labels are plain local arrays,
+// left uninitialised. The first input is the target itself, and a line that
+// leaves every vertex inside (the usual case: a shallow contact is cut by
+// one or two of the contact polygon's edge lines) costs one distance per
+// vertex and no copy. The last ring goes to `result` in one pass with its
+// normals and sources, which also runs clean_ring's test; only a ring that
+// has a vertex to remove (rare) is then cleaned, as clean_ring does.
 void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
                  IpEdge* source) {
-  struct Ring {
-    std::array<Vec2, kMaxVertices> v;  // the ring's count says how many are in use
-    std::array<int, kMaxVertices> label;
-  };
-  static thread_local Ring buf[2];
-  static thread_local std::array<double, kMaxVertices> dist;
+  static thread_local std::array<Vec2, kMaxVertices> buf[2];
+  std::array<int, kMaxVertices> label_buf[2];
   // The target's own edges label themselves: label j for edge j.
   static constexpr std::array<int, kMaxVertices> target_label = [] {
     std::array<int, kMaxVertices> l{};
@@ -191,28 +244,37 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
   if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
   for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
     const int c = __builtin_ctz(lines);
-    const Vec2 nc = contact.normal(c);
-    const Vec2 pc = contact.vertex(c);
-    bool cuts = false;
-    for (int i = 0; i < in_count; ++i) {
-      double d = dot(nc, in[i] - pc);
-      if (std::fabs(d) <= tol) d = 0.0;  // on the line: no duplicate vertex, no sliver edge
-      dist[static_cast<std::size_t>(i)] = d;
-      cuts |= d > 0.0;
+    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
+    Vec2* out = buf[next_buf].data();
+    int* out_label = label_buf[next_buf].data();
+    const int line = contact_label(c);
+    int count = 0;
+    switch (in_count) {
+      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
+      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
+      default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
     }
-    if (!cuts) continue;
-    Ring& out = buf[next_buf];
-    in_count = clip_ring(in, dist.data(), in_count, out.v.data(), in_label, contact_label(c), out.label.data());
-    if (in_count < 3) in_count = 0;
-    in = out.v.data();
-    in_label = out.label.data();
+    if (count < 0) continue;  // no vertex outside: the ring stays
+    in_count = count;
+    in = out;
+    in_label = out_label;
     next_buf = 1 - next_buf;
   }
-  std::array<int, kMaxVertices> label;
-  for (int i = 0; i < in_count; ++i) {
-    result.v[static_cast<std::size_t>(i)] = in[i];
-    label[static_cast<std::size_t>(i)] = in_label[i];
+  if (in_count < 3) {
+    result.count = 0;
+    return;
   }
+  bool clean = false;
+  switch (in_count) {
+    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
+    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
+    default: clean = emit_ring<0>(in, in_label, in_count, contact, target, tol, result, source); break;
+  }
+  if (clean) return;
+  // Some vertex goes: clean_ring on the ring and its labels (result.v holds
+  // the ring), then the normals and sources again.
+  std::array<int, kMaxVertices> label;
+  for (int i = 0; i < in_count; ++i) label[static_cast<std::size_t>(i)] = in_label[i];
   result.count = clean_ring(result.v.data(), in_count, tol, label.data());
   for (int i = 0; i < result.count; ++i) {
     const int l = label[static_cast<std::size_t>(i)];

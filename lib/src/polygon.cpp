@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ring_kernels.hpp"
+
 namespace dda {
 
 namespace {
@@ -201,6 +203,8 @@ PointLocation locate_point(const Polygon& poly, Vec2 p, double tol) {
 int clean_ring(Vec2* v, int count, double tol, int* label) {
   // Squared comparisons: no square root per vertex.
   const double tol2 = tol * tol;
+  // The usual ring has nothing to remove: one read-only sweep tells.
+  if (count >= 3 && !detail::ring_needs_clean(v, count, tol2)) return count;
   bool changed = true;
   while (changed && count >= 3) {
     changed = false;
@@ -209,16 +213,11 @@ int clean_ring(Vec2* v, int count, double tol, int* label) {
       const Vec2 a = v[ip];
       const Vec2 b = v[i];
       const Vec2 c = v[i + 1 == count ? 0 : i + 1];
-      const Vec2 ac = c - a;
-      const double lac2 = length_squared(ac);
-      // Repeated vertex, or b within tol of the chord a-c (straight or spike):
-      // |ac x ab| / |ac| <= tol.
-      const bool repeated = length_squared(a - b) <= tol2;
-      const double h = cross(ac, b - a);
-      const bool straight = lac2 > tol2 ? h * h <= tol2 * lac2 : true;
-      if (repeated || straight) {
+      // Repeated vertex, or b within tol of the chord a-c (straight or spike).
+      if (detail::removable_vertex(a, b, c, tol2)) {
         // The merged edge a-c: along b-c when a-b was a repeated vertex; at a
         // straight turn, on both lines within tol: mixed unless they agree.
+        const bool repeated = length_squared(a - b) <= tol2;
         if (label) label[ip] = repeated ? label[i] : label[ip] == label[i] ? label[i] : kMixedEdgeLabel;
         for (int j = i; j + 1 < count; ++j) {
           v[j] = v[j + 1];
@@ -240,25 +239,16 @@ void clean_polygon(Polygon& poly, double tol) {
 
 int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out, const int* in_label, int line_label,
               int* out_label) {
-  // Per input edge p -> q: p is kept when dp <= 0, and a strict sign change
-  // adds the crossing. Labels: an edge leaving a kept p runs along the cut
-  // line when p is on it and q is outside, else along p's own edge; the
-  // crossing into the outside starts the edge along the cut line, the
-  // crossing back inside continues the rest of edge p -> q.
-  int count = 0;
-  for (int i = 0; i < n; ++i) {
-    const int k = i + 1 == n ? 0 : i + 1;
-    const double dp = dist[i], dq = dist[k];
-    if (dp <= 0.0 && count < kMaxVertices) {
-      if (out_label) out_label[count] = dp == 0.0 && dq > 0.0 ? line_label : in_label[i];
-      out[count++] = in[i];
-    }
-    if (((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) && count < kMaxVertices) {
-      if (out_label) out_label[count] = dp < 0.0 ? line_label : in_label[i];
-      out[count++] = lerp(in[i], in[k], dp / (dp - dq));
-    }
-  }
-  return count;
+  // The rule per edge is detail::clip_edge's. A ring of at most
+  // kMaxVertices / 2 points cannot fill the output (each edge appends at
+  // most two), so only a longer one checks the capacity on every append.
+  if (n <= 0) return 0;
+  const bool guard = 2 * n > kMaxVertices;
+  if (out_label)
+    return guard ? detail::clip_ring_n<true, true>(in, dist, n, out, in_label, line_label, out_label)
+                 : detail::clip_ring_n<true, false>(in, dist, n, out, in_label, line_label, out_label);
+  return guard ? detail::clip_ring_n<false, true>(in, dist, n, out, in_label, line_label, out_label)
+               : detail::clip_ring_n<false, false>(in, dist, n, out, in_label, line_label, out_label);
 }
 
 void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above, double tol) {

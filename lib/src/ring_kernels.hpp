@@ -1,0 +1,85 @@
+// Internal: the per-edge clipping step and the "nothing to clean" test shared
+// by clip_ring / clean_ring (polygon.cpp) and the intersection polygon's
+// clipper (overlap.cpp), inline so that the hot clipper runs them without a
+// call. Not part of the public API.
+#pragma once
+#include "dda/polygon.hpp"
+
+namespace dda::detail {
+
+// What edge p = in[i] -> q = in[k] of a ring contributes when the ring is
+// cut by a line (clip_ring's rule; dp, dq the snapped signed distances of p
+// and q): p when dp <= 0, then the crossing when the signs differ strictly
+// (a NaN dp keeps nothing; a NaN at either end crosses nothing). Labels
+// (kLabels): the kept p starts the edge along the line when p is on it and
+// q outside, else p's own edge; the crossing into the outside starts the
+// edge along the line, the crossing back inside continues edge p -> q.
+// Appends to out, out_label at `count` and returns the new count. kGuard:
+// stop appending at kMaxVertices (unneeded when 2 n <= kMaxVertices, since
+// an edge appends at most two points).
+template <bool kLabels, bool kGuard>
+inline int clip_edge(const Vec2* in, const int* in_label, int i, int k, double dp, double dq, int line_label,
+                     Vec2* out, int* out_label, int count) {
+  if (kGuard && count >= kMaxVertices) return count;
+  // Three cases by p's side, the commonest first: strictly inside, on the
+  // line, strictly outside (a NaN dp is none of them).
+  if (dp < 0.0) {
+    if (kLabels) out_label[count] = in_label[i];
+    out[count++] = in[i];
+    if (dq > 0.0 && (!kGuard || count < kMaxVertices)) {
+      if (kLabels) out_label[count] = line_label;
+      out[count++] = lerp(in[i], in[k], dp / (dp - dq));
+    }
+  } else if (dp == 0.0) {
+    if (kLabels) out_label[count] = dq > 0.0 ? line_label : in_label[i];
+    out[count++] = in[i];
+  } else if (dp > 0.0 && dq < 0.0) {
+    if (kLabels) out_label[count] = in_label[i];
+    out[count++] = lerp(in[i], in[k], dp / (dp - dq));
+  }
+  return count;
+}
+
+// clip_ring on in[0..n) (n >= 1) with distances dist[0..n): the edges in
+// order, the closing edge n-1 -> 0 peeled off so that the loop needs no
+// wrap-around index.
+template <bool kLabels, bool kGuard>
+inline int clip_ring_n(const Vec2* in, const double* dist, int n, Vec2* out, const int* in_label, int line_label,
+                       int* out_label) {
+  int count = 0;
+  double dp = dist[0];
+  for (int i = 0; i + 1 < n; ++i) {
+    const double dq = dist[i + 1];
+    count = clip_edge<kLabels, kGuard>(in, in_label, i, i + 1, dp, dq, line_label, out, out_label, count);
+    dp = dq;
+  }
+  return clip_edge<kLabels, kGuard>(in, in_label, n - 1, 0, dp, dist[0], line_label, out, out_label, count);
+}
+
+// clean_ring's test for vertex b between a and c, with tol2 = tol * tol:
+// b repeats a (closer than tol), or lies within tol of the chord a-c
+// (|ac x ab| / |ac| <= tol, squared; a chord within tol of zero counts).
+inline bool removable_vertex(Vec2 a, Vec2 b, Vec2 c, double tol2) {
+  const Vec2 ac = c - a;
+  const double lac2 = length_squared(ac);
+  const bool repeated = length_squared(a - b) <= tol2;
+  const double h = cross(ac, b - a);
+  const bool straight = lac2 > tol2 ? h * h <= tol2 * lac2 : true;
+  return repeated || straight;
+}
+
+// True when clean_ring would remove some vertex of v[0..count) (count >= 3):
+// its first sweep tests every vertex of the unchanged ring, so a ring with
+// no removable vertex comes back as it is.
+inline bool ring_needs_clean(const Vec2* v, int count, double tol2) {
+  Vec2 a = v[count - 1], b = v[0];
+  for (int i = 1; i < count; ++i) {
+    const Vec2 c = v[i];
+    if (removable_vertex(a, b, c, tol2)) return true;
+    a = b;
+    b = c;
+  }
+  return removable_vertex(a, b, v[0], tol2);
+}
+
+}  // namespace dda::detail
