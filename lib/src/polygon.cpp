@@ -27,6 +27,21 @@ void update_normals(Polygon& poly) {
     poly.n[static_cast<std::size_t>(i)] = normalized(perp_right(poly.edge(i)));
 }
 
+double update_normals_min_edge2(Polygon& poly) {
+  // normalized(perp_right(e)) divides by sqrt(e.y^2 + e.x^2), the same bits
+  // as length_squared(e) (addition commutes exactly); spelled out so that
+  // the squared length is computed once.
+  double min2 = DBL_MAX;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 e = poly.edge(i);
+    const double l2 = e.x * e.x + e.y * e.y;
+    const double l = std::sqrt(l2);
+    poly.n[static_cast<std::size_t>(i)] = l > 0.0 ? Vec2{e.y / l, -e.x / l} : Vec2{0.0, 0.0};
+    min2 = std::min(min2, l2);
+  }
+  return min2;
+}
+
 const char* describe(PolygonFault fault) {
   switch (fault) {
     case PolygonFault::kNone: return "valid";

@@ -429,7 +429,7 @@ void Simulation::update_geometry() {
 }
 
 void Simulation::update_block_geometry(int i) {
-  update_normals(poly_[i]);
+  const double min_edge2 = update_normals_min_edge2(poly_[i]);
   moments_[i] = area_moments(poly_[i]);
   boxes_[i] = bounds(poly_[i]);
   tol_[i] = geometric_tolerance(boxes_[i]);
@@ -437,7 +437,7 @@ void Simulation::update_block_geometry(int i) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes.
     const double small = scene_.contact.small_edge_fraction * h_[i];
-    const bool plain = !has_small_edge(poly_[i], small);
+    const bool plain = !(min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     if (!(plain && plain_bisectors_[i]))
       bisector_count_[i] =
           bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);

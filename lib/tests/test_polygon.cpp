@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -87,4 +88,20 @@ TEST_CASE("splitting a polygon by a line conserves area", "[polygon]") {
   split_polygon(r, {5, 0}, {1, 0}, lo, hi);
   CHECK(lo.count == 4);
   CHECK(hi.count == 0);
+}
+
+TEST_CASE("the one-pass normals and smallest edge match update_normals and length_squared", "[polygon]") {
+  // Irregular pentagon far from the origin: the normals must be the same
+  // bits as update_normals', the minimum the smallest squared edge length.
+  const Vec2 p[5] = {{1e5 + 0.1, 3.3}, {1e5 + 2.7, 2.9}, {1e5 + 3.1, 4.2}, {1e5 + 1.9, 5.55}, {1e5 + 0.3, 4.9}};
+  Polygon a = make_polygon(p, 5), b = a;
+  update_normals(a);
+  const double min2 = update_normals_min_edge2(b);
+  double expect = DBL_MAX;
+  for (int i = 0; i < 5; ++i) {
+    CHECK(a.normal(i).x == b.normal(i).x);
+    CHECK(a.normal(i).y == b.normal(i).y);
+    expect = std::min(expect, length_squared(a.edge(i)));
+  }
+  CHECK(min2 == expect);
 }

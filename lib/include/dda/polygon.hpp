@@ -49,6 +49,9 @@ struct Polygon {
 Polygon make_polygon(const Vec2* points, int count);
 // Recomputes the outward unit normals from the vertices (after a move).
 void update_normals(Polygon& poly);
+// The same, returning the smallest squared edge length, m^2 (one pass for
+// both: a block's per-step geometry needs it for the small-edge test).
+double update_normals_min_edge2(Polygon& poly);
 
 enum class PolygonFault {
   kNone,

@@ -77,15 +77,6 @@ int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ra
 // The same rays (count and order) as bisectors only: what a simulation
 // rebuilds per block and step (no direction, so no square root per vertex).
 int bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Bisector* out);
-// Whether an edge of `poly` is shorter than `small_edge` (the test
-// bisectors() makes): without one, the bisectors are the vertex rays, fixed
-// by the vertex count alone.
-inline bool has_small_edge(const Polygon& poly, double small_edge) {
-  const double small2 = small_edge * small_edge;
-  for (int e = 0; e < poly.count; ++e)
-    if (length_squared(poly.edge(e)) < small2) return true;
-  return false;
-}
 // The replacing form (at most poly.count rays).
 inline int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
   return bisector_rays(poly, small_edge, SmallEdgeRays::kVirtualReplacesVertex, out);
