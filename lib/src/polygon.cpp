@@ -108,9 +108,12 @@ namespace {
 //   Sxx += c (ax^2 + ax bx + bx^2) / 12,  Syy likewise,
 //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
 // kSecond: also the second moments (area_centroid leaves them out; the
-// area and centroid are the same bits either way).
-template <bool kSecond>
-AreaMoments green_moments(const Vec2* v, int count) {
+// area and centroid are the same bits either way). kN: the vertex count
+// when known at compile time (0: `count`), so that a quadrilateral's loop
+// is unrolled; the same operations in the same order either way.
+template <bool kSecond, int kN = 0>
+AreaMoments green_moments(const Vec2* v, int n) {
+  const int count = kN ? kN : n;
   AreaMoments m;
   if (count < 3) return m;
   const Vec2 o = v[0];
@@ -145,9 +148,15 @@ AreaMoments green_moments(const Vec2* v, int count) {
 
 }  // namespace
 
-AreaMoments area_moments(const Polygon& poly) { return green_moments<true>(poly.v.data(), poly.count); }
+AreaMoments area_moments(const Polygon& poly) {
+  if (poly.count == 4) return green_moments<true, 4>(poly.v.data(), 4);
+  return green_moments<true>(poly.v.data(), poly.count);
+}
 
-AreaMoments area_centroid(const Polygon& poly) { return green_moments<false>(poly.v.data(), poly.count); }
+AreaMoments area_centroid(const Polygon& poly) {
+  if (poly.count == 4) return green_moments<false, 4>(poly.v.data(), 4);
+  return green_moments<false>(poly.v.data(), poly.count);
+}
 
 AreaMoments area_centroid(const Vec2* ring, int count) { return green_moments<false>(ring, count); }
 
