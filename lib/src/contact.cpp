@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 
 namespace dda {
 
@@ -61,6 +60,15 @@ struct EdgeLines {
     for (int i = 0; i < size(); ++i) d = c[static_cast<std::size_t>(i)] < d ? c[static_cast<std::size_t>(i)] : d;
     return d;
   }
+  // at(1.0) without the multiplications (s_i * 1.0 is s_i exactly).
+  double at_end() const {
+    double d = DBL_MAX;
+    for (int i = 0; i < size(); ++i) {
+      const double di = c[static_cast<std::size_t>(i)] + s[static_cast<std::size_t>(i)];
+      d = di < d ? di : d;
+    }
+    return d;
+  }
   // Where the edge crosses bisector `ray` (Sect. 3.2.3): d_a(t) = d_b(t) >=
   // d0 for its two lines, or -1 for a miss. The range test is done on the
   // numerator against the denominator, so a miss costs no division.
@@ -111,6 +119,102 @@ struct BisectorSpan {
   int count = 0;
 };
 
+// Eqs. 16-17 on each segment [t0, t1] of one IP edge with end tractions fa,
+// fb. Along one edge all segments share the normal n, so only two sums are
+// kept:
+//   S0 = sum (t1 - t0) (fa + fb)                      -> force  L S0 / 2,
+//   S1 = sum (t1 - t0) [fa (2 t0 + t1) + fb (t0 + 2 t1)] -> int f t dl = L S1 / 6.
+// The edge's force L S0 / 2 n acts at a + (S1 / 3 S0) (b - a) (Eq. 17);
+// its moment about c is taken as L [S0 / 2 a + S1 / 6 (b - a)] x n,
+// which stays finite when S0 = 0.
+struct EdgeSums {
+  double s0 = 0.0, s1 = 0.0;
+  int segments = 0;
+};
+
+// The sums over the demarcation points of one edge: t = 0, the sorted
+// crossings cr below 1/2, 1/2, those above, 1; traction_at(t) gives the
+// traction at a crossing (f_start, f_mid, f_end at the fixed points).
+template <class TractionAt>
+EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end, TractionAt&& traction_at) {
+  EdgeSums sums;
+  double t0 = 0.0, fa = f_start;
+  auto segment_to = [&](double t1, double fb) {
+    const double dt = t1 - t0;
+    sums.s0 += dt * (fa + fb);
+    sums.s1 += dt * (fa * (2.0 * t0 + t1) + fb * (t0 + 2.0 * t1));
+    ++sums.segments;
+    t0 = t1;
+    fa = fb;
+  };
+  int i = 0;
+  for (; i < cr.count && cr.t[static_cast<std::size_t>(i)] < 0.5; ++i) {
+    const double t = cr.t[static_cast<std::size_t>(i)];
+    if (t != t0) segment_to(t, traction_at(t));  // two rays, one point: once
+  }
+  segment_to(0.5, f_mid);
+  for (; i < cr.count; ++i) {  // all the rest are below 1 (Crossings::add)
+    const double t = cr.t[static_cast<std::size_t>(i)];
+    if (t != t0) segment_to(t, traction_at(t));
+  }
+  segment_to(1.0, f_end);
+  return sums;
+}
+
+// Demarcation points of one side on an edge (Sect. 3.2.3 steps 1-4): the
+// crossings with its bisectors, or its envelope's kinks.
+template <int kN>
+inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, Integration rule, Crossings& cr) {
+  if (rule == Integration::kPaperBisector) {
+    for (int r = 0; r < rays.count; ++r) cr.add(lines.crossing(rays.b[r]));
+  } else {
+    add_envelope_breaks(lines, [&cr](double t) { cr.add(t); });
+  }
+}
+
+// An IP edge of known source lies on one polygon's boundary, where that
+// polygon's potential is zero: only the other side's phi enters Eq. 11,
+// phi_CP with a plus sign (kMinus false), phi_TP with a minus. The same
+// operations as the two-sided form with the zero side's distance left out
+// (0 + k d for CP, 0 - k d for TP). zero_start / zero_end: the edge's end
+// is on this side's boundary too (an adjacent IP edge lies on it), d = 0.
+// Returns false when the edge is on this side's boundary as well (mid-point
+// distance within tol): zero traction, no sums.
+template <int kN, bool kMinus>
+inline bool one_side_edge(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab,
+                          double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+  EdgeLines<kN> lines;
+  lines.build(poly, a, ab);
+  const double mid = lines.at(0.5);
+  if (mid <= tol) return false;
+  Crossings cr;
+  add_side_crossings(lines, rays, rule, cr);
+  cr.sort();
+  auto traction = [k](double d) {
+    if (!(d > 0.0)) return 0.0;
+    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+  };
+  const double f_start = zero_start ? 0.0 : traction(lines.at_start());
+  const double f_end = zero_end ? 0.0 : traction(lines.at_end());
+  sums = integrate_edge(cr, f_start, traction(mid), f_end, [&](double t) { return traction(lines.at(t)); });
+  return true;
+}
+
+// one_side_edge with the vertex count a compile-time constant where it is
+// a common one (unrolled loops over the edge lines: triangles, quadrilaterals
+// and pentagons are most blocks of a jointed rock mass), else read at run time.
+template <int kN, bool kMinus>
+bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab, double tol,
+                     bool zero_start, bool zero_end, EdgeSums& sums) {
+  if (kN) return one_side_edge<kN, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+  switch (poly.count) {
+    case 3: return one_side_edge<3, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 4: return one_side_edge<4, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 5: return one_side_edge<5, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    default: return one_side_edge<0, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+  }
+}
+
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any).
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
@@ -138,109 +242,79 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       rays_tp = {own_tp.b.data(), own_tp.count};
     }
   }
-  // A vertex where an edge on CP's boundary starts or ends is on that
-  // boundary: d_exit = 0 there (likewise for TP); bit k of zero_* says so
-  // for IP vertex k. Edges of unknown source say nothing about their end points.
-  std::uint32_t zero_cp = 0, zero_tp = 0;
-  if (source) {
-    for (int k = 0; k < ip.count; ++k) {
-      const IpEdge in = source[ip.prev(k)], out_edge = source[k];
-      const std::uint32_t bit = std::uint32_t{1} << k;
-      if ((in.known() && in.on_contact) || (out_edge.known() && out_edge.on_contact)) zero_cp |= bit;
-      if ((in.known() && !in.on_contact) || (out_edge.known() && !out_edge.on_contact)) zero_tp |= bit;
-    }
-  }
-  EdgeLines<kNc> lines_cp;
-  EdgeLines<kNt> lines_tp;
-  Crossings cr;
+  // An edge of known source on CP's boundary: on_cp; on TP's: on_tp. An
+  // edge of unknown source is on neither as far as the sources tell.
+  auto on_cp = [source](int k) { return source && source[k].known() && source[k].on_contact; };
+  auto on_tp = [source](int k) { return source && source[k].known() && !source[k].on_contact; };
   for (int e = 0; e < ip.count; ++e) {
     const int e1 = ip.next(e);
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
     const double len = length(ab);
     if (len <= tol) continue;
     out.ip_perimeter += len;
-    // An IP edge on the boundary of a polygon carries zero potential of it:
-    // known from its source, else found from the midpoint's distance.
-    const bool known = source && source[e].known();
-    const bool src_cp = known && source[e].on_contact, src_tp = known && !source[e].on_contact;
-    double mid_cp = 0.0, mid_tp = 0.0;
-    if (!src_cp) {
-      lines_cp.build(*cp.poly, a, ab);
-      mid_cp = lines_cp.at(0.5);
-    }
-    if (!src_tp) {
-      lines_tp.build(*tp.poly, a, ab);
-      mid_tp = lines_tp.at(0.5);
-    }
-    const bool use_cp = !(src_cp || mid_cp <= tol);
-    const bool use_tp = !(src_tp || mid_tp <= tol);
-    if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
-      out.segments += 2;
-      continue;
-    }
-    // Demarcation points (Sect. 3.2.3 steps 1-4): the end points, the
-    // midpoint, and the crossings strictly inside the edge (a crossing at
-    // 0, 1/2 or 1 adds nothing), sorted.
-    cr.count = 0;
-    if (rule == Integration::kPaperBisector) {
-      if (use_cp)
-        for (int r = 0; r < rays_cp.count; ++r) cr.add(lines_cp.crossing(rays_cp.b[r]));
-      if (use_tp)
-        for (int r = 0; r < rays_tp.count; ++r) cr.add(lines_tp.crossing(rays_tp.b[r]));
-    } else {
-      auto add = [&cr](double t) { cr.add(t); };
-      if (use_cp) add_envelope_breaks(lines_cp, add);
-      if (use_tp) add_envelope_breaks(lines_tp, add);
-    }
-    cr.sort();
-    // Net normal traction phi_CP - phi_TP (Eq. 11) at t, each side only
-    // where its potential is not zero on the edge; d_*: exit distances, or
-    // negative for "not evaluated".
-    auto traction = [&](double d_cp, double d_tp) {
-      double f = 0.0;
-      if (d_cp > 0.0) f += cp.kn_over_h * d_cp;
-      if (d_tp > 0.0) f -= tp.kn_over_h * d_tp;
-      return f;
-    };
-    auto traction_at = [&](double t) {
-      return traction(use_cp ? lines_cp.at(t) : 0.0, use_tp ? lines_tp.at(t) : 0.0);
-    };
-    const std::uint32_t bit_a = std::uint32_t{1} << e, bit_b = std::uint32_t{1} << e1;
-    const double f_start = traction(use_cp && !(zero_cp & bit_a) ? lines_cp.at_start() : 0.0,
-                                    use_tp && !(zero_tp & bit_a) ? lines_tp.at_start() : 0.0);
-    const double f_mid = traction(use_cp ? mid_cp : 0.0, use_tp ? mid_tp : 0.0);
-    const double f_end = traction(use_cp && !(zero_cp & bit_b) ? lines_cp.at(1.0) : 0.0,
-                                  use_tp && !(zero_tp & bit_b) ? lines_tp.at(1.0) : 0.0);
-    // Eqs. 16-17 on each segment [t0, t1] with end tractions fa, fb. Along
-    // one edge all segments share the normal n, so only two sums are kept:
-    //   S0 = sum (t1 - t0) (fa + fb)                      -> force  L S0 / 2,
-    //   S1 = sum (t1 - t0) [fa (2 t0 + t1) + fb (t0 + 2 t1)] -> int f t dl = L S1 / 6.
-    // The edge's force L S0 / 2 n acts at a + (S1 / 3 S0) (b - a) (Eq. 17);
-    // its moment about c is taken as L [S0 / 2 a + S1 / 6 (b - a)] x n,
-    // which stays finite when S0 = 0.
-    double s0 = 0.0, s1 = 0.0, t0 = 0.0, fa = f_start;
-    auto segment_to = [&](double t1, double fb) {
-      const double dt = t1 - t0;
-      s0 += dt * (fa + fb);
-      s1 += dt * (fa * (2.0 * t0 + t1) + fb * (t0 + 2.0 * t1));
-      ++out.segments;
-      t0 = t1;
-      fa = fb;
-    };
-    auto crossings_below = [&](int& i, double below) {
-      for (; i < cr.count && cr.t[static_cast<std::size_t>(i)] < below; ++i) {
-        const double t = cr.t[static_cast<std::size_t>(i)];
-        if (t != t0) segment_to(t, traction_at(t));  // two rays, one point: once
+    // A vertex where an edge on CP's boundary starts or ends is on that
+    // boundary: d_exit = 0 there (likewise for TP). For the potential of a
+    // side that is used on edge e (so e is not on that side's boundary),
+    // its start a is on it when the previous IP edge is, its end when the
+    // next one is.
+    const int e0 = ip.prev(e);
+    EdgeSums sums;
+    if (source && source[e].known()) {
+      // An IP edge on the boundary of a polygon carries zero potential of
+      // it: only the other polygon's enters (or none, if the edge is on
+      // both boundaries within tol: zero traction on its two halves).
+      const bool used = source[e].on_contact
+                            ? one_side_edge_n<kNt, true>(*tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol, on_tp(e0),
+                                                         on_tp(e1), sums)
+                            : one_side_edge_n<kNc, false>(*cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol, on_cp(e0),
+                                                          on_cp(e1), sums);
+      if (!used) {
+        out.segments += 2;
+        continue;
       }
-    };
-    int next = 0;
-    crossings_below(next, 0.5);
-    segment_to(0.5, f_mid);
-    crossings_below(next, 1.0);
-    segment_to(1.0, f_end);
+    } else {
+      // Unknown source: each potential is zero on the edge if its
+      // midpoint's distance is within tol.
+      EdgeLines<kNc> lines_cp;
+      EdgeLines<kNt> lines_tp;
+      lines_cp.build(*cp.poly, a, ab);
+      lines_tp.build(*tp.poly, a, ab);
+      const double mid_cp = lines_cp.at(0.5), mid_tp = lines_tp.at(0.5);
+      const bool use_cp = !(mid_cp <= tol);
+      const bool use_tp = !(mid_tp <= tol);
+      if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
+        out.segments += 2;
+        continue;
+      }
+      // Demarcation points: the end points, the midpoint, and the crossings
+      // strictly inside the edge (a crossing at 0, 1/2 or 1 adds nothing).
+      Crossings cr;
+      if (use_cp) add_side_crossings(lines_cp, rays_cp, rule, cr);
+      if (use_tp) add_side_crossings(lines_tp, rays_tp, rule, cr);
+      cr.sort();
+      // Net normal traction phi_CP - phi_TP (Eq. 11) at t, each side only
+      // where its potential is not zero on the edge; d_*: exit distances, or
+      // negative for "not evaluated".
+      auto traction = [&](double d_cp, double d_tp) {
+        double f = 0.0;
+        if (d_cp > 0.0) f += cp.kn_over_h * d_cp;
+        if (d_tp > 0.0) f -= tp.kn_over_h * d_tp;
+        return f;
+      };
+      auto traction_at = [&](double t) {
+        return traction(use_cp ? lines_cp.at(t) : 0.0, use_tp ? lines_tp.at(t) : 0.0);
+      };
+      const double f_start = traction(use_cp && !on_cp(e0) ? lines_cp.at_start() : 0.0,
+                                      use_tp && !on_tp(e0) ? lines_tp.at_start() : 0.0);
+      const double f_mid = traction(use_cp ? mid_cp : 0.0, use_tp ? mid_tp : 0.0);
+      const double f_end = traction(use_cp && !on_cp(e1) ? lines_cp.at_end() : 0.0,
+                                    use_tp && !on_tp(e1) ? lines_tp.at_end() : 0.0);
+      sums = integrate_edge(cr, f_start, f_mid, f_end, traction_at);
+    }
+    out.segments += sums.segments;
     const Vec2 n = ip.normal(e);
-    force += (0.5 * len * s0) * n;
-    moment += cross((0.5 * len * s0) * (a - c) + (len * s1 * kSixth) * ab, n);
+    force += (0.5 * len * sums.s0) * n;
+    moment += cross((0.5 * len * sums.s0) * (a - c) + (len * sums.s1 * kSixth) * ab, n);
   }
   const double f2 = length_squared(force);
   if (!(f2 > 0.0)) return out;
