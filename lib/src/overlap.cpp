@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "ring_kernels.hpp"
 
@@ -75,6 +78,119 @@ EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0) {
 
 namespace {
 
+// Two doubles handled as one value: the GCC/Clang vector extension, one
+// SSE2 register on x86-64 (baseline, no -march), NEON or scalar code
+// elsewhere. Lane-wise +, - and * round exactly as the scalar operations
+// (no FMA contraction: ISO -std=c++17 keeps -ffp-contract=off).
+using Lanes = double __attribute__((vector_size(16)));
+using LaneMask = long long __attribute__((vector_size(16)));
+
+// std::min(lo, t) and std::max(hi, t) lane by lane, operands in that order
+// (a NaN t leaves lo, hi as they are). SSE2's minpd / maxpd are exactly
+// these selections (named, since GCC turns the plain form against a
+// constant into a four-instruction blend); elsewhere the plain form.
+inline Lanes lane_min(Lanes lo, Lanes t) {
+#if defined(__SSE2__)
+  return _mm_min_pd(t, lo);
+#else
+  return t < lo ? t : lo;
+#endif
+}
+inline Lanes lane_max(Lanes hi, Lanes t) {
+#if defined(__SSE2__)
+  return _mm_max_pd(t, hi);
+#else
+  return hi < t ? t : hi;
+#endif
+}
+
+// Bit l set when lane l of a comparison result is true.
+inline unsigned lane_bits(LaneMask m) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_pd((__m128d)m));
+#else
+  return static_cast<unsigned>((m[0] & 1) | (m[1] & 2));
+#endif
+}
+
+// A polygon's edge lines two at a time: pair k holds edges 2k and 2k + 1 in
+// its two lanes, an odd count's last edge repeated to fill the last pair (a
+// repeated axis changes no maximum; its cut bit, >= count, is masked off).
+// kN: the polygon's vertex count when known at compile time (0: up to
+// kMaxVertices, the count read at run time).
+template <int kN>
+struct EdgeLanes {
+  static constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
+  Lanes nx[kCapacity], ny[kCapacity];  // components of the edge normals
+  Lanes off[kCapacity];                // support offsets n . v of the edges' start vertices
+};
+
+// Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p.
+template <int kN>
+[[gnu::always_inline]] inline void edge_lanes(const Polygon& p, int pairs, EdgeLanes<kN>& e) {
+  const int n = kN ? kN : p.count;
+  for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
+    const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
+    const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
+    e.nx[k] = Lanes{n0.x, n1.x};
+    e.ny[k] = Lanes{n0.y, n1.y};
+    e.off[k] = e.nx[k] * Lanes{v0.x, v1.x} + e.ny[k] * Lanes{v0.y, v1.y};  // dot(n, v) per lane
+  }
+}
+
+// lo[k] = min over q's vertices of n . q for both edges of pair k, and (kHi)
+// hi[k] the max, as std::min / std::max fold them (same operand order, so a
+// NaN product is skipped as there). The vertex loop is outermost: each
+// vertex is broadcast once and serves every pair. kN, kM: e's and q's
+// vertex counts when known at compile time (0: read them).
+template <bool kHi, int kN, int kM>
+[[gnu::always_inline]] inline void extremes(const EdgeLanes<kN>& e, int pairs, const Polygon& q, Lanes* lo,
+                                            Lanes* hi) {
+  const int np = kN ? (kN + 1) / 2 : pairs, m = kM ? kM : q.count;
+  for (int k = 0; k < np; ++k) {
+    lo[k] = Lanes{DBL_MAX, DBL_MAX};
+    if (kHi) hi[k] = Lanes{-DBL_MAX, -DBL_MAX};
+  }
+  for (int i = 0; i < m; ++i) {
+    const Vec2 v = q.vertex(i);
+    const Lanes x = {v.x, v.x}, y = {v.y, v.y};
+    for (int k = 0; k < np; ++k) {
+      const Lanes t = e.nx[k] * x + e.ny[k] * y;  // dot(n, v) per lane
+      lo[k] = lane_min(lo[k], t);
+      if (kHi) hi[k] = lane_max(hi[k], t);
+    }
+  }
+}
+
+// One separating axis alone (numbered as in separating_axes_n): for axis
+// j < nb the distance of edge line j of B to A, min_i n_j . a_i - n_j . b_j
+// (> 0: A lies outside it), else of edge line i = j - nb of A to B. The same
+// dot products, folded in the same order, as the lanes of separating_axes_n.
+// kA, kB: the vertex counts when known at compile time (0: read them).
+template <int kA, int kB>
+double axis_distance(const Polygon& a, const Polygon& b, int axis) {
+  const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
+  const bool on_b = axis < nb;
+  const Polygon& p = on_b ? b : a;  // the axis' polygon
+  const Polygon& q = on_b ? a : b;  // the other one
+  const int e = on_b ? axis : axis - nb, m = on_b ? na : nb;
+  const Vec2 n = p.normal(e);
+  double lo = DBL_MAX;
+  for (int i = 0; i < m; ++i) lo = std::min(lo, dot(n, q.vertex(i)));
+  return lo - dot(n, p.vertex(e));
+}
+
+// The first axis, in the order B's edges then A's, that separates by more
+// than tol (the caller found one; the last axis if none). Out of line: only
+// a pair that separates past its witness axis comes here, and keeping these
+// scalar loops apart keeps their loads out of the lanes' registers.
+[[gnu::noinline, gnu::cold]] int first_separating_axis(const Polygon& a, const Polygon& b, double tol) {
+  const int last = a.count + b.count - 1;
+  int axis = 0;
+  while (axis < last && !(axis_distance<0, 0>(a, b, axis) > tol)) ++axis;
+  return axis;
+}
+
 // The overlap test on E(A, B)'s edge lines (Table 2), shared by
 // overlap_state and overlap_and_intersection. a0 in E(A, B), evaluated on
 // E's edge lines without building E: every edge of E has the outward normal
@@ -92,69 +208,54 @@ namespace {
 // (the two ways of rounding differ by a few eps |x|, far below tol / 2)
 // and snapped to 0, so the line does not cut.
 // witness: see overlap_and_intersection. Axis j < b.count is edge j of B,
-// b.count + i is edge i of A.
+// b.count + i is edge i of A. The witness axis is tried alone first (a
+// pair that stays apart ends there); otherwise every axis is evaluated, two
+// at a time (EdgeLanes), and only a separated verdict (rare past the
+// witness) looks for the first separating axis, in the order B's edges then
+// A's, to store. A NaN distance is skipped, witness or not.
 // kA, kB: the vertex counts when known at compile time (0: read them), so
-// that the common quadrilateral pair runs unrolled; the same operations in
-// the same order either way.
+// that the common pairs of quadrilaterals and pentagons run unrolled; every
+// distance is the same dot product, rounded the same way, either way.
 template <bool kCuts, int kA = 0, int kB = 0>
 OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
-  // The distance of edge line j of B to A (> 0: A lies outside it), and of
-  // edge line i of A to B; the latter also gives how far B's farthest vertex
-  // lies outside that line (*beyond, for the cut mask).
-  auto b_axis = [&](int j) {
-    const Vec2 n = b.normal(j);
-    double lo = DBL_MAX;
-    for (int i = 0; i < na; ++i) lo = std::min(lo, dot(n, a.vertex(i)));
-    return lo - dot(n, b.vertex(j));
-  };
-  auto a_axis = [&](int i, double* beyond) {
-    const Vec2 n = a.normal(i);
-    double lo = DBL_MAX, hi = -DBL_MAX;
-    for (int j = 0; j < nb; ++j) {
-      const double x = dot(n, b.vertex(j));
-      lo = std::min(lo, x);
-      if (kCuts) hi = std::max(hi, x);
-    }
-    const double ai = dot(n, a.vertex(i));
-    if (kCuts) *beyond = hi - ai;
-    return lo - ai;
-  };
-  // The witness axis first; when it does not separate, its distance starts
-  // the maximum (max is exact in any order) and the loops skip it.
-  double beyond = 0.0;
-  double d = -DBL_MAX;
-  std::uint32_t mask = 0;
-  const int w = witness && *witness >= 0 && *witness < nb + na ? *witness : -1;
-  if (w >= 0) {
-    d = w < nb ? b_axis(w) : a_axis(w - nb, &beyond);
-    if (d > tol) return OverlapState::kSeparate;
-    if (kCuts && w >= nb && beyond > 0.5 * tol) mask |= std::uint32_t{1} << (w - nb);
+  const int pa = (na + 1) / 2, pb = (nb + 1) / 2;
+  if (witness && static_cast<unsigned>(*witness) < static_cast<unsigned>(nb + na))
+    if (axis_distance<kA, kB>(a, b, *witness) > tol) return OverlapState::kSeparate;
+  // Every axis, two per lane pair; dmax: the lane-wise maximum distance.
+  EdgeLanes<kB> eb;
+  EdgeLanes<kA> ea;
+  Lanes lo_b[EdgeLanes<kB>::kCapacity];
+  Lanes lo_a[EdgeLanes<kA>::kCapacity], hi_a[EdgeLanes<kA>::kCapacity];
+  edge_lanes(b, pb, eb);
+  extremes<false, kB, kA>(eb, pb, a, lo_b, nullptr);
+  edge_lanes(a, pa, ea);
+  extremes<kCuts, kA, kB>(ea, pa, b, lo_a, hi_a);
+  Lanes dmax = {-DBL_MAX, -DBL_MAX};
+  for (int k = 0; k < pb; ++k) dmax = lane_max(dmax, lo_b[k] - eb.off[k]);
+  for (int k = 0; k < pa; ++k) dmax = lane_max(dmax, lo_a[k] - ea.off[k]);
+  const double d = std::max(dmax[0], dmax[1]);
+  if (d > tol) {
+    if (witness) *witness = first_separating_axis(a, b, tol);
+    return OverlapState::kSeparate;
   }
-  for (int j = 0; j < nb; ++j) {
-    if (j == w) continue;
-    d = std::max(d, b_axis(j));
-    if (d > tol) {
-      if (witness) *witness = j;
-      return OverlapState::kSeparate;
-    }
+  if (kCuts) {
+    const Lanes half_tol = {0.5 * tol, 0.5 * tol};
+    std::uint64_t mask = 0;
+    for (int k = 0; k < pa; ++k) mask |= std::uint64_t{lane_bits(hi_a[k] - ea.off[k] > half_tol)} << (2 * k);
+    *cuts = static_cast<std::uint32_t>(mask & ((std::uint64_t{1} << na) - 1u));
   }
-  for (int i = 0; i < na; ++i) {
-    if (nb + i == w) continue;
-    d = std::max(d, a_axis(i, &beyond));
-    if (d > tol) {
-      if (witness) *witness = nb + i;
-      return OverlapState::kSeparate;
-    }
-    if (kCuts && beyond > 0.5 * tol) mask |= std::uint32_t{1} << i;
-  }
-  if (kCuts) *cuts = mask;
   return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
 }
 
+// Dispatch on the vertex counts: blocks cut by joint sets are mostly
+// quadrilaterals, the rest mostly pentagons (of the overlap tests in the
+// Sect. 6.1 collapse about 79 % are 4-4 pairs, 17 % 4-5 or 5-4).
 template <bool kCuts>
 OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
   if (a.count == 4 && b.count == 4) return separating_axes_n<kCuts, 4, 4>(a, b, tol, cuts, witness);
+  if (a.count == 4 && b.count == 5) return separating_axes_n<kCuts, 4, 5>(a, b, tol, cuts, witness);
+  if (a.count == 5 && b.count == 4) return separating_axes_n<kCuts, 5, 4>(a, b, tol, cuts, witness);
   return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
 }
 
