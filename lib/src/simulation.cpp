@@ -521,12 +521,14 @@ void Simulation::rebuild_near_pairs() {
     ++near_pair_offset_[static_cast<std::size_t>(p.j) + 1];
   }
   for (int i = 0; i < n; ++i) near_pair_offset_[i + 1] += near_pair_offset_[i];
-  near_pair_index_.resize(static_cast<std::size_t>(near_pair_offset_[n]));
+  block_pairs_.resize(static_cast<std::size_t>(near_pair_offset_[n]));
   std::vector<int> fill(near_pair_offset_.begin(), near_pair_offset_.end() - 1);
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
-    near_pair_index_[static_cast<std::size_t>(fill[near_pairs_[k].i]++)] = static_cast<int>(k);
-    near_pair_index_[static_cast<std::size_t>(fill[near_pairs_[k].j]++)] = static_cast<int>(k);
+    const int i = near_pairs_[k].i, j = near_pairs_[k].j;
+    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j, true};
+    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i, false};
   }
+  pair_loads_.resize(near_pairs_.size());
 }
 
 void Simulation::compute_forces() {
@@ -566,8 +568,11 @@ void Simulation::pair_forces(bool with_energy) {
     NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
     PairResult& r = pair_results_[static_cast<std::size_t>(k)];
     const bool was_active = r.active;
+    PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
     r.candidate = aabb_overlap(boxes_[p.i], boxes_[p.j]);
     r.active = false;
+    load.candidate = r.candidate;
+    load.active = false;
     if (!r.candidate) continue;
     if (friction_) {
       if (was_active) {
@@ -578,6 +583,10 @@ void Simulation::pair_forces(bool with_energy) {
       }
     }
     r.active = pair_force(p.i, p.j, r, &p.witness, with_energy);
+    if (!r.active) continue;
+    load.active = true;
+    load.force = r.info.normal_force + r.info.tangential_force;
+    load.point = r.info.point;
   }
 }
 
@@ -588,16 +597,15 @@ void Simulation::gather_contact_forces(int i) {
   // for the step-motion guard.
   double reach = radius_[i];
   const Vec2 c = moments_[i].centroid;
-  for (int q = near_pair_offset_[i]; q < near_pair_offset_[i + 1]; ++q) {
-    const std::size_t k = static_cast<std::size_t>(near_pair_index_[static_cast<std::size_t>(q)]);
-    const PairResult& r = pair_results_[k];
-    if (!r.candidate) continue;
-    const NearPair& p = near_pairs_[k];
-    reach = std::min(reach, radius_[p.i == i ? p.j : p.i]);
-    if (!r.active || fixed_[i]) continue;
-    const Vec2 f = r.info.normal_force + r.info.tangential_force;
-    if (p.i == i) force_[i] += point_load(c, r.info.point, f);
-    else force_[i] -= point_load(c, r.info.point, f);
+  const bool free_block = !fixed_[i];
+  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
+    const BlockPair& bp = block_pairs_[static_cast<std::size_t>(q)];
+    const PairLoad& load = pair_loads_[static_cast<std::size_t>(bp.pair)];
+    if (!load.candidate) continue;
+    reach = std::min(reach, radius_[bp.other]);
+    if (!load.active || !free_block) continue;
+    if (bp.first) force_[i] += point_load(c, load.point, load.force);
+    else force_[i] -= point_load(c, load.point, load.force);
   }
   reach_radius_[i] = reach;
 }

@@ -201,7 +201,7 @@ class Simulation {
   // Contacts. The broad phase's near pairs (i < j, sorted) each own a
   // result slot that lives as long as the pair stays near: its friction
   // history stays in place from step to step. near_pair_offset_ and
-  // near_pair_index_ list each block's near pairs in increasing order (CSR),
+  // block_pairs_ list each block's near pairs in increasing order (CSR),
   // so that each block sums its contact forces in that fixed order.
   struct NearPair {
     int i = -1, j = -1;
@@ -209,7 +209,22 @@ class Simulation {
   };
   std::vector<NearPair> near_pairs_;
   std::vector<PairResult> pair_results_;
-  std::vector<int> near_pair_offset_, near_pair_index_;
+  // What the per-block sum reads of each near pair, compact (a PairResult
+  // spans several cache lines): written by the pair loop, read per block.
+  struct PairLoad {
+    Vec2 force{};  // normal + tangential force on the pair's first block, N/m
+    Vec2 point{};  // loading point pg
+    bool candidate = false, active = false;
+  };
+  std::vector<PairLoad> pair_loads_;
+  // One entry of a block's near-pair list: the pair, the other block, and
+  // whether this block is the pair's first (the force acts on it with +).
+  struct BlockPair {
+    int pair = -1, other = -1;
+    bool first = false;
+  };
+  std::vector<int> near_pair_offset_;
+  std::vector<BlockPair> block_pairs_;
   std::vector<ContactInfo> contact_info_;  // active pairs in near-pair order, after each advance
   std::size_t candidate_count_ = 0;
   int threads_ = 1;
