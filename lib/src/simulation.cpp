@@ -192,7 +192,6 @@ void Simulation::build_blocks() {
   stress_.assign(n, Vec3::Zero());
   density_.assign(n, 0.0);
   mass_.assign(n, 0.0);
-  tol_.assign(n, 0.0);
   radius_.assign(n, 0.0);
   reach_radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
@@ -236,7 +235,7 @@ void Simulation::build_blocks() {
   boxes_.resize(n);
   // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
   bisector_offset_.assign(n, 0);
-  bisector_count_.assign(n, 0);
+  sides_.assign(n, BlockSide{});
   plain_bisectors_.assign(n, 0);
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -244,6 +243,11 @@ void Simulation::build_blocks() {
     total += 2 * poly_[i].count;
   }
   bisector_store_.resize(static_cast<std::size_t>(total));
+  for (std::size_t i = 0; i < n; ++i) {
+    sides_[i].side.poly = &poly_[i];
+    sides_[i].side.small_edge_rays = scene_.contact.small_edge_rays;
+    sides_[i].side.bisectors = bisector_store_.data() + bisector_offset_[i];
+  }
 }
 
 void Simulation::choose_broad_phase_skin() {
@@ -290,6 +294,8 @@ void Simulation::choose_potential_length() {
   for (int i = 0; i < block_count(); ++i) {
     h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(poly_[i]).radius : h;
     kn_over_h_[i] = c.kn / h_[i];
+    sides_[i].side.kn_over_h = kn_over_h_[i];
+    sides_[i].side.small_edge = c.small_edge_fraction * h_[i];
   }
 }
 
@@ -432,14 +438,14 @@ void Simulation::update_block_geometry(int i) {
   const double min_edge2 = update_normals_min_edge2(poly_[i]);
   moments_[i] = area_moments(poly_[i]);
   boxes_[i] = bounds(poly_[i]);
-  tol_[i] = geometric_tolerance(boxes_[i]);
+  sides_[i].tol = geometric_tolerance(boxes_[i]);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes.
     const double small = scene_.contact.small_edge_fraction * h_[i];
     const bool plain = !(min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     if (!(plain && plain_bisectors_[i]))
-      bisector_count_[i] =
+      sides_[i].side.bisector_count =
           bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
     plain_bisectors_[i] = plain ? 1 : 0;
   }
@@ -658,18 +664,17 @@ void Simulation::kick() {
 bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness, bool with_energy) const {
   const Polygon& a = poly_[cp];
   const Polygon& b = poly_[tp];
-  const double tol = std::max(tol_[cp], tol_[tp]);
+  const BlockSide& side_a = sides_[cp];
+  const BlockSide& side_b = sides_[tp];
+  const double tol = std::max(side_a.tol, side_b.tol);
   // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
   static thread_local Polygon ip;
   static thread_local std::array<IpEdge, kMaxVertices> source;
   if (overlap_and_intersection(a, b, tol, ip, source.data(), witness) != OverlapState::kOverlapping) return false;
   if (ip.count < 3) return false;
   const ContactParams& c = scene_.contact;
-  const PotentialSide side_a{&a, kn_over_h_[cp], c.small_edge_fraction * h_[cp], c.small_edge_rays,
-                             bisector_store_.data() + bisector_offset_[cp], bisector_count_[cp]};
-  const PotentialSide side_b{&b, kn_over_h_[tp], c.small_edge_fraction * h_[tp], c.small_edge_rays,
-                             bisector_store_.data() + bisector_offset_[tp], bisector_count_[tp]};
-  const NormalForce nf = normal_contact_force(side_a, side_b, ip, c.integration, tol, source.data());  // Eqs. 11-20
+  const NormalForce nf =
+      normal_contact_force(side_a.side, side_b.side, ip, c.integration, tol, source.data());  // Eqs. 11-20
   if (!nf.valid) return false;
 
   ContactInfo& info = r.info;

@@ -184,7 +184,7 @@ class Simulation {
   std::vector<Vec3> stress_;
 
   // Per-block constants and bookkeeping.
-  std::vector<double> density_, mass_, h_, tol_;  // density follows area: mass_ is conserved
+  std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
   std::vector<double> kn_over_h_;  // kn / H of each block (H is fixed at construction), Pa/m
   std::vector<Mat3> elastic_;
   std::vector<char> fixed_;
@@ -237,9 +237,17 @@ class Simulation {
   std::vector<ThreadFlags> flags_;
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
-  // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count bisector_count_[i].
+  // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count sides_[i].side.bisector_count.
   std::vector<Bisector> bisector_store_;
-  std::vector<int> bisector_offset_, bisector_count_;
+  std::vector<int> bisector_offset_;
+  // What a pair's contact reads of each block, in one cache line: its
+  // potential side (polygon, kn/H, small edge, its bisectors and their
+  // count) and its round-off tolerance.
+  struct alignas(64) BlockSide {
+    PotentialSide side;
+    double tol = 0.0;  // geometric_tolerance of the block's box, m
+  };
+  std::vector<BlockSide> sides_;
   std::vector<char> plain_bisectors_;  // 1: block i's bisectors are its vertex rays (no small edge)
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
