@@ -30,12 +30,13 @@ constexpr double kPi = 3.14159265358979323846;
 // blocks (dimensionless); see Simulation::choose_broad_phase_skin.
 constexpr double kBroadPhaseSkin = 0.25;
 
-// Near pairs per chunk of the pair loop, dealt round-robin to the threads
-// (pairs): contiguous halves of the sorted list left one thread up to 1.3x
-// the touching pairs of the other on the collapse (the pile is not uniform
-// along the block numbering); chunks of 16 keep that within ~1.04x on
-// average, with no shared counter as a dynamic schedule would need.
-constexpr int kPairChunk = 16;
+// Relative cost of a near pair in the pair loop by what it turned out to
+// be (dimensionless; instructions measured on the 6.1 collapse: ~2,500 for
+// a touching pair, ~120 for a separate candidate, ~20 for a pair whose
+// boxes do not overlap). Only the shares' balance depends on them.
+constexpr double kWorkTouching = 125.0;
+constexpr double kWorkCandidate = 6.0;
+constexpr double kWorkOther = 1.0;
 
 std::string field(const char* name, std::size_t i) {
   std::ostringstream s;
@@ -307,6 +308,32 @@ void Simulation::advance_to(double t) {
   run_steps(count);
 }
 
+namespace {
+
+// This thread's index in the team (0 outside a parallel region), and the
+// team's size (1 outside).
+int thread_index() {
+#if defined(DDA_HAVE_OPENMP)
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
+int team_size() {
+#if defined(DDA_HAVE_OPENMP)
+  return omp_get_num_threads();
+#else
+  return 1;
+#endif
+}
+
+bool inside(const Aabb& b, const Aabb& grown) {
+  return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
+}
+
+}  // namespace
+
 void Simulation::run_steps(std::int64_t count) {
   // One parallel region for all `count` steps; every thread runs the loop
   // and the phases share out their loops (per block, per near pair). Each
@@ -324,6 +351,8 @@ void Simulation::run_steps(std::int64_t count) {
   std::exception_ptr error;
   DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1))
   {
+    DDA_OMP(omp single)
+    split_pairs_evenly(team_size());
     for (std::int64_t k = 0; k < count; ++k) {
       const std::int64_t done = first + k + 1;
       const bool energy_due = every > 0 && done % every == 0;
@@ -331,6 +360,7 @@ void Simulation::run_steps(std::int64_t count) {
       update_near_pairs();          // only when a block left its grown box
       pair_forces(energy_due);      // friction history, overlap, pair forces at t^{n+1} (and energies when due)
       gather_and_kick();            // contact forces summed in pair order; a^{n+1}; v^{n+1}; per-block guards
+      if (thread_index() == 0) balance_pair_split();  // read by the next pair loop, after two barriers
       // The flags were set before the kick loop's barrier: every thread
       // takes the same branch.
       bool failed = false;
@@ -357,22 +387,6 @@ void Simulation::run_steps(std::int64_t count) {
   collect_contacts();
 }
 
-namespace {
-
-// This thread's index in the team (0 outside a parallel region).
-int thread_index() {
-#if defined(DDA_HAVE_OPENMP)
-  return omp_get_thread_num();
-#else
-  return 0;
-#endif
-}
-
-bool inside(const Aabb& b, const Aabb& grown) {
-  return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
-}
-
-}  // namespace
 
 void Simulation::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
@@ -414,7 +428,18 @@ void Simulation::update_near_pairs() {
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;
   DDA_OMP(omp single)
-  rebuild_near_pairs();
+  {
+    // The shares keep their proportions of the new list.
+    const long before = static_cast<long>(near_pairs_.size());
+    rebuild_near_pairs();
+    const long after = static_cast<long>(near_pairs_.size());
+    if (before > 0 && pair_split_.size() == static_cast<std::size_t>(team_size()) + 1) {
+      for (long& b : pair_split_) b = b * after / before;
+      pair_split_.back() = after;
+    } else {
+      split_pairs_evenly(team_size());
+    }
+  }
 }
 
 void Simulation::advance_pair_history(PairHistory& h) const {
@@ -559,18 +584,22 @@ void Simulation::body_force(int i) {
 }
 
 void Simulation::pair_forces(bool with_energy) {
-  // Pair forces, independent of each other. Split statically, in chunks
-  // of kPairChunk dealt round-robin: a dynamic schedule's shared chunk
-  // counter costs a cross-core round trip per chunk, which on a virtual
-  // machine with slow core-to-core latency cost more than the uneven pair
-  // costs it evens out (measured: 2 threads 0.9x of 1 thread with dynamic
-  // chunks of 16, 1.16x static). A pair whose boxes do not overlap is no
-  // candidate; a pair that does not touch forgets its friction history.
-  // with_energy: each contact also stores its penalty energy (for the
-  // energy guard, summed in pair order as energy() sums it).
+  // Pair forces, independent of each other. Each thread takes its
+  // contiguous share of the list (pair_split_; all of it outside a
+  // parallel region), not a dynamic schedule: its shared chunk counter
+  // costs a cross-core round trip per chunk, which on a virtual machine
+  // with slow core-to-core latency cost more than the uneven pair costs it
+  // evens out (measured: 2 threads 0.9x of 1 thread with dynamic chunks of
+  // 16). A pair whose boxes do not overlap is no candidate; a pair that
+  // does not touch forgets its friction history. with_energy: each contact
+  // also stores its penalty energy (for the energy guard, summed in pair
+  // order as energy() sums it).
+  const int team = team_size(), t = thread_index();
   const long n = static_cast<long>(near_pairs_.size());
-  DDA_OMP(omp for schedule(static, kPairChunk))
-  for (long k = 0; k < n; ++k) {
+  const long begin = team > 1 ? pair_split_[static_cast<std::size_t>(t)] : 0;
+  const long end = team > 1 ? pair_split_[static_cast<std::size_t>(t) + 1] : n;
+  double work = 0.0;
+  for (long k = begin; k < end; ++k) {
     NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
     PairResult& r = pair_results_[static_cast<std::size_t>(k)];
     const bool was_active = r.active;
@@ -579,7 +608,10 @@ void Simulation::pair_forces(bool with_energy) {
     r.active = false;
     load.candidate = r.candidate;
     load.active = false;
-    if (!r.candidate) continue;
+    if (!r.candidate) {
+      work += kWorkOther;
+      continue;
+    }
     if (friction_) {
       if (was_active) {
         advance_pair_history(r.history);
@@ -589,10 +621,53 @@ void Simulation::pair_forces(bool with_energy) {
       }
     }
     r.active = pair_force(p.i, p.j, r, &p.witness, with_energy);
-    if (!r.active) continue;
+    if (!r.active) {
+      work += kWorkCandidate;
+      continue;
+    }
+    work += kWorkTouching;
     load.active = true;
     load.force = r.info.normal_force + r.info.tangential_force;
     load.point = r.info.point;
+  }
+  if (team > 1) flags_[static_cast<std::size_t>(t)].pair_work = work;
+  DDA_OMP(omp barrier)
+}
+
+void Simulation::split_pairs_evenly(int team) {
+  // Equal numbers of pairs per thread (a start, before any work is known).
+  const long n = static_cast<long>(near_pairs_.size());
+  pair_split_.resize(static_cast<std::size_t>(team) + 1);
+  for (int t = 0; t <= team; ++t) pair_split_[static_cast<std::size_t>(t)] = n * t / team;
+  split_scratch_.resize(pair_split_.size());
+  work_scratch_.resize(pair_split_.size());
+}
+
+void Simulation::balance_pair_split() {
+  // The work estimated per share in the last pair loop, taken as spread
+  // evenly over each share's pairs; the new boundaries cut that estimate
+  // into equal parts (by linear interpolation inside the shares). Pairs
+  // change slowly from step to step, so this follows the pile as it moves.
+  // Results do not depend on the split: only the time.
+  const int team = static_cast<int>(pair_split_.size()) - 1;
+  if (team < 2) return;
+  std::vector<double>& cum = work_scratch_;
+  cum[0] = 0.0;
+  for (int t = 0; t < team; ++t)
+    cum[static_cast<std::size_t>(t) + 1] = cum[static_cast<std::size_t>(t)] + flags_[static_cast<std::size_t>(t)].pair_work;
+  const double total = cum[static_cast<std::size_t>(team)];
+  if (!(total > 0.0)) return;
+  std::vector<long>& old = split_scratch_;
+  old = pair_split_;
+  int u = 0;
+  for (int t = 1; t < team; ++t) {
+    const double target = total * t / team;
+    while (u < team - 1 && cum[static_cast<std::size_t>(u) + 1] <= target) ++u;
+    const double w = cum[static_cast<std::size_t>(u) + 1] - cum[static_cast<std::size_t>(u)];
+    const double frac = w > 0.0 ? (target - cum[static_cast<std::size_t>(u)]) / w : 0.0;
+    const long lo = old[static_cast<std::size_t>(u)], hi = old[static_cast<std::size_t>(u) + 1];
+    const long b = lo + static_cast<long>(std::llround(frac * static_cast<double>(hi - lo)));
+    pair_split_[static_cast<std::size_t>(t)] = std::max(b, pair_split_[static_cast<std::size_t>(t) - 1]);
   }
 }
 

@@ -233,8 +233,17 @@ class Simulation {
   struct alignas(64) ThreadFlags {
     bool left_skin = false;     // a block of this thread's share left its grown box
     bool guard_failed = false;  // a block of this thread's share failed a per-block guard
+    double pair_work = 0.0;     // estimated cost of this thread's share of the pair loop (relative)
   };
   std::vector<ThreadFlags> flags_;
+  // The pair loop's shares: thread t takes near pairs [pair_split_[t],
+  // pair_split_[t + 1]), contiguous (a thread's pairs mostly involve the
+  // blocks it moves: fewer polygons travel between cores) and moved every
+  // step so that the shares' estimated work is even (balance_pair_split).
+  std::vector<long> pair_split_, split_scratch_;
+  std::vector<double> work_scratch_;
+  void split_pairs_evenly(int team);
+  void balance_pair_split();
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
   // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count sides_[i].side.bisector_count.
