@@ -336,18 +336,6 @@ NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& t
   return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source);
 }
 
-void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol) {
-  std::array<double, kMaxVertices> d;  // left uninitialised: the first poly.count are set
-  for (int i = 0; i < poly.count; ++i) {
-    double di = dot(normal, poly.vertex(i)) - offset;
-    if (std::fabs(di) <= tol) di = 0.0;
-    d[static_cast<std::size_t>(i)] = di;
-  }
-  std::array<Vec2, kMaxVertices> out;
-  const int n = clip_ring(poly.v.data(), d.data(), poly.count, out.data());
-  poly.count = n < 3 ? 0 : n;
-  for (int i = 0; i < poly.count; ++i) poly.v[static_cast<std::size_t>(i)] = out[static_cast<std::size_t>(i)];
-}
 
 double potential_integral(const PotentialSide& side, const Polygon& region, double tol) {
   // Cell of edge i: where d_i <= d_j for all j, i.e. (n_j - n_i).x <=
@@ -367,6 +355,7 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
     for (int j = 0; j < p.count && count >= 3; ++j) {
       if (j == i) continue;
       const Vec2 nj = p.normal(j);
+      // Keep normal.x <= offset; a vertex within snap of the line is on it.
       const Vec2 normal = nj - ni;
       const double offset = dot(nj, p.vertex(j)) - ci;
       for (int k = 0; k < count; ++k) {

@@ -306,7 +306,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
     b = c;
     const int l = in_label[i];
     const bool on_contact = l < 0;
-    const int e = on_contact ? -1 - l : l;
+    const int e = on_contact ? contact_label(l) : l;  // contact_label is its own inverse
     result.v[static_cast<std::size_t>(i)] = in[i];
     result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
     if (source) source[i] = {on_contact, e};

@@ -22,10 +22,7 @@ Polygon make_polygon(const Vec2* points, int count) {
   return poly;
 }
 
-void update_normals(Polygon& poly) {
-  for (int i = 0; i < poly.count; ++i)
-    poly.n[static_cast<std::size_t>(i)] = normalized(perp_right(poly.edge(i)));
-}
+void update_normals(Polygon& poly) { update_normals_min_edge2(poly); }
 
 double update_normals_min_edge2(Polygon& poly) {
   // normalized(perp_right(e)) divides by sqrt(e.y^2 + e.x^2), the same bits

@@ -65,9 +65,7 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
   auto vertex_dir = [&](int i) { return normalized(-(poly.normal(poly.prev(i)) + poly.normal(i))); };
   const double small2 = small_edge * small_edge;  // squared: no square root per edge
   std::uint32_t replaced = 0;                      // bit i: vertex i's ray gave way to a virtual node
-  int e = 0;  // the first small edge (usually none: straight to the vertex rays)
-  while (e < n && length_squared(poly.edge(e)) >= small2) ++e;
-  for (; e < n; ++e) {
+  for (int e = 0; e < n; ++e) {
     if (length_squared(poly.edge(e)) >= small2) continue;
     const int a = e, b = poly.next(e);
     const std::uint32_t ab_bits = (std::uint32_t{1} << a) | (std::uint32_t{1} << b);
@@ -91,7 +89,7 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
   }
   for (int i = 0; i < n; ++i) {
     if (replaced >> i & 1u) continue;
-    const Bisector lines{i == 0 ? n - 1 : i - 1, i, 0.0};
+    const Bisector lines{poly.prev(i), i, 0.0};
     if constexpr (kDraw)
       out[count++] = {poly.vertex(i), vertex_dir(i), lines};
     else

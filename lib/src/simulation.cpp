@@ -328,6 +328,12 @@ int team_size() {
 #endif
 }
 
+// The near-pair order: by first block, then second.
+template <class P>
+bool pair_before(const P& x, const P& y) {
+  return x.i < y.i || (x.i == y.i && x.j < y.j);
+}
+
 bool inside(const Aabb& b, const Aabb& grown) {
   return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
 }
@@ -442,13 +448,12 @@ void Simulation::update_near_pairs() {
   }
 }
 
-void Simulation::advance_pair_history(PairHistory& h) const {
+void Simulation::advance_pair_history(int cp, int tp, PairHistory& h) const {
   // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at pg; a sticking
   // pair accumulates it, a sliding pair restarts from it (kPaper) or, with
   // the return mapping, accumulates it onto the shear it was returned to
   // (pair_force). The centroids are those of the step's start configuration.
   const bool restart = scene_.contact.friction_update == FrictionUpdate::kPaper;
-  const int cp = static_cast<int>(h.key >> 32), tp = static_cast<int>(h.key & 0xffffffffu);
   const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(start_centroid_[cp], h.point, step_disp_[cp]);
   const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(start_centroid_[tp], h.point, step_disp_[tp]);
   const Vec2 dd = du_cp - du_tp;
@@ -527,24 +532,25 @@ void Simulation::rebuild_near_pairs() {
         pairs.push_back({std::min(i, j), std::max(i, j), -1});
       }
     }
-    std::sort(pairs.begin(), pairs.end(),
-              [](const NearPair& x, const NearPair& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); });
+    std::sort(pairs.begin(), pairs.end(), pair_before<NearPair>);
   }
   // A pair on both lists keeps its slot's state (witness, contact, history):
   // one merge pass over the two sorted lists. A pair in contact now is on
   // both (its boxes overlap, so its grown boxes do).
   std::vector<PairResult> results(pairs.size());
+  std::vector<PairLoad> loads(pairs.size());
   std::size_t h = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto before = [](const NearPair& x, const NearPair& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); };
-    while (h < near_pairs_.size() && before(near_pairs_[h], pairs[k])) ++h;
-    if (h < near_pairs_.size() && near_pairs_[h].i == pairs[k].i && near_pairs_[h].j == pairs[k].j) {
+    while (h < near_pairs_.size() && pair_before(near_pairs_[h], pairs[k])) ++h;
+    if (h < near_pairs_.size() && !pair_before(pairs[k], near_pairs_[h])) {
       pairs[k].witness = near_pairs_[h].witness;
       results[k] = pair_results_[h];
+      loads[k] = pair_loads_[h];
     }
   }
   near_pairs_.swap(pairs);
   pair_results_.swap(results);
+  pair_loads_.swap(loads);
   // Each block's pairs in increasing order (CSR).
   near_pair_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
   for (const NearPair& p : near_pairs_) {
@@ -559,7 +565,6 @@ void Simulation::rebuild_near_pairs() {
     block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j, true};
     block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i, false};
   }
-  pair_loads_.resize(near_pairs_.size());
 }
 
 void Simulation::compute_forces() {
@@ -602,26 +607,19 @@ void Simulation::pair_forces(bool with_energy) {
   for (long k = begin; k < end; ++k) {
     NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
     PairResult& r = pair_results_[static_cast<std::size_t>(k)];
-    const bool was_active = r.active;
     PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
-    r.candidate = aabb_overlap(boxes_[p.i], boxes_[p.j]);
-    r.active = false;
-    load.candidate = r.candidate;
+    const bool was_active = load.active;
+    load.candidate = aabb_overlap(boxes_[p.i], boxes_[p.j]);
     load.active = false;
-    if (!r.candidate) {
+    if (!load.candidate) {
       work += kWorkOther;
       continue;
     }
     if (friction_) {
-      if (was_active) {
-        advance_pair_history(r.history);
-      } else {
-        r.history = PairHistory{};
-        r.history.key = (static_cast<std::uint64_t>(p.i) << 32) | static_cast<std::uint64_t>(p.j);
-      }
+      if (was_active) advance_pair_history(p.i, p.j, r.history);
+      else r.history = PairHistory{};
     }
-    r.active = pair_force(p.i, p.j, r, &p.witness, with_energy);
-    if (!r.active) {
+    if (!pair_force(p.i, p.j, r, &p.witness, with_energy)) {
       work += kWorkCandidate;
       continue;
     }
@@ -695,9 +693,9 @@ void Simulation::collect_contacts() {
   // The active pairs in pair order, for the accessors and the guards.
   contact_info_.clear();
   candidate_count_ = 0;
-  for (const PairResult& r : pair_results_) {
-    candidate_count_ += r.candidate ? 1 : 0;
-    if (r.active) contact_info_.push_back(r.info);
+  for (std::size_t k = 0; k < pair_loads_.size(); ++k) {
+    candidate_count_ += pair_loads_[k].candidate ? 1 : 0;
+    if (pair_loads_[k].active) contact_info_.push_back(pair_results_[k].info);
   }
 }
 
@@ -711,7 +709,7 @@ void Simulation::gather_and_kick() {
     gather_contact_forces(i);
     if (fixed_[i]) continue;
     kick_block(i);
-    if (block_fails_guards(i)) failed = true;
+    if (guard_fault(i) != GuardFault::kNone) failed = true;
   }
   flags_[static_cast<std::size_t>(thread_index())].guard_failed = failed;
   DDA_OMP(omp barrier)
@@ -762,7 +760,7 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness, bool wi
   info.ip_length = 0.5 * nf.ip_perimeter;
   // The penalty energy of the contact, as energy() computes it (the same
   // IP: the lines left out of the cut leave it unchanged).
-  if (with_energy) r.energy = contact_energy({&a, kn_over_h_[cp], 0.0}, {&b, kn_over_h_[tp], 0.0}, ip, tol);
+  if (with_energy) r.energy = contact_energy(side_a.side, side_b.side, ip, tol);
   if (friction_) {
     // Coulomb friction with stick/slide history, Eqs. 24-26.
     PairHistory& hist = r.history;
@@ -831,41 +829,44 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness, bool wi
   throw SimulationError(s.str());
 }
 
-bool Simulation::block_fails_guards(int i) const {
+Simulation::GuardFault Simulation::guard_fault(int i) const {
   // Block i (free) after its kick: a non-finite state, a collapsed area, or
   // a vertex that moved more in this step than max_step_motion of the
   // thinnest block within its reach (itself and its candidates: a block in
   // free flight is not stopped because a thin plate exists somewhere else).
   const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
                       std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
+  if (!finite) return GuardFault::kNonFinite;
+  if (!(moments_[i].area > 0.0)) return GuardFault::kAreaCollapsed;
   const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
-  return !finite || !(moments_[i].area > 0.0) || step_motion2_[i] > motion_limit * motion_limit;
+  if (step_motion2_[i] > motion_limit * motion_limit) return GuardFault::kStepMotion;
+  return GuardFault::kNone;
 }
 
 void Simulation::check_state(bool energy_due) {
   // The first block that fails a per-block guard, with the reason.
   for (int i = 0; i < block_count(); ++i) {
-    if (fixed_[i] || !block_fails_guards(i)) continue;
-    const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
-                        std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
-    if (!finite) stop(i, "non-finite velocity or position");
+    if (fixed_[i]) continue;
     std::ostringstream s;
-    if (!(moments_[i].area > 0.0)) {
-      s << "area collapsed to " << moments_[i].area << " m^2";
-    } else {
-      // Largest vertex motion of this step, |T(p) dd| at the vertices
-      // (squared, recorded by move_blocks as it moved them).
-      s << "a vertex moved " << std::sqrt(step_motion2_[i]) << " m in one step, more than "
-        << scene_.guards.max_step_motion << " of the smallest inscribed radius within reach (" << reach_radius_[i]
-        << " m)";
+    switch (guard_fault(i)) {
+      case GuardFault::kNone: continue;
+      case GuardFault::kNonFinite: stop(i, "non-finite velocity or position");
+      case GuardFault::kAreaCollapsed: s << "area collapsed to " << moments_[i].area << " m^2"; break;
+      case GuardFault::kStepMotion:
+        // Largest vertex motion of this step, |T(p) dd| at the vertices
+        // (squared, recorded by move_blocks as it moved them).
+        s << "a vertex moved " << std::sqrt(step_motion2_[i]) << " m in one step, more than "
+          << scene_.guards.max_step_motion << " of the smallest inscribed radius within reach (" << reach_radius_[i]
+          << " m)";
+        break;
     }
     stop(i, s.str());
   }
   if (energy_due) {
     // energy() with this step's stored contact energies, in pair order.
     Energy e = block_energy();
-    for (const PairResult& r : pair_results_)
-      if (r.active) e.contact += r.energy;
+    for (std::size_t k = 0; k < pair_loads_.size(); ++k)
+      if (pair_loads_[k].active) e.contact += pair_results_[k].energy;
     energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
     const double growth = (e.total() - energy0_) / std::max(energy_scale_, DBL_MIN);
     if (growth > scene_.guards.max_energy_growth) {
@@ -999,9 +1000,7 @@ Energy Simulation::energy() const {
     const Polygon& b = poly_[ci.tp];
     const double tol = pair_tolerance(a, b);
     const Polygon ip = intersection_polygon(a, b, tol);
-    const PotentialSide sa{&a, kn_over_h_[ci.cp], 0.0};
-    const PotentialSide sb{&b, kn_over_h_[ci.tp], 0.0};
-    e.contact += contact_energy(sa, sb, ip, tol);
+    e.contact += contact_energy(sides_[ci.cp].side, sides_[ci.tp].side, ip, tol);
   }
   return e;
 }

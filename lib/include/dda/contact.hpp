@@ -63,8 +63,4 @@ double contact_energy(const PotentialSide& cp, const PotentialSide& tp, const Po
 // Integral over `region` of kn/H * d_exit of `side` (region inside side.poly).
 double potential_integral(const PotentialSide& side, const Polygon& region, double tol);
 
-// Keeps the part of `poly` with normal.x <= offset (a general half-plane cut,
-// in place). Vertices within tol of the line are taken as on it.
-void clip_half_plane(Polygon& poly, Vec2 normal, double offset, double tol);
-
 }  // namespace dda

@@ -124,7 +124,6 @@ class Simulation {
  private:
   // Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
   struct PairHistory {
-    std::uint64_t key = 0;  // (cp << 32) | tp
     Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
     Vec2 slide_dir{};       // sliding direction s of the last sliding step
     Vec2 point{};           // pg of the last force evaluation
@@ -147,18 +146,18 @@ class Simulation {
   void kick_block(int i);
   void rebuild_near_pairs();
   void collect_contacts();
-  // One near pair's contact, computed independently of all others.
+  // One near pair's contact, computed independently of all others (whether
+  // it is a candidate and in contact: its PairLoad).
   struct PairResult {
-    bool candidate = false;  // the two boxes overlap at this step
-    bool active = false;     // in contact: info (and history) are this step's
     ContactInfo info;
     double energy = 0.0;     // penalty energy, J/m (set on steps with an energy check)
     PairHistory history;
   };
   bool pair_force(int cp, int tp, PairResult& r, int* witness, bool with_energy) const;
-  void advance_pair_history(PairHistory& h) const;
+  void advance_pair_history(int cp, int tp, PairHistory& h) const;
   void kick();
-  bool block_fails_guards(int i) const;
+  enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
+  GuardFault guard_fault(int i) const;
   void check_state(bool energy_due);
   Energy block_energy() const;
   void predict_critical_step();
@@ -212,9 +211,10 @@ class Simulation {
   // What the per-block sum reads of each near pair, compact (a PairResult
   // spans several cache lines): written by the pair loop, read per block.
   struct PairLoad {
-    Vec2 force{};  // normal + tangential force on the pair's first block, N/m
-    Vec2 point{};  // loading point pg
-    bool candidate = false, active = false;
+    Vec2 force{};            // normal + tangential force on the pair's first block, N/m
+    Vec2 point{};            // loading point pg
+    bool candidate = false;  // the two boxes overlap at this step
+    bool active = false;     // in contact: force, point and the PairResult are this step's
   };
   std::vector<PairLoad> pair_loads_;
   // One entry of a block's near-pair list: the pair, the other block, and
