@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace dda {
 
@@ -28,60 +31,125 @@ struct Crossings {
   }
 };
 
+// Two doubles handled as one value: the GCC/Clang vector extension, one
+// SSE2 register on x86-64 (baseline, no -march), NEON or scalar code
+// elsewhere. Lane-wise +, - and * round exactly as the scalar operations
+// (no FMA contraction: ISO -std=c++17 keeps -ffp-contract=off).
+using Lanes = double __attribute__((vector_size(16)));
+using LaneMask = long long __attribute__((vector_size(16)));
+
+// t < d ? t : d lane by lane (a NaN t leaves d as it is): SSE2's minpd
+// exactly (named, as GCC does not always find it); elsewhere the plain form.
+inline Lanes lane_min(Lanes d, Lanes t) {
+#if defined(__SSE2__)
+  return _mm_min_pd(t, d);
+#else
+  return t < d ? t : d;
+#endif
+}
+
+// Bit l set when lane l of a comparison result is true.
+inline unsigned lane_bits(LaneMask m) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_pd((__m128d)m));
+#else
+  return static_cast<unsigned>((m[0] & 1) | (m[1] & 2));
+#endif
+}
+
+// (a[1], b[0]): the line before each of b's when a holds the pair before b.
+inline Lanes upper_lower(Lanes a, Lanes b) {
+#if defined(__SSE2__)
+  return _mm_shuffle_pd(a, b, 1);
+#else
+  return Lanes{a[1], b[0]};
+#endif
+}
+
 // The signed distances inside one polygon's edge lines along one IP edge
 // a + t (b - a), t in [0, 1]: d_i(t) = c_i + s_i t (Eq. 13), so that
 // d_exit(t) = min_i d_i(t) (Eq. 14). Built once per edge and side; every
-// demarcation point of the edge, and every ray test, reuses them.
-// kN: the polygon's vertex count when known at compile time (0: read it),
-// so that the loops over a quadrilateral's lines are unrolled.
+// demarcation point of the edge, and every ray test, reuses them. The lines
+// are kept two at a time: pair p holds lines 2p and 2p + 1 in its lanes, an
+// odd count's last line repeated to fill the last pair (a repeated line
+// changes no minimum). kN: the polygon's vertex count when known at compile
+// time (0: read it), so that the loops over a quadrilateral's lines are
+// unrolled.
 template <int kN>
 struct EdgeLines {
-  std::array<double, kMaxVertices> c, s;  // left uninitialised: the first `count` are set
+  static constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
+  Lanes c[kCapacity], s[kCapacity];  // left uninitialised: the first pairs() are set
   int count = kN;
+  int size() const { return kN ? kN : count; }
+  int pairs() const { return kN ? kCapacity : (count + 1) / 2; }
+  double c_at(int i) const { return c[i >> 1][i & 1]; }
+  double s_at(int i) const { return s[i >> 1][i & 1]; }
   void build(const Polygon& poly, Vec2 a, Vec2 ab) {
     if (!kN) count = poly.count;
-    for (int i = 0; i < size(); ++i) {
-      const Vec2 n = poly.normal(i);
-      c[static_cast<std::size_t>(i)] = dot(n, poly.vertex(i) - a);
-      s[static_cast<std::size_t>(i)] = -dot(n, ab);
+    const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
+    for (int p = 0; p < pairs(); ++p) {
+      const int i = 2 * p, j = std::min(i + 1, size() - 1);
+      const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
+      const Lanes nx = {ni.x, nj.x}, ny = {ni.y, nj.y};
+      c[p] = nx * (Lanes{vi.x, vj.x} - ax) + ny * (Lanes{vi.y, vj.y} - ay);  // dot(n, v - a)
+      s[p] = -(nx * abx + ny * aby);                                         // -dot(n, ab)
     }
   }
-  int size() const { return kN ? kN : count; }
+  // min_i d_i, folded from DBL_MAX as d_i < d ? d_i : d in each lane over
+  // its own lines, then across the two lanes: the minimum of the scalar fold
+  // in line order (a NaN d_i skipped alike). Only on a tie of +0 and -0 may
+  // the sign of the zero differ, which no caller reads (d > 0, d <= tol).
+  template <class Distance>
+  double fold_min(Distance&& d_pair) const {
+    Lanes d = {DBL_MAX, DBL_MAX};
+    for (int p = 0; p < pairs(); ++p) d = lane_min(d, d_pair(p));
+    return d[1] < d[0] ? d[1] : d[0];
+  }
   double at(double t) const {
-    double d = DBL_MAX;
-    for (int i = 0; i < size(); ++i) {
-      const double di = c[static_cast<std::size_t>(i)] + s[static_cast<std::size_t>(i)] * t;
-      d = di < d ? di : d;
-    }
-    return d;
+    const Lanes tt = {t, t};
+    return fold_min([&](int p) { return c[p] + s[p] * tt; });
   }
   double at_start() const {
-    double d = DBL_MAX;
-    for (int i = 0; i < size(); ++i) d = c[static_cast<std::size_t>(i)] < d ? c[static_cast<std::size_t>(i)] : d;
-    return d;
+    return fold_min([&](int p) { return c[p]; });
   }
   // at(1.0) without the multiplications (s_i * 1.0 is s_i exactly).
   double at_end() const {
-    double d = DBL_MAX;
-    for (int i = 0; i < size(); ++i) {
-      const double di = c[static_cast<std::size_t>(i)] + s[static_cast<std::size_t>(i)];
-      d = di < d ? di : d;
-    }
-    return d;
+    return fold_min([&](int p) { return c[p] + s[p]; });
   }
   // Where the edge crosses bisector `ray` (Sect. 3.2.3): d_a(t) = d_b(t) >=
   // d0 for its two lines, or -1 for a miss. The range test is done on the
   // numerator against the denominator, so a miss costs no division.
   double crossing(const Bisector& ray) const {
-    const std::size_t la = static_cast<std::size_t>(ray.line_a), lb = static_cast<std::size_t>(ray.line_b);
-    double num = c[lb] - c[la], den = s[la] - s[lb];
+    const int la = ray.line_a, lb = ray.line_b;
+    double num = c_at(lb) - c_at(la), den = s_at(la) - s_at(lb);
     if (den < 0.0) {
       num = -num;
       den = -den;
     }
     if (!(num > 0.0 && num < den)) return -1.0;
     const double t = num / den;
-    return c[la] + s[la] * t >= ray.d0 ? t : -1.0;
+    return c_at(la) + s_at(la) * t >= ray.d0 ? t : -1.0;
+  }
+  // crossing() for the polygon's vertex rays, ray i between lines i - 1 and
+  // i (line n - 1 for i = 0) with d0 = 0, two rays at a time; add(t) for
+  // each hit in ray order. An odd count's repeated line meets itself
+  // (num = 0): never a hit.
+  template <class Add>
+  void vertex_crossings(Add&& add) const {
+    const Lanes zero = {0.0, 0.0};
+    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
+    for (int p = 0; p < pairs(); ++p) {
+      const int q = p == 0 ? pairs() - 1 : p - 1;
+      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
+      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
+      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
+      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
+      if (!hits) continue;
+      const Lanes t = num / den;
+      hits &= lane_bits(ca + sa * t >= zero);
+      if (hits & 1u) add(t[0]);
+      if (hits & 2u) add(t[1]);
+    }
   }
 };
 
@@ -90,18 +158,18 @@ struct EdgeLines {
 // with a line that falls faster than the current one.
 template <class Lines, class Add>
 void add_envelope_breaks(const Lines& lines, Add&& add) {
-  const auto& c = lines.c;
-  const auto& s = lines.s;
+  auto c = [&lines](int i) { return lines.c_at(i); };
+  auto s = [&lines](int i) { return lines.s_at(i); };
   int cur = 0;
   for (int i = 1; i < lines.size(); ++i)
-    if (c[i] < c[cur] || (c[i] == c[cur] && s[i] < s[cur])) cur = i;
+    if (c(i) < c(cur) || (c(i) == c(cur) && s(i) < s(cur))) cur = i;
   double t = 0.0;
   for (int guard = 0; guard < lines.size(); ++guard) {
     int next = -1;
     double tn = 1.0;
     for (int j = 0; j < lines.size(); ++j) {
-      if (s[j] >= s[cur]) continue;
-      const double tj = (c[j] - c[cur]) / (s[cur] - s[j]);
+      if (s(j) >= s(cur)) continue;
+      const double tj = (c(j) - c(cur)) / (s(cur) - s(j));
       if (tj > t && tj < tn) {
         tn = tj;
         next = j;
@@ -136,7 +204,7 @@ struct EdgeSums {
 // crossings cr below 1/2, 1/2, those above, 1; traction_at(t) gives the
 // traction at a crossing (f_start, f_mid, f_end at the fixed points).
 template <class TractionAt>
-EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end, TractionAt&& traction_at) {
+[[gnu::always_inline]] inline EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end, TractionAt&& traction_at) {
   EdgeSums sums;
   double t0 = 0.0, fa = f_start;
   auto segment_to = [&](double t1, double fb) {
@@ -166,7 +234,12 @@ EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, doubl
 template <int kN>
 inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, Integration rule, Crossings& cr) {
   if (rule == Integration::kPaperBisector) {
-    for (int r = 0; r < rays.count; ++r) cr.add(lines.crossing(rays.b[r]));
+    // bisectors() gives exactly n rays when no small edge has a virtual node
+    // (which adds one ray, or replaces two by one): the vertex rays in order.
+    if (rays.count == lines.size())
+      lines.vertex_crossings([&cr](double t) { cr.add(t); });
+    else
+      for (int r = 0; r < rays.count; ++r) cr.add(lines.crossing(rays.b[r]));
   } else {
     add_envelope_breaks(lines, [&cr](double t) { cr.add(t); });
   }
@@ -181,7 +254,7 @@ inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, In
 // Returns false when the edge is on this side's boundary as well (mid-point
 // distance within tol): zero traction, no sums.
 template <int kN, bool kMinus>
-inline bool one_side_edge(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab,
+[[gnu::always_inline]] inline bool one_side_edge(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab,
                           double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
   EdgeLines<kN> lines;
   lines.build(poly, a, ab);
