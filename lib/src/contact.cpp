@@ -13,12 +13,13 @@ namespace {
 constexpr double kSixth = 1.0 / 6.0;  // a multiplication instead of a division per segment
 
 // Crossings of one IP edge with rays or envelope kinks: parameters strictly
-// inside (0, 1) other than 1/2 (those points are demarcation points anyway).
+// inside (0, 1) (the end points are demarcation points anyway; so is 1/2,
+// which integrate_edge skips as a repeated point).
 struct Crossings {
   std::array<double, 4 * kMaxVertices> t;  // left uninitialised: count says how many are set
   int count = 0;
   void add(double x) {
-    if (count < static_cast<int>(t.size()) && x > 0.0 && x < 1.0 && x != 0.5) t[static_cast<std::size_t>(count++)] = x;
+    if (x > 0.0 && x < 1.0 && count < static_cast<int>(t.size())) t[static_cast<std::size_t>(count++)] = x;
   }
   // Insertion sort: a handful of points.
   void sort() {
@@ -201,8 +202,9 @@ struct EdgeSums {
 };
 
 // The sums over the demarcation points of one edge: t = 0, the sorted
-// crossings cr below 1/2, 1/2, those above, 1; traction_at(t) gives the
-// traction at a crossing (f_start, f_mid, f_end at the fixed points).
+// crossings cr below 1/2, 1/2, those above, 1, each point once (a crossing
+// equal to the one before, or to 1/2, adds no segment); traction_at(t) gives
+// the traction at a crossing (f_start, f_mid, f_end at the fixed points).
 template <class TractionAt>
 [[gnu::always_inline]] inline EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end, TractionAt&& traction_at) {
   EdgeSums sums;
@@ -315,12 +317,20 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       rays_tp = {own_tp.b.data(), own_tp.count};
     }
   }
-  // An edge of known source on CP's boundary: on_cp; on TP's: on_tp. An
-  // edge of unknown source is on neither as far as the sources tell.
-  auto on_cp = [source](int k) { return source && source[k].known() && source[k].on_contact; };
-  auto on_tp = [source](int k) { return source && source[k].known() && !source[k].on_contact; };
+  // Where an IP edge lies as far as its source tells: on CP's boundary, on
+  // TP's, or neither (unknown source).
+  enum class On { kNeither, kCp, kTp };
+  auto on = [source](int k) {
+    if (!source || !source[k].known()) return On::kNeither;
+    return source[k].on_contact ? On::kCp : On::kTp;
+  };
+  // The previous, this and the next edge's, carried along the loop.
+  On on_prev = On::kNeither, on_this = on(ip.count - 1), on_next = on(0);
   for (int e = 0; e < ip.count; ++e) {
     const int e1 = ip.next(e);
+    on_prev = on_this;
+    on_this = on_next;
+    on_next = on(e1);
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
     const double len = length(ab);
     if (len <= tol) continue;
@@ -330,17 +340,16 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
     // side that is used on edge e (so e is not on that side's boundary),
     // its start a is on it when the previous IP edge is, its end when the
     // next one is.
-    const int e0 = ip.prev(e);
     EdgeSums sums;
-    if (source && source[e].known()) {
+    if (on_this != On::kNeither) {
       // An IP edge on the boundary of a polygon carries zero potential of
       // it: only the other polygon's enters (or none, if the edge is on
       // both boundaries within tol: zero traction on its two halves).
-      const bool used = source[e].on_contact
-                            ? one_side_edge_n<kNt, true>(*tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol, on_tp(e0),
-                                                         on_tp(e1), sums)
-                            : one_side_edge_n<kNc, false>(*cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol, on_cp(e0),
-                                                          on_cp(e1), sums);
+      const bool used = on_this == On::kCp
+                            ? one_side_edge_n<kNt, true>(*tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol,
+                                                         on_prev == On::kTp, on_next == On::kTp, sums)
+                            : one_side_edge_n<kNc, false>(*cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol,
+                                                          on_prev == On::kCp, on_next == On::kCp, sums);
       if (!used) {
         out.segments += 2;
         continue;
@@ -377,11 +386,11 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       auto traction_at = [&](double t) {
         return traction(use_cp ? lines_cp.at(t) : 0.0, use_tp ? lines_tp.at(t) : 0.0);
       };
-      const double f_start = traction(use_cp && !on_cp(e0) ? lines_cp.at_start() : 0.0,
-                                      use_tp && !on_tp(e0) ? lines_tp.at_start() : 0.0);
+      const double f_start = traction(use_cp && on_prev != On::kCp ? lines_cp.at_start() : 0.0,
+                                      use_tp && on_prev != On::kTp ? lines_tp.at_start() : 0.0);
       const double f_mid = traction(use_cp ? mid_cp : 0.0, use_tp ? mid_tp : 0.0);
-      const double f_end = traction(use_cp && !on_cp(e1) ? lines_cp.at_end() : 0.0,
-                                    use_tp && !on_tp(e1) ? lines_tp.at_end() : 0.0);
+      const double f_end = traction(use_cp && on_next != On::kCp ? lines_cp.at_end() : 0.0,
+                                    use_tp && on_next != On::kTp ? lines_tp.at_end() : 0.0);
       sums = integrate_edge(cr, f_start, f_mid, f_end, traction_at);
     }
     out.segments += sums.segments;
