@@ -212,7 +212,9 @@ double axis_distance(const Polygon& a, const Polygon& b, int axis) {
 // pair that stays apart ends there); otherwise every axis is evaluated, two
 // at a time (EdgeLanes), and only a separated verdict (rare past the
 // witness) looks for the first separating axis, in the order B's edges then
-// A's, to store. A NaN distance is skipped, witness or not.
+// A's, to store. Any other verdict clears the witness: a pair in contact
+// stays so for many steps, and its stale axis would be tried in vain before
+// every full test. A NaN distance is skipped, witness or not.
 // kA, kB: the vertex counts when known at compile time (0: read them), so
 // that the common pairs of triangles to pentagons run unrolled; every
 // distance is the same dot product, rounded the same way, either way.
@@ -239,6 +241,7 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
     if (witness) *witness = first_separating_axis(a, b, tol);
     return OverlapState::kSeparate;
   }
+  if (witness) *witness = -1;
   if (kCuts) {
     const Lanes half_tol = {0.5 * tol, 0.5 * tol};
     std::uint64_t mask = 0;
