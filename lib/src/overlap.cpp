@@ -212,9 +212,11 @@ double axis_distance(const Polygon& a, const Polygon& b, int axis) {
 // pair that stays apart ends there); otherwise every axis is evaluated, two
 // at a time (EdgeLanes), and only a separated verdict (rare past the
 // witness) looks for the first separating axis, in the order B's edges then
-// A's, to store. A NaN distance is skipped, witness or not.
+// A's, to store. Any other verdict clears the witness: a pair in contact
+// stays so for many steps, and its stale axis would be tried in vain before
+// every full test. A NaN distance is skipped, witness or not.
 // kA, kB: the vertex counts when known at compile time (0: read them), so
-// that the common pairs of quadrilaterals and pentagons run unrolled; every
+// that the common pairs of triangles to pentagons run unrolled; every
 // distance is the same dot product, rounded the same way, either way.
 template <bool kCuts, int kA = 0, int kB = 0>
 OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
@@ -239,6 +241,7 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
     if (witness) *witness = first_separating_axis(a, b, tol);
     return OverlapState::kSeparate;
   }
+  if (witness) *witness = -1;
   if (kCuts) {
     const Lanes half_tol = {0.5 * tol, 0.5 * tol};
     std::uint64_t mask = 0;
@@ -249,14 +252,29 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
 }
 
 // Dispatch on the vertex counts: blocks cut by joint sets are mostly
-// quadrilaterals, the rest mostly pentagons (of the overlap tests in the
-// Sect. 6.1 collapse about 79 % are 4-4 pairs, 17 % 4-5 or 5-4).
+// quadrilaterals, the rest mostly pentagons and triangles (of the overlap
+// tests in the Sect. 6.1 collapse about 79 % are 4-4 pairs, 17 % 4-5 or
+// 5-4, 3 % other pairs of triangles to pentagons), so every pair of counts
+// 3 to 5 runs unrolled (the generic loops take about three times as many
+// instructions). separating_axes_a: on B's count, A's known to be kA.
+template <bool kCuts, int kA>
+OverlapState separating_axes_a(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+  switch (b.count) {
+    case 3: return separating_axes_n<kCuts, kA, 3>(a, b, tol, cuts, witness);
+    case 4: return separating_axes_n<kCuts, kA, 4>(a, b, tol, cuts, witness);
+    case 5: return separating_axes_n<kCuts, kA, 5>(a, b, tol, cuts, witness);
+    default: return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
+  }
+}
+
 template <bool kCuts>
 OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
-  if (a.count == 4 && b.count == 4) return separating_axes_n<kCuts, 4, 4>(a, b, tol, cuts, witness);
-  if (a.count == 4 && b.count == 5) return separating_axes_n<kCuts, 4, 5>(a, b, tol, cuts, witness);
-  if (a.count == 5 && b.count == 4) return separating_axes_n<kCuts, 5, 4>(a, b, tol, cuts, witness);
-  return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
+  switch (a.count) {
+    case 3: return separating_axes_a<kCuts, 3>(a, b, tol, cuts, witness);
+    case 4: return separating_axes_a<kCuts, 4>(a, b, tol, cuts, witness);
+    case 5: return separating_axes_a<kCuts, 5>(a, b, tol, cuts, witness);
+    default: return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
+  }
 }
 
 // Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.

@@ -106,8 +106,8 @@ namespace {
 //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
 // kSecond: also the second moments (area_centroid leaves them out; the
 // area and centroid are the same bits either way). kN: the vertex count
-// when known at compile time (0: `count`), so that a quadrilateral's loop
-// is unrolled; the same operations in the same order either way.
+// when known at compile time (0: `count`), so that the loops of the common
+// small polygons are unrolled; the same operations in the same order either way.
 template <bool kSecond, int kN = 0>
 AreaMoments green_moments(const Vec2* v, int n) {
   const int count = kN ? kN : n;
@@ -150,8 +150,11 @@ AreaMoments area_moments(const Polygon& poly) {
   return green_moments<true>(poly.v.data(), poly.count);
 }
 
+// Mostly an intersection polygon: those of shallow contacts are triangles
+// and quadrilaterals (about half each in the Sect. 6.1 collapse).
 AreaMoments area_centroid(const Polygon& poly) {
   if (poly.count == 4) return green_moments<false, 4>(poly.v.data(), 4);
+  if (poly.count == 3) return green_moments<false, 3>(poly.v.data(), 3);
   return green_moments<false>(poly.v.data(), poly.count);
 }
 

@@ -72,9 +72,10 @@ struct IpEdge {
 // leave unchanged. `ip` is emptied when the result is not kOverlapping.
 // witness (optional, kept by the caller per pair between calls, -1 at
 // first): the separating axis found last time, tried first; set to the axis
-// whenever the verdict is kSeparate. A pair that stays apart is then
-// rejected by one axis instead of a search. The verdict does not depend on
-// it: any axis separating by more than tol makes the full test say kSeparate.
+// whenever the verdict is kSeparate, to -1 otherwise. A pair that stays
+// apart is then rejected by one axis instead of a search. The verdict does
+// not depend on it: any axis separating by more than tol makes the full
+// test say kSeparate.
 OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
                                       IpEdge* source, int* witness = nullptr);
 
