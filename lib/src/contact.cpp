@@ -6,6 +6,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "lanes.hpp"
+
 namespace dda {
 
 namespace {
@@ -32,22 +34,10 @@ struct Crossings {
   }
 };
 
-// Two doubles handled as one value: the GCC/Clang vector extension, one
-// SSE2 register on x86-64 (baseline, no -march), NEON or scalar code
-// elsewhere. Lane-wise +, - and * round exactly as the scalar operations
-// (no FMA contraction: ISO -std=c++17 keeps -ffp-contract=off).
-using Lanes = double __attribute__((vector_size(16)));
-using LaneMask = long long __attribute__((vector_size(16)));
-
-// t < d ? t : d lane by lane (a NaN t leaves d as it is): SSE2's minpd
-// exactly (named, as GCC does not always find it); elsewhere the plain form.
-inline Lanes lane_min(Lanes d, Lanes t) {
-#if defined(__SSE2__)
-  return _mm_min_pd(t, d);
-#else
-  return t < d ? t : d;
-#endif
-}
+using detail::LaneMask;
+using detail::Lanes;
+using detail::lane_bits;
+using detail::lane_min;
 
 // d[1] < d[0] ? d[1] : d[0]: SSE2's minsd on the swapped pair (the plain
 // form costs GCC a register copy more); elsewhere the plain form.
@@ -56,15 +46,6 @@ inline double across_min(Lanes d) {
   return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(d, d), d));
 #else
   return d[1] < d[0] ? d[1] : d[0];
-#endif
-}
-
-// Bit l set when lane l of a comparison result is true.
-inline unsigned lane_bits(LaneMask m) {
-#if defined(__SSE2__)
-  return static_cast<unsigned>(_mm_movemask_pd((__m128d)m));
-#else
-  return static_cast<unsigned>((m[0] & 1) | (m[1] & 2));
 #endif
 }
 

@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
+#include "lanes.hpp"
 #include "ring_kernels.hpp"
 
 namespace dda {
@@ -78,40 +76,11 @@ EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0) {
 
 namespace {
 
-// Two doubles handled as one value: the GCC/Clang vector extension, one
-// SSE2 register on x86-64 (baseline, no -march), NEON or scalar code
-// elsewhere. Lane-wise +, - and * round exactly as the scalar operations
-// (no FMA contraction: ISO -std=c++17 keeps -ffp-contract=off).
-using Lanes = double __attribute__((vector_size(16)));
-using LaneMask = long long __attribute__((vector_size(16)));
-
-// std::min(lo, t) and std::max(hi, t) lane by lane, operands in that order
-// (a NaN t leaves lo, hi as they are). SSE2's minpd / maxpd are exactly
-// these selections (named, since GCC turns the plain form against a
-// constant into a four-instruction blend); elsewhere the plain form.
-inline Lanes lane_min(Lanes lo, Lanes t) {
-#if defined(__SSE2__)
-  return _mm_min_pd(t, lo);
-#else
-  return t < lo ? t : lo;
-#endif
-}
-inline Lanes lane_max(Lanes hi, Lanes t) {
-#if defined(__SSE2__)
-  return _mm_max_pd(t, hi);
-#else
-  return hi < t ? t : hi;
-#endif
-}
-
-// Bit l set when lane l of a comparison result is true.
-inline unsigned lane_bits(LaneMask m) {
-#if defined(__SSE2__)
-  return static_cast<unsigned>(_mm_movemask_pd((__m128d)m));
-#else
-  return static_cast<unsigned>((m[0] & 1) | (m[1] & 2));
-#endif
-}
+using detail::LaneMask;
+using detail::Lanes;
+using detail::lane_bits;
+using detail::lane_max;
+using detail::lane_min;
 
 // A polygon's edge lines two at a time: pair k holds edges 2k and 2k + 1 in
 // its two lanes, an odd count's last edge repeated to fill the last pair (a

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lanes.hpp"
 #include "ring_kernels.hpp"
 
 namespace dda {
@@ -22,21 +23,46 @@ Polygon make_polygon(const Vec2* points, int count) {
   return poly;
 }
 
-void update_normals(Polygon& poly) { update_normals_min_edge2(poly); }
+namespace {
 
-double update_normals_min_edge2(Polygon& poly) {
-  // normalized(perp_right(e)) divides by sqrt(e.y^2 + e.x^2), the same bits
-  // as length_squared(e) (addition commutes exactly); spelled out so that
-  // the squared length is computed once.
-  double min2 = DBL_MAX;
-  for (int i = 0; i < poly.count; ++i) {
-    const Vec2 e = poly.edge(i);
-    const double l2 = e.x * e.x + e.y * e.y;
-    const double l = std::sqrt(l2);
-    poly.n[static_cast<std::size_t>(i)] = l > 0.0 ? Vec2{e.y / l, -e.x / l} : Vec2{0.0, 0.0};
-    min2 = std::min(min2, l2);
+using detail::LaneMask;
+using detail::Lanes;
+
+// update_normals two edges at a time (lane 0 edge i, lane 1 edge i + 1; an
+// odd count's last edge in both), lane by lane the same operations as one
+// edge at a time; returns the smallest squared edge length of each lane
+// (lane_min skips a NaN as std::min(m, l2) does; squares are never -0, so
+// the two lanes' minima combine to the minimum over all edges whatever the
+// order). kN: the vertex count when known at compile time (0: poly.count),
+// so that a quadrilateral's loop is unrolled.
+template <int kN>
+Lanes edge_normals(Polygon& poly) {
+  using detail::high_lanes;
+  using detail::lanes;
+  using detail::low_lanes;
+  const int count = kN ? kN : poly.count;
+  const auto edge = [&](int i) { return lanes(poly.v[i + 1 == count ? 0 : i + 1]) - lanes(poly.v[i]); };
+  Lanes min2{DBL_MAX, DBL_MAX};
+  for (int i = 0; i < count; i += 2) {
+    const int j = i + 1 < count ? i + 1 : i;
+    const Lanes ei = edge(i), ej = edge(j);
+    const Lanes ex = low_lanes(ei, ej), ey = high_lanes(ei, ej);
+    const Lanes l2 = ex * ex + ey * ey;
+    const Lanes l = detail::lane_sqrt(l2);
+    const LaneMask nonzero = l > Lanes{0.0, 0.0};
+    const Lanes nx = detail::lane_where(nonzero, ey / l), ny = detail::lane_where(nonzero, -ex / l);
+    poly.n[static_cast<std::size_t>(i)] = {nx[0], ny[0]};
+    poly.n[static_cast<std::size_t>(j)] = {nx[1], ny[1]};
+    min2 = detail::lane_min(min2, l2);
   }
   return min2;
+}
+
+}  // namespace
+
+void update_normals(Polygon& poly) {
+  if (poly.count == 4) edge_normals<4>(poly);
+  else edge_normals<0>(poly);
 }
 
 const char* describe(PolygonFault fault) {
@@ -104,17 +130,16 @@ namespace {
 //   S   += c / 2,  Sx += c (ax + bx) / 6,  Sy += c (ay + by) / 6,
 //   Sxx += c (ax^2 + ax bx + bx^2) / 12,  Syy likewise,
 //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
-// kSecond: also the second moments (area_centroid leaves them out; the
-// area and centroid are the same bits either way). kN: the vertex count
-// when known at compile time (0: `count`), so that the loops of the common
-// small polygons are unrolled; the same operations in the same order either way.
-template <bool kSecond, int kN = 0>
-AreaMoments green_moments(const Vec2* v, int n) {
+// green_centroid: area and centroid only, one edge at a time. kN: the
+// vertex count when known at compile time (0: `n`), so that a
+// quadrilateral's loop is unrolled.
+template <int kN = 0>
+AreaMoments green_centroid(const Vec2* v, int n) {
   const int count = kN ? kN : n;
   AreaMoments m;
   if (count < 3) return m;
   const Vec2 o = v[0];
-  double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  double s = 0, sx = 0, sy = 0;
   for (int i = 0; i < count; ++i) {
     const Vec2 a = v[i] - o;
     const Vec2 b = v[i + 1 == count ? 0 : i + 1] - o;
@@ -122,43 +147,89 @@ AreaMoments green_moments(const Vec2* v, int n) {
     s += c;
     sx += c * (a.x + b.x);
     sy += c * (a.y + b.y);
-    if (kSecond) {
-      sxx += c * (a.x * a.x + a.x * b.x + b.x * b.x);
-      syy += c * (a.y * a.y + a.y * b.y + b.y * b.y);
-      sxy += c * (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y);
-    }
   }
   s *= 0.5;
   sx /= 6.0;
   sy /= 6.0;
   m.area = s;
   if (s == 0.0) return m;
-  const Vec2 c{sx / s, sy / s};
-  m.centroid = o + c;
-  if (kSecond) {
-    m.sxx = sxx / 12.0 - s * c.x * c.x;
-    m.syy = syy / 12.0 - s * c.y * c.y;
-    m.sxy = sxy / 24.0 - s * c.x * c.y;
-  }
+  m.centroid = o + Vec2{sx / s, sy / s};
+  return m;
+}
+
+// All the moments, two edges at a time: lane 0 holds edge i, lane 1 edge
+// i + 1 (an odd count's last edge alone, repeated in lane 1 and not added),
+// each term lane by lane the same operations as green_centroid's for one
+// edge; the terms are then added edge by edge in order, S with Sxy, Sx
+// with Sy and Sxx with Syy in the two lanes of one sum (bx ay is the
+// ay bx of the cross product). The area and centroid are green_centroid's
+// bits; for them alone the scalar loop is as short as the lanes.
+template <int kN = 0>
+AreaMoments green_moments(const Vec2* v, int n) {
+  using detail::high_lanes;
+  using detail::lanes;
+  using detail::low_lanes;
+  const int count = kN ? kN : n;
+  AreaMoments m;
+  if (count < 3) return m;
+  const Lanes o = lanes(v[0]);
+  const auto rel = [&](int i) { return lanes(v[i == count ? 0 : i]) - o; };
+  Lanes s_sxy{0.0, 0.0}, sx_sy{0.0, 0.0}, sxx_syy{0.0, 0.0};
+  // Edges i (lane 0) and j (lane 1): their terms added in that order, j's
+  // only when `both`.
+  const auto add_edges = [&](int i, int j, bool both) {
+    const Lanes ai = rel(i), aj = rel(j), bi = rel(i + 1), bj = rel(j + 1);
+    const Lanes ax = low_lanes(ai, aj), ay = high_lanes(ai, aj);
+    const Lanes bx = low_lanes(bi, bj), by = high_lanes(bi, bj);
+    const Lanes ax_by = ax * by, ay_bx = ay * bx;
+    const Lanes c = ax_by - ay_bx;
+    const Lanes two{2.0, 2.0};
+    const Lanes tx = c * (ax + bx), ty = c * (ay + by);
+    const Lanes txx = c * (ax * ax + ax * bx + bx * bx);
+    const Lanes tyy = c * (ay * ay + ay * by + by * by);
+    const Lanes txy = c * (ax_by + two * ax * ay + two * bx * by + ay_bx);
+    s_sxy += low_lanes(c, txy);
+    sx_sy += low_lanes(tx, ty);
+    sxx_syy += low_lanes(txx, tyy);
+    if (both) {
+      s_sxy += high_lanes(c, txy);
+      sx_sy += high_lanes(tx, ty);
+      sxx_syy += high_lanes(txx, tyy);
+    }
+  };
+  int i = 0;
+  for (; i + 1 < count; i += 2) add_edges(i, i + 1, true);
+  if (i < count) add_edges(i, i, false);
+  const double s = s_sxy[0] * 0.5;
+  const Lanes sx_sy6 = sx_sy / Lanes{6.0, 6.0};
+  m.area = s;
+  if (s == 0.0) return m;
+  const Lanes sl{s, s};
+  const Lanes c = sx_sy6 / sl;
+  m.centroid = detail::vec2(o + c);
+  const Lanes sxx = sxx_syy / Lanes{12.0, 12.0} - sl * c * c;
+  m.sxx = sxx[0];
+  m.syy = sxx[1];
+  m.sxy = s_sxy[1] / 24.0 - s * c[0] * c[1];
   return m;
 }
 
 }  // namespace
 
 AreaMoments area_moments(const Polygon& poly) {
-  if (poly.count == 4) return green_moments<true, 4>(poly.v.data(), 4);
-  return green_moments<true>(poly.v.data(), poly.count);
+  if (poly.count == 4) return green_moments<4>(poly.v.data(), 4);
+  return green_moments(poly.v.data(), poly.count);
 }
 
 // Mostly an intersection polygon: those of shallow contacts are triangles
 // and quadrilaterals (about half each in the Sect. 6.1 collapse).
 AreaMoments area_centroid(const Polygon& poly) {
-  if (poly.count == 4) return green_moments<false, 4>(poly.v.data(), 4);
-  if (poly.count == 3) return green_moments<false, 3>(poly.v.data(), 3);
-  return green_moments<false>(poly.v.data(), poly.count);
+  if (poly.count == 4) return green_centroid<4>(poly.v.data(), 4);
+  if (poly.count == 3) return green_centroid<3>(poly.v.data(), 3);
+  return green_centroid(poly.v.data(), poly.count);
 }
 
-AreaMoments area_centroid(const Vec2* ring, int count) { return green_moments<false>(ring, count); }
+AreaMoments area_centroid(const Vec2* ring, int count) { return green_centroid(ring, count); }
 
 double area(const Polygon& poly) {
   if (poly.count < 3) return 0.0;
@@ -180,6 +251,35 @@ Aabb bounds(const Polygon& poly) {
     b.hi.y = std::max(b.hi.y, p.y);
   }
   return b;
+}
+
+namespace {
+
+// update_polygon_geometry for kN vertices (0: poly.count). The bounds lane
+// by lane from the empty box in vertex order: bounds' scalar min and max.
+template <int kN>
+PolygonGeometry polygon_geometry(Polygon& poly) {
+  const int count = kN ? kN : poly.count;
+  PolygonGeometry g;
+  const Lanes min2 = edge_normals<kN>(poly);
+  g.min_edge2 = std::min(min2[0], min2[1]);
+  g.moments = green_moments<kN>(poly.v.data(), count);
+  const Aabb empty;
+  Lanes lo = detail::lanes(empty.lo), hi = detail::lanes(empty.hi);
+  for (int i = 0; i < count; ++i) {
+    const Lanes p = detail::lanes(poly.v[static_cast<std::size_t>(i)]);
+    lo = detail::lane_min(lo, p);
+    hi = detail::lane_max(hi, p);
+  }
+  g.box = {detail::vec2(lo), detail::vec2(hi)};
+  return g;
+}
+
+}  // namespace
+
+PolygonGeometry update_polygon_geometry(Polygon& poly) {
+  if (poly.count == 4) return polygon_geometry<4>(poly);
+  return polygon_geometry<0>(poly);
 }
 
 double diameter(const Polygon& poly) {

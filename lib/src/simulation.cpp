@@ -10,6 +10,8 @@
 #include <omp.h>
 #endif
 
+#include "lanes.hpp"
+
 // OpenMP worksharing inside the phase functions. They are "orphaned"
 // directives: called from run_steps' parallel region they split the work of
 // one team that lives for the whole call (no thread start-up per step);
@@ -338,6 +340,23 @@ bool inside(const Aabb& b, const Aabb& grown) {
   return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
 }
 
+// A Vec6 as three lane pairs (g0, g1), (g2, g3), (g4, g5).
+struct Lanes6 {
+  detail::Lanes g01, g23, g45;
+};
+
+// point_load(c, p, f) lane by lane: with t = (xt, yt), P = (yt, xt) * f and
+// Q = t * f, T(p)^T f = (f, (P1 - P0, Q0), (Q1, 0.5 (P0 + P1))), each
+// element point_load's operations (-yt fx + xt fy is xt fy - yt fx exactly).
+Lanes6 point_load_lanes(detail::Lanes c, Vec2 p, Vec2 f) {
+  using detail::Lanes;
+  const Lanes t = detail::lanes(p) - c, fl = detail::lanes(f);
+  const Lanes pl = detail::swapped(t) * fl, q = t * fl;
+  const Lanes ps = detail::swapped(pl);
+  const Lanes d = ps - pl, h = Lanes{0.5, 0.5} * (pl + ps);
+  return {fl, detail::low_lanes(d, q), Lanes{q[1], h[0]}};
+}
+
 }  // namespace
 
 void Simulation::run_steps(std::int64_t count) {
@@ -408,16 +427,9 @@ void Simulation::move_blocks() {
     const Vec6 dd = dt_ * vel_[i];  // Eq. 8
     step_disp_[i] = dd;
     disp_[i] += dd;
-    Polygon& p = poly_[i];
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
-    double motion2 = 0.0;  // the largest vertex motion of the step, squared (for the guard)
-    for (int k = 0; k < p.count; ++k) {
-      const Vec2 u = point_displacement(c, p.v[k], dd);
-      p.v[k] += u;
-      motion2 = std::max(motion2, length_squared(u));
-    }
-    step_motion2_[i] = motion2;
+    step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
     if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
     update_block_geometry(i);
     body_force(i);
@@ -465,15 +477,15 @@ void Simulation::update_geometry() {
 }
 
 void Simulation::update_block_geometry(int i) {
-  const double min_edge2 = update_normals_min_edge2(poly_[i]);
-  moments_[i] = area_moments(poly_[i]);
-  boxes_[i] = bounds(poly_[i]);
-  sides_[i].tol = geometric_tolerance(boxes_[i]);
+  const PolygonGeometry g = update_polygon_geometry(poly_[i]);
+  moments_[i] = g.moments;
+  boxes_[i] = g.box;
+  sides_[i].tol = geometric_tolerance(g.box);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes.
     const double small = scene_.contact.small_edge_fraction * h_[i];
-    const bool plain = !(min_edge2 < small * small);  // bisectors()' small-edge test on every edge
+    const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     if (!(plain && plain_bisectors_[i]))
       sides_[i].side.bisector_count =
           bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
@@ -673,19 +685,34 @@ void Simulation::gather_contact_forces(int i) {
   // Block i's contact forces, Eqs. 22-23 and 28-29 through T(pg)^T, added
   // in increasing pair order (the same bits for any thread count); and the
   // smallest inscribed radius within its reach (itself and its candidates)
-  // for the step-motion guard.
-  double reach = radius_[i];
-  const Vec2 c = moments_[i].centroid;
+  // for the step-motion guard. The sum is kept in lanes (point_load_lanes)
+  // and the arrays in locals: the force's stores could alias them.
+  const BlockPair* pairs = block_pairs_.data();
+  const PairLoad* loads = pair_loads_.data();
+  const double* radius = radius_.data();
+  double reach = radius[i];
+  const detail::Lanes c = detail::lanes(moments_[i].centroid);
   const bool free_block = !fixed_[i];
+  Vec6& force = force_[i];
+  Lanes6 sum{{force[0], force[1]}, {force[2], force[3]}, {force[4], force[5]}};
   for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
-    const BlockPair& bp = block_pairs_[static_cast<std::size_t>(q)];
-    const PairLoad& load = pair_loads_[static_cast<std::size_t>(bp.pair)];
+    const BlockPair& bp = pairs[q];
+    const PairLoad& load = loads[bp.pair];
     if (!load.candidate) continue;
-    reach = std::min(reach, radius_[bp.other]);
+    reach = std::min(reach, radius[bp.other]);
     if (!load.active || !free_block) continue;
-    if (bp.first) force_[i] += point_load(c, load.point, load.force);
-    else force_[i] -= point_load(c, load.point, load.force);
+    const Lanes6 g = point_load_lanes(c, load.point, load.force);
+    if (bp.first) {
+      sum.g01 += g.g01;
+      sum.g23 += g.g23;
+      sum.g45 += g.g45;
+    } else {
+      sum.g01 -= g.g01;
+      sum.g23 -= g.g23;
+      sum.g45 -= g.g45;
+    }
   }
+  force << sum.g01[0], sum.g01[1], sum.g23[0], sum.g23[1], sum.g45[0], sum.g45[1];
   reach_radius_[i] = reach;
 }
 

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <vector>
+
 #include "dda/block.hpp"
 
 using namespace dda;
@@ -67,6 +70,30 @@ TEST_CASE("mass matrix of a triangle equals the analytic integral", "[block]") {
   CHECK(m.isApprox(m.transpose()));
   // Positive definite.
   CHECK(m.llt().info() == Eigen::Success);
+}
+
+TEST_CASE("displace_vertices moves each vertex by point_displacement", "[block]") {
+  // The same bits as one vertex at a time, for the unrolled quadrilateral
+  // and other counts; the largest squared motion of the vertices.
+  Vec6 d;
+  d << 1.3e-3, -2.1e-4, 3.7e-4, -1.1e-5, 2.3e-5, 4.1e-5;
+  const Vec2 c{1e4 + 1.1, -3.2};
+  const std::vector<std::vector<Vec2>> shapes = {
+      {{1e4 + 0.1, -4.3}, {1e4 + 2.7, -4.9}, {1e4 + 3.1, -2.2}},
+      {{1e4 + 0.1, -4.3}, {1e4 + 2.7, -4.9}, {1e4 + 3.1, -2.2}, {1e4 + 1.9, -1.45}},
+      {{1e4 + 0.1, -4.3}, {1e4 + 2.7, -4.9}, {1e4 + 3.1, -2.2}, {1e4 + 1.9, -1.45}, {1e4 + 0.3, -2.1}},
+  };
+  for (const auto& pts : shapes) {
+    Polygon p = make_polygon(pts.data(), static_cast<int>(pts.size()));
+    const double motion2 = displace_vertices(p, c, d);
+    double expect = 0.0;
+    for (int k = 0; k < p.count; ++k) {
+      const Vec2 u = point_displacement(c, pts[static_cast<std::size_t>(k)], d);
+      CHECK(p.vertex(k) == pts[static_cast<std::size_t>(k)] + u);
+      expect = std::max(expect, length_squared(u));
+    }
+    CHECK(motion2 == expect);
+  }
 }
 
 TEST_CASE("point load is the transpose of point displacement", "[block]") {

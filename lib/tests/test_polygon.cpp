@@ -90,19 +90,74 @@ TEST_CASE("splitting a polygon by a line conserves area", "[polygon]") {
   CHECK(hi.count == 0);
 }
 
-TEST_CASE("the one-pass normals and smallest edge match normalized(perp_right(edge)) and length_squared", "[polygon]") {
-  // Irregular pentagon far from the origin: the normals must be the same
-  // bits as the unit right perpendicular of each edge, the minimum the
-  // smallest squared edge length.
-  const Vec2 p[5] = {{1e5 + 0.1, 3.3}, {1e5 + 2.7, 2.9}, {1e5 + 3.1, 4.2}, {1e5 + 1.9, 5.55}, {1e5 + 0.3, 4.9}};
-  Polygon b = make_polygon(p, 5);
-  const double min2 = update_normals_min_edge2(b);
-  double expect = DBL_MAX;
-  for (int i = 0; i < 5; ++i) {
-    const Vec2 n = normalized(perp_right(b.edge(i)));
-    CHECK(n.x == b.normal(i).x);
-    CHECK(n.y == b.normal(i).y);
-    expect = std::min(expect, length_squared(b.edge(i)));
+namespace {
+// Green's theorem one edge at a time, in scalar arithmetic: the reference
+// whose bits area_moments and update_polygon_geometry must reproduce.
+AreaMoments scalar_moments(const Polygon& p) {
+  AreaMoments m;
+  const Vec2 o = p.v[0];
+  double s = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (int i = 0; i < p.count; ++i) {
+    const Vec2 a = p.vertex(i) - o, b = p.vertex(p.next(i)) - o;
+    const double c = cross(a, b);
+    s += c;
+    sx += c * (a.x + b.x);
+    sy += c * (a.y + b.y);
+    sxx += c * (a.x * a.x + a.x * b.x + b.x * b.x);
+    syy += c * (a.y * a.y + a.y * b.y + b.y * b.y);
+    sxy += c * (a.x * b.y + 2.0 * a.x * a.y + 2.0 * b.x * b.y + b.x * a.y);
   }
-  CHECK(min2 == expect);
+  s *= 0.5;
+  sx /= 6.0;
+  sy /= 6.0;
+  m.area = s;
+  const Vec2 c{sx / s, sy / s};
+  m.centroid = o + c;
+  m.sxx = sxx / 12.0 - s * c.x * c.x;
+  m.syy = syy / 12.0 - s * c.y * c.y;
+  m.sxy = sxy / 24.0 - s * c.x * c.y;
+  return m;
+}
+}  // namespace
+
+TEST_CASE("the one-pass geometry matches normals, moments, bounds and edges one at a time", "[polygon]") {
+  // Irregular polygons far from the origin (3 to 6 vertices: the unrolled
+  // quadrilateral, odd and even counts), one with a zero-length edge: the
+  // normals must be the same bits as the unit right perpendicular of each
+  // edge (0 for the empty edge), the moments those of the scalar formula,
+  // the bounds those of bounds(), the minimum the smallest squared edge.
+  const std::vector<std::vector<Vec2>> shapes = {
+      {{1e5 + 0.1, 3.3}, {1e5 + 2.7, 2.9}, {1e5 + 3.1, 4.2}},
+      {{1e5 + 0.1, 3.3}, {1e5 + 2.7, 2.9}, {1e5 + 3.1, 4.2}, {1e5 + 1.9, 5.55}},
+      {{1e5 + 0.1, 3.3}, {1e5 + 2.7, 2.9}, {1e5 + 3.1, 4.2}, {1e5 + 1.9, 5.55}, {1e5 + 0.3, 4.9}},
+      {{-7.1, 3.3}, {-4.5, 2.9}, {-4.1, 4.2}, {-5.3, 5.55}, {-6.9, 4.9}, {-7.2, 4.1}},
+      {{1e5 + 0.1, 3.3}, {1e5 + 2.7, 2.9}, {1e5 + 2.7, 2.9}, {1e5 + 1.9, 5.55}},
+  };
+  for (const auto& pts : shapes) {
+    Polygon b = make_polygon(pts.data(), static_cast<int>(pts.size()));
+    for (int i = 0; i < b.count; ++i) b.n[static_cast<std::size_t>(i)] = {7.0, 7.0};
+    const PolygonGeometry g = update_polygon_geometry(b);
+    double expect = DBL_MAX;
+    for (int i = 0; i < b.count; ++i) {
+      const Vec2 n = normalized(perp_right(b.edge(i)));
+      CHECK(n.x == b.normal(i).x);
+      CHECK(n.y == b.normal(i).y);
+      expect = std::min(expect, length_squared(b.edge(i)));
+    }
+    CHECK(g.min_edge2 == expect);
+    const AreaMoments m = scalar_moments(b), am = area_moments(b);
+    for (const AreaMoments& x : {g.moments, am}) {
+      CHECK(x.area == m.area);
+      CHECK(x.centroid == m.centroid);
+      CHECK(x.sxx == m.sxx);
+      CHECK(x.syy == m.syy);
+      CHECK(x.sxy == m.sxy);
+    }
+    const AreaMoments ac = area_centroid(b);
+    CHECK(ac.area == m.area);
+    CHECK(ac.centroid == m.centroid);
+    const Aabb box = bounds(b);
+    CHECK(g.box.lo == box.lo);
+    CHECK(g.box.hi == box.hi);
+  }
 }

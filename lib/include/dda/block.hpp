@@ -21,6 +21,10 @@ inline Vec2 point_displacement(Vec2 centroid, Vec2 p, const Vec6& d) {
   return {d[0] - yt * d[2] + xt * d[3] + 0.5 * yt * d[5], d[1] + xt * d[2] + yt * d[4] + 0.5 * xt * d[5]};
 }
 
+// Moves every vertex p of poly by point_displacement(centroid, p, d), the
+// same bits; returns the largest squared displacement, m^2.
+double displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d);
+
 // T(p)^T f: the generalized force of a point force f at p (Eqs. 22-23).
 inline Vec6 point_load(Vec2 centroid, Vec2 p, Vec2 f) {
   const double xt = p.x - centroid.x, yt = p.y - centroid.y;

@@ -47,11 +47,9 @@ struct Polygon {
 // Builds a polygon from CCW points and computes its normals. Does not check:
 // call validate_polygon first on untrusted input. count is clamped to capacity.
 Polygon make_polygon(const Vec2* points, int count);
-// Recomputes the outward unit normals from the vertices (after a move).
+// Recomputes the outward unit normals from the vertices (after a move):
+// n = (e.y, -e.x) / sqrt(e.x^2 + e.y^2) for edge e, 0 for a zero-length edge.
 void update_normals(Polygon& poly);
-// The same, returning the smallest squared edge length, m^2 (one pass for
-// both: a block's per-step geometry needs it for the small-edge test).
-double update_normals_min_edge2(Polygon& poly);
 
 enum class PolygonFault {
   kNone,
@@ -108,6 +106,17 @@ double perimeter(const Polygon& poly);
 double geometric_tolerance(const Polygon& poly);
 // The same from the polygon's bounds (a caller that has them).
 double geometric_tolerance(const Aabb& bounds);
+
+// What a moved block needs of its polygon at every step, in one call: the
+// normals (recomputed in place, as update_normals), the area moments and
+// bounds (the same bits as area_moments and bounds) and the smallest
+// squared edge length, m^2 (for the small-edge test).
+struct PolygonGeometry {
+  AreaMoments moments;
+  Aabb box;
+  double min_edge2 = DBL_MAX;
+};
+PolygonGeometry update_polygon_geometry(Polygon& poly);
 
 enum class PointLocation { kInside, kOnBoundary, kOutside };
 
