@@ -1,7 +1,6 @@
 // Internal: two doubles handled as one value, for the per-vertex kernels
 // (polygon.cpp, block.cpp), the separating-axis test (overlap.cpp) and the
-// normal-force kernel (contact.cpp). Not
-// part of the public API.
+// normal-force kernel (contact.cpp). Not part of the public API.
 #pragma once
 #if defined(__SSE2__)
 #include <emmintrin.h>
