@@ -345,68 +345,15 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
   return removable == 0;
 }
 
-// The target cut by the lines of the contact's edges whose bit is set in
-// `lines` (Table 3), with edge labels; normals taken from the labelled
-// source edges. Two buffers, ping-ponged: each cut of a convex polygon by a
-// half-plane adds at most one vertex, so n + m fits in kMaxVertices. The
-// vertex buffers are thread-local scratch: a local ring would be zeroed on
-// every call (Vec2 zero-initialises); the labels are plain local arrays,
-// left uninitialised. The first input is the target itself, and a line that
-// leaves every vertex inside (the usual case: a shallow contact is cut by
-// one or two of the contact polygon's edge lines) costs one distance per
-// vertex and no copy. The last ring goes to `result` in one pass with its
-// normals and sources, which also runs clean_ring's test; only a ring that
-// has a vertex to remove (rare) is then cleaned, as clean_ring does.
-void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
-                 IpEdge* source) {
-  static thread_local std::array<Vec2, kMaxVertices> buf[2];
-  std::array<int, kMaxVertices> label_buf[2];
-  // The target's own edges label themselves: label j for edge j.
-  static constexpr std::array<int, kMaxVertices> target_label = [] {
-    std::array<int, kMaxVertices> l{};
-    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
-    return l;
-  }();
-  const Vec2* in = target.v.data();
-  const int* in_label = target_label.data();
-  int in_count = target.count;
-  int next_buf = 0;
-  // Only the lines whose bit is set, in increasing order.
-  if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
-  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
-    const int c = __builtin_ctz(lines);
-    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
-    Vec2* out = buf[next_buf].data();
-    int* out_label = label_buf[next_buf].data();
-    const int line = contact_label(c);
-    int count = 0;
-    switch (in_count) {
-      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
-      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
-      default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
-    }
-    if (count < 0) continue;  // no vertex outside: the ring stays
-    in_count = count;
-    in = out;
-    in_label = out_label;
-    next_buf = 1 - next_buf;
-  }
-  if (in_count < 3) {
-    result.count = 0;
-    return;
-  }
-  bool clean = false;
-  switch (in_count) {
-    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
-    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: clean = emit_ring<0>(in, in_label, in_count, contact, target, tol, result, source); break;
-  }
-  if (clean) return;
-  // Some vertex goes: clean_ring on the ring and its labels (result.v holds
-  // the ring), then the normals and sources again.
+// clip_target's rare end: result (its ring and count set, labels in_label)
+// has a vertex to remove. clean_ring on the ring and its labels, then the
+// normals and sources again. Out of line: it keeps its registers out of
+// the clipping loop's.
+[[gnu::noinline, gnu::cold]] void clean_result(const int* in_label, const Polygon& contact, const Polygon& target,
+                                               double tol, Polygon& result, IpEdge* source) {
   std::array<int, kMaxVertices> label;
-  for (int i = 0; i < in_count; ++i) label[static_cast<std::size_t>(i)] = in_label[i];
-  result.count = clean_ring(result.v.data(), in_count, tol, label.data());
+  for (int i = 0; i < result.count; ++i) label[static_cast<std::size_t>(i)] = in_label[i];
+  result.count = clean_ring(result.v.data(), result.count, tol, label.data());
   for (int i = 0; i < result.count; ++i) {
     const int l = label[static_cast<std::size_t>(i)];
     if (l == kMixedEdgeLabel) {
@@ -419,6 +366,70 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
     result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
     if (source) source[i] = {on_contact, e};
   }
+}
+
+// The target cut by the lines of the contact's edges whose bit is set in
+// `lines` (Table 3), with edge labels; normals taken from the labelled
+// source edges. Two rings (vertices and labels), ping-ponged by swapping
+// their pointers: each cut of a convex polygon by a half-plane adds at most
+// one vertex, so n + m fits in kMaxVertices. The rings are thread-local
+// scratch, as a local ring would be zeroed on every call (Vec2
+// zero-initialises); one pointer per ring, rather than a buffer index, keeps
+// the loop's addresses in registers. The first input is the target itself,
+// and a line that leaves every vertex inside (the usual case: a shallow
+// contact is cut by one or two of the contact polygon's edge lines) costs
+// one distance per vertex and no copy. The last ring goes to `result` in one
+// pass with its normals and sources, which also runs clean_ring's test; only
+// a ring that has a vertex to remove (rare) is then cleaned (clean_result).
+void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
+                 IpEdge* source) {
+  struct Ring {
+    std::array<Vec2, kMaxVertices> v;
+    std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
+  };
+  static thread_local Ring rings[2];
+  // The target's own edges label themselves: label j for edge j.
+  static constexpr std::array<int, kMaxVertices> target_label = [] {
+    std::array<int, kMaxVertices> l{};
+    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
+    return l;
+  }();
+  const Vec2* in = target.v.data();
+  const int* in_label = target_label.data();
+  int in_count = target.count;
+  Ring* out_ring = &rings[0];
+  Ring* spare_ring = &rings[1];
+  // Only the lines whose bit is set, in increasing order.
+  if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
+  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
+    const int c = __builtin_ctz(lines);
+    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
+    Vec2* out = out_ring->v.data();
+    int* out_label = out_ring->label.data();
+    const int line = contact_label(c);
+    int count = 0;
+    switch (in_count) {
+      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
+      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
+      default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
+    }
+    if (count < 0) continue;  // no vertex outside: the ring stays
+    in_count = count;
+    in = out;
+    in_label = out_label;
+    std::swap(out_ring, spare_ring);
+  }
+  if (in_count < 3) {
+    result.count = 0;
+    return;
+  }
+  bool clean = false;
+  switch (in_count) {
+    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
+    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
+    default: clean = emit_ring<0>(in, in_label, in_count, contact, target, tol, result, source); break;
+  }
+  if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
 constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
