@@ -253,44 +253,74 @@ constexpr int contact_label(int c) { return -1 - c; }
 // through pc with unit normal nc, keeping the inner side. Signed distances
 // within tol of the line are snapped to 0 (no duplicate vertex, no sliver
 // edge). Returns -1, and writes nothing, when no vertex lies outside (the
-// ring stays as it is); else the new count. kN: n when known at compile
-// time (0: read it), so that the common small rings run unrolled; the same
-// operations in the same order either way.
+// ring stays as it is); else the new count. The distances two points at a
+// time (pair k: points 2k and 2k + 1 in its lanes, an odd count's last
+// point repeated), each nc . (p - pc) rounded as the scalar dot product and
+// snapped by the same test (fabs(NaN) <= tol is false: a NaN stays). kN: n
+// when known at compile time (0: read it), so that the common small rings
+// run unrolled; the same operations in the same order either way.
 template <int kN>
 int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, double tol, int line_label, Vec2* out,
              int* out_label) {
   const int n = kN ? kN : n_in;
-  std::array<double, kN ? kN : kMaxVertices> dist;  // left uninitialised: the first n are set
-  bool cuts = false;
-  for (int i = 0; i < n; ++i) {
-    double d = dot(nc, in[i] - pc);
-    if (std::fabs(d) <= tol) d = 0.0;
-    dist[static_cast<std::size_t>(i)] = d;
-    cuts |= d > 0.0;
+  constexpr int kPairs = kN ? (kN + 1) / 2 : kMaxVertices / 2;
+  alignas(16) double dist[2 * kPairs];  // left uninitialised: the first n are set
+  const Lanes nxy = {nc.x, nc.y}, pxy = {pc.x, pc.y};
+  const Lanes tol_l = {tol, tol};
+  const LaneMask sign = {INT64_MIN, INT64_MIN};
+  unsigned outside = 0;
+  for (int k = 0; k < (kN ? kPairs : (n + 1) / 2); ++k) {
+    const Vec2 p = in[2 * k], q = in[std::min(2 * k + 1, n - 1)];
+    const Lanes tp = nxy * (Lanes{p.x, p.y} - pxy), tq = nxy * (Lanes{q.x, q.y} - pxy);  // the terms of dot(nc, p - pc)
+    Lanes d = Lanes{tp[0], tq[0]} + Lanes{tp[1], tq[1]};
+    d = (Lanes)((LaneMask)d & ~((Lanes)((LaneMask)d & ~sign) <= tol_l));  // |d| <= tol: +0
+    outside |= lane_bits(d > Lanes{0.0, 0.0}) << (2 * k);
+    __builtin_memcpy(&dist[2 * k], &d, sizeof d);
   }
-  if (!cuts) return -1;
+  if (!outside) return -1;  // a repeated last point only repeats its bit
   return 2 * n > kMaxVertices
-             ? detail::clip_ring_n<true, true>(in, dist.data(), n, out, in_label, line_label, out_label)
-             : detail::clip_ring_n<true, false>(in, dist.data(), n, out, in_label, line_label, out_label);
+             ? detail::clip_ring_n<true, true>(in, dist, n, out, in_label, line_label, out_label)
+             : detail::clip_ring_n<true, false>(in, dist, n, out, in_label, line_label, out_label);
+}
+
+// detail::removable_vertex for two vertices at once, lane l testing b
+// between a and c; returns the lane bits of the removable ones. The same
+// products and comparisons per lane (|b - a|^2 for |a - b|^2: the negation
+// is exact and the squares drop the sign); a chord within tol of zero counts
+// as straight, a NaN chord too, as there.
+inline unsigned removable_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx, Lanes cy, Lanes tol2) {
+  const Lanes acx = cx - ax, acy = cy - ay, abx = bx - ax, aby = by - ay;
+  const Lanes lac2 = acx * acx + acy * acy;
+  const Lanes h = acx * aby - acy * abx;  // cross(ac, ab)
+  const unsigned repeated = lane_bits(abx * abx + aby * aby <= tol2);
+  // straight: lac2 > tol2 ? h * h <= tol2 * lac2 : true. Combined as bits:
+  // GCC widens a negated or or-ed comparison mask lane by lane.
+  const unsigned straight = lane_bits(h * h <= tol2 * lac2) | (lane_bits(lac2 > tol2) ^ 3u);
+  return repeated | straight;
 }
 
 // The last ring of clip_target into `result`: its vertices, the source
 // edges' normals and the sources (clipping labels are a target edge j >= 0
-// or a contact edge -1 - c, never kMixedEdgeLabel), while testing each
-// vertex between its two neighbours as clean_ring does. Returns false when
-// some vertex is removable (then `result` is to be cleaned). kN as cut_ring's.
+// or a contact edge -1 - c, never kMixedEdgeLabel), and clean_ring's test of
+// each vertex between its two neighbours, two vertices at a time (pair k:
+// vertices 2k and 2k + 1, an odd count's last vertex paired with vertex 0,
+// tested twice). Returns false when some vertex is removable (then `result`
+// is to be cleaned). kN as cut_ring's.
 template <int kN>
 bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& contact, const Polygon& target,
                double tol, Polygon& result, IpEdge* source) {
   const int n = kN ? kN : n_in;
-  const double tol2 = tol * tol;
-  bool clean = true;
-  Vec2 a = in[n - 1], b = in[0];
+  const Lanes tol2 = {tol * tol, tol * tol};
+  unsigned removable = 0;
+  for (int k = 0; k < (n + 1) / 2; ++k) {
+    const int i0 = 2 * k, i1 = 2 * k + 1 == n ? 0 : 2 * k + 1;
+    const Vec2 a0 = in[i0 == 0 ? n - 1 : i0 - 1], a1 = in[i1 == 0 ? n - 1 : i1 - 1];
+    const Vec2 b0 = in[i0], b1 = in[i1];
+    const Vec2 c0 = in[i0 + 1 == n ? 0 : i0 + 1], c1 = in[i1 + 1 == n ? 0 : i1 + 1];
+    removable |= removable_lanes(Lanes{a0.x, a1.x}, Lanes{a0.y, a1.y}, Lanes{b0.x, b1.x}, Lanes{b0.y, b1.y},
+                                 Lanes{c0.x, c1.x}, Lanes{c0.y, c1.y}, tol2);
+  }
   for (int i = 0; i < n; ++i) {
-    const Vec2 c = in[i + 1 == n ? 0 : i + 1];
-    clean &= !detail::removable_vertex(a, b, c, tol2);
-    a = b;
-    b = c;
     const int l = in_label[i];
     const bool on_contact = l < 0;
     const int e = on_contact ? contact_label(l) : l;  // contact_label is its own inverse
@@ -299,71 +329,18 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
     if (source) source[i] = {on_contact, e};
   }
   result.count = n;
-  return clean;
+  return removable == 0;
 }
 
-// The target cut by the lines of the contact's edges whose bit is set in
-// `lines` (Table 3), with edge labels; normals taken from the labelled
-// source edges. Two buffers, ping-ponged: each cut of a convex polygon by a
-// half-plane adds at most one vertex, so n + m fits in kMaxVertices. The
-// vertex buffers are thread-local scratch: a local ring would be zeroed on
-// every call (Vec2 zero-initialises); the labels are plain local arrays,
-// left uninitialised. The first input is the target itself, and a line that
-// leaves every vertex inside (the usual case: a shallow contact is cut by
-// one or two of the contact polygon's edge lines) costs one distance per
-// vertex and no copy. The last ring goes to `result` in one pass with its
-// normals and sources, which also runs clean_ring's test; only a ring that
-// has a vertex to remove (rare) is then cleaned, as clean_ring does.
-void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
-                 IpEdge* source) {
-  static thread_local std::array<Vec2, kMaxVertices> buf[2];
-  std::array<int, kMaxVertices> label_buf[2];
-  // The target's own edges label themselves: label j for edge j.
-  static constexpr std::array<int, kMaxVertices> target_label = [] {
-    std::array<int, kMaxVertices> l{};
-    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
-    return l;
-  }();
-  const Vec2* in = target.v.data();
-  const int* in_label = target_label.data();
-  int in_count = target.count;
-  int next_buf = 0;
-  // Only the lines whose bit is set, in increasing order.
-  if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
-  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
-    const int c = __builtin_ctz(lines);
-    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
-    Vec2* out = buf[next_buf].data();
-    int* out_label = label_buf[next_buf].data();
-    const int line = contact_label(c);
-    int count = 0;
-    switch (in_count) {
-      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
-      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
-      default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
-    }
-    if (count < 0) continue;  // no vertex outside: the ring stays
-    in_count = count;
-    in = out;
-    in_label = out_label;
-    next_buf = 1 - next_buf;
-  }
-  if (in_count < 3) {
-    result.count = 0;
-    return;
-  }
-  bool clean = false;
-  switch (in_count) {
-    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
-    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: clean = emit_ring<0>(in, in_label, in_count, contact, target, tol, result, source); break;
-  }
-  if (clean) return;
-  // Some vertex goes: clean_ring on the ring and its labels (result.v holds
-  // the ring), then the normals and sources again.
+// clip_target's rare end: result (its ring and count set, labels in_label)
+// has a vertex to remove. clean_ring on the ring and its labels, then the
+// normals and sources again. Out of line: it keeps its registers out of
+// the clipping loop's.
+[[gnu::noinline, gnu::cold]] void clean_result(const int* in_label, const Polygon& contact, const Polygon& target,
+                                               double tol, Polygon& result, IpEdge* source) {
   std::array<int, kMaxVertices> label;
-  for (int i = 0; i < in_count; ++i) label[static_cast<std::size_t>(i)] = in_label[i];
-  result.count = clean_ring(result.v.data(), in_count, tol, label.data());
+  for (int i = 0; i < result.count; ++i) label[static_cast<std::size_t>(i)] = in_label[i];
+  result.count = clean_ring(result.v.data(), result.count, tol, label.data());
   for (int i = 0; i < result.count; ++i) {
     const int l = label[static_cast<std::size_t>(i)];
     if (l == kMixedEdgeLabel) {
@@ -376,6 +353,70 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
     result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
     if (source) source[i] = {on_contact, e};
   }
+}
+
+// The target cut by the lines of the contact's edges whose bit is set in
+// `lines` (Table 3), with edge labels; normals taken from the labelled
+// source edges. Two rings (vertices and labels), ping-ponged by swapping
+// their pointers: each cut of a convex polygon by a half-plane adds at most
+// one vertex, so n + m fits in kMaxVertices. The rings are thread-local
+// scratch, as a local ring would be zeroed on every call (Vec2
+// zero-initialises); one pointer per ring, rather than a buffer index, keeps
+// the loop's addresses in registers. The first input is the target itself,
+// and a line that leaves every vertex inside (the usual case: a shallow
+// contact is cut by one or two of the contact polygon's edge lines) costs
+// one distance per vertex and no copy. The last ring goes to `result` in one
+// pass with its normals and sources, which also runs clean_ring's test; only
+// a ring that has a vertex to remove (rare) is then cleaned (clean_result).
+void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
+                 IpEdge* source) {
+  struct Ring {
+    std::array<Vec2, kMaxVertices> v;
+    std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
+  };
+  static thread_local Ring rings[2];
+  // The target's own edges label themselves: label j for edge j.
+  static constexpr std::array<int, kMaxVertices> target_label = [] {
+    std::array<int, kMaxVertices> l{};
+    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
+    return l;
+  }();
+  const Vec2* in = target.v.data();
+  const int* in_label = target_label.data();
+  int in_count = target.count;
+  Ring* out_ring = &rings[0];
+  Ring* spare_ring = &rings[1];
+  // Only the lines whose bit is set, in increasing order.
+  if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
+  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
+    const int c = __builtin_ctz(lines);
+    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
+    Vec2* out = out_ring->v.data();
+    int* out_label = out_ring->label.data();
+    const int line = contact_label(c);
+    int count = 0;
+    switch (in_count) {
+      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
+      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
+      default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
+    }
+    if (count < 0) continue;  // no vertex outside: the ring stays
+    in_count = count;
+    in = out;
+    in_label = out_label;
+    std::swap(out_ring, spare_ring);
+  }
+  if (in_count < 3) {
+    result.count = 0;
+    return;
+  }
+  bool clean = false;
+  switch (in_count) {
+    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
+    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
+    default: clean = emit_ring<0>(in, in_label, in_count, contact, target, tol, result, source); break;
+  }
+  if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
 constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
