@@ -775,7 +775,10 @@ detail::Lanes point_displacement_lanes(Vec2 centroid, Vec2 p, const Vec6& d) {
 
 }  // namespace
 
-bool Simulation::pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol) {
+// Inlined into the pair loop (its only caller): a call frame of its own
+// costs about as much as the bookkeeping it does.
+[[gnu::always_inline]] inline bool Simulation::pair_force(long k, bool was_active, const Polygon& ip,
+                                                          const IpEdge* source, double tol) {
   const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
   const ContactParams& c = scene_.contact;
   const NormalForce nf =
