@@ -596,9 +596,9 @@ void Simulation::pair_forces(bool with_energy) {
   // with slow core-to-core latency cost more than the uneven pair costs it
   // evens out (measured: 2 threads 0.9x of 1 thread with dynamic chunks of
   // 16). A pair whose boxes do not overlap is no candidate; a pair that
-  // does not touch forgets its friction history. with_energy: each contact
-  // also stores its penalty energy (for the energy guard, summed in pair
-  // order as energy() sums it).
+  // did not touch at the last step starts its friction history afresh
+  // (pair_force). with_energy: each contact also stores its penalty energy
+  // (for the energy guard, summed in pair order as energy() sums it).
   const int team = team_size(), t = thread_index();
   const long n = static_cast<long>(near_pairs_.size());
   const long begin = team > 1 ? pair_split_[static_cast<std::size_t>(t)] : 0;
