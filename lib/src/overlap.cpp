@@ -225,26 +225,37 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
 // tests in the Sect. 6.1 collapse about 79 % are 4-4 pairs, 17 % 4-5 or
 // 5-4, 3 % other pairs of triangles to pentagons), so every pair of counts
 // 3 to 5 runs unrolled (the generic loops take about three times as many
-// instructions). separating_axes_a: on B's count, A's known to be kA.
-template <bool kCuts, int kA>
-OverlapState separating_axes_a(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+// instructions). by_counts calls Op::run<kA, kB>(a, b, args) with kA, kB
+// the counts of a and b when both are 3 to 5, else Op::run<0, 0>;
+// by_counts_b: on B's count, A's known to be kA.
+template <class Op, int kA, class... Args>
+OverlapState by_counts_b(const Polygon& a, const Polygon& b, Args&&... args) {
   switch (b.count) {
-    case 3: return separating_axes_n<kCuts, kA, 3>(a, b, tol, cuts, witness);
-    case 4: return separating_axes_n<kCuts, kA, 4>(a, b, tol, cuts, witness);
-    case 5: return separating_axes_n<kCuts, kA, 5>(a, b, tol, cuts, witness);
-    default: return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
+    case 3: return Op::template run<kA, 3>(a, b, args...);
+    case 4: return Op::template run<kA, 4>(a, b, args...);
+    case 5: return Op::template run<kA, 5>(a, b, args...);
+    default: return Op::template run<0, 0>(a, b, args...);
   }
 }
 
-template <bool kCuts>
-OverlapState separating_axes(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+template <class Op, class... Args>
+OverlapState by_counts(const Polygon& a, const Polygon& b, Args&&... args) {
   switch (a.count) {
-    case 3: return separating_axes_a<kCuts, 3>(a, b, tol, cuts, witness);
-    case 4: return separating_axes_a<kCuts, 4>(a, b, tol, cuts, witness);
-    case 5: return separating_axes_a<kCuts, 5>(a, b, tol, cuts, witness);
-    default: return separating_axes_n<kCuts>(a, b, tol, cuts, witness);
+    case 3: return by_counts_b<Op, 3>(a, b, args...);
+    case 4: return by_counts_b<Op, 4>(a, b, args...);
+    case 5: return by_counts_b<Op, 5>(a, b, args...);
+    default: return Op::template run<0, 0>(a, b, args...);
   }
 }
+
+// The overlap test alone, for by_counts.
+template <bool kCuts>
+struct SeparatingAxes {
+  template <int kA, int kB>
+  static OverlapState run(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+    return separating_axes_n<kCuts, kA, kB>(a, b, tol, cuts, witness);
+  }
+};
 
 // Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.
 constexpr int contact_label(int c) { return -1 - c; }
@@ -419,6 +430,38 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
+// clip_target kept out of line: OverlapAndClip::run inlines all else it
+// calls, and one copy of the clipper serves every pair of counts.
+[[gnu::noinline]] void clip_target_apart(const Polygon& contact, const Polygon& target, double tol,
+                                         std::uint32_t lines, Polygon& result, IpEdge* source) {
+  clip_target(contact, target, tol, lines, result, source);
+}
+
+// overlap_and_intersection for the vertex counts kA, kB (0: read them):
+// the overlap test and, when the polygons overlap, the cut by the lines it
+// found cutting. Flattened, so that the test runs in this call frame with
+// its pointer arguments known: a pair that does not overlap (most
+// candidates) costs the dispatch, this frame and the test, no more.
+struct OverlapAndClip {
+  template <int kA, int kB>
+  [[gnu::noinline, gnu::flatten]] static OverlapState run(const Polygon& contact, const Polygon& target, double tol,
+                                                          Polygon& ip, IpEdge* source, int* witness) {
+    if (kA == 0 && (contact.count < 3 || target.count < 3)) return OverlapState::kSeparate;
+    std::uint32_t lines = 0;
+    const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness);
+    if (state == OverlapState::kOverlapping) clip_target_apart(contact, target, tol, lines, ip, source);
+    return state;
+  }
+};
+
+// overlap_and_intersection with the pair's own tolerance, apart: the
+// dispatch with a given tolerance (the hot path) then needs no call frame.
+[[gnu::noinline, gnu::cold]] OverlapState overlap_and_intersection_own_tol(const Polygon& contact,
+                                                                          const Polygon& target, Polygon& ip,
+                                                                          IpEdge* source, int* witness) {
+  return overlap_and_intersection(contact, target, pair_tolerance(contact, target), ip, source, witness);
+}
+
 constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
 
 }  // namespace
@@ -426,18 +469,14 @@ constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
 OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
   if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
   if (tol < 0.0) tol = pair_tolerance(a, b);
-  return separating_axes<false>(a, b, tol, nullptr, nullptr);
+  return by_counts<SeparatingAxes<false>>(a, b, tol, nullptr, nullptr);
 }
 
 OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
                                       IpEdge* source, int* witness) {
   ip.count = 0;
-  if (contact.count < 3 || target.count < 3) return OverlapState::kSeparate;
-  if (tol < 0.0) tol = pair_tolerance(contact, target);
-  std::uint32_t lines = 0;
-  const OverlapState state = separating_axes<true>(contact, target, tol, &lines, witness);
-  if (state == OverlapState::kOverlapping) clip_target(contact, target, tol, lines, ip, source);
-  return state;
+  if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness);
+  return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness);
 }
 
 void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& result) {

@@ -36,9 +36,9 @@ constexpr double kBroadPhaseSkin = 0.25;
 // be (dimensionless; instructions measured on the 6.1 collapse: ~2,500 for
 // a touching pair, ~120 for a separate candidate, ~20 for a pair whose
 // boxes do not overlap). Only the shares' balance depends on them.
-constexpr double kWorkTouching = 125.0;
-constexpr double kWorkCandidate = 6.0;
-constexpr double kWorkOther = 1.0;
+constexpr long kWorkTouching = 125;
+constexpr long kWorkCandidate = 6;
+constexpr long kWorkOther = 1;
 
 std::string field(const char* name, std::size_t i) {
   std::ostringstream s;
@@ -460,18 +460,6 @@ void Simulation::update_near_pairs() {
   }
 }
 
-void Simulation::advance_pair_history(int cp, int tp, PairHistory& h) const {
-  // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at pg; a sticking
-  // pair accumulates it, a sliding pair restarts from it (kPaper) or, with
-  // the return mapping, accumulates it onto the shear it was returned to
-  // (pair_force). The centroids are those of the step's start configuration.
-  const bool restart = scene_.contact.friction_update == FrictionUpdate::kPaper;
-  const Vec2 du_cp = fixed_[cp] ? Vec2{} : point_displacement(start_centroid_[cp], h.point, step_disp_[cp]);
-  const Vec2 du_tp = fixed_[tp] ? Vec2{} : point_displacement(start_centroid_[tp], h.point, step_disp_[tp]);
-  const Vec2 dd = du_cp - du_tp;
-  h.d = h.sliding && restart ? dd : h.d + dd;
-}
-
 void Simulation::update_geometry() {
   for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
 }
@@ -608,39 +596,50 @@ void Simulation::pair_forces(bool with_energy) {
   // with slow core-to-core latency cost more than the uneven pair costs it
   // evens out (measured: 2 threads 0.9x of 1 thread with dynamic chunks of
   // 16). A pair whose boxes do not overlap is no candidate; a pair that
-  // does not touch forgets its friction history. with_energy: each contact
-  // also stores its penalty energy (for the energy guard, summed in pair
-  // order as energy() sums it).
+  // did not touch at the last step starts its friction history afresh
+  // (pair_force). with_energy: each contact also stores its penalty energy
+  // (for the energy guard, summed in pair order as energy() sums it).
   const int team = team_size(), t = thread_index();
   const long n = static_cast<long>(near_pairs_.size());
   const long begin = team > 1 ? pair_split_[static_cast<std::size_t>(t)] : 0;
   const long end = team > 1 ? pair_split_[static_cast<std::size_t>(t) + 1] : n;
-  double work = 0.0;
+  // The loop's arrays in locals: its stores could alias the vectors' members.
+  NearPair* const near = near_pairs_.data();
+  PairLoad* const loads = pair_loads_.data();
+  const Aabb* const boxes = boxes_.data();
+  const Polygon* const poly = poly_.data();
+  const BlockSide* const sides = sides_.data();
+  // The intersection polygon and its edges' sources, rewritten by every
+  // overlap test.
+  Polygon ip;
+  std::array<IpEdge, kMaxVertices> source;
+  long work = 0;
   for (long k = begin; k < end; ++k) {
-    NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
-    PairResult& r = pair_results_[static_cast<std::size_t>(k)];
-    PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
+    NearPair& p = near[k];
+    PairLoad& load = loads[k];
     const bool was_active = load.active;
-    load.candidate = aabb_overlap(boxes_[p.i], boxes_[p.j]);
     load.active = false;
+    load.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
     if (!load.candidate) {
       work += kWorkOther;
       continue;
     }
-    if (friction_) {
-      if (was_active) advance_pair_history(p.i, p.j, r.history);
-      else r.history = PairHistory{};
-    }
-    if (!pair_force(p.i, p.j, r, &p.witness, with_energy)) {
+    // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
+    const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
+    if (overlap_and_intersection(poly[p.i], poly[p.j], tol, ip, source.data(), &p.witness) !=
+            OverlapState::kOverlapping ||
+        ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol)) {
       work += kWorkCandidate;
       continue;
     }
     work += kWorkTouching;
-    load.active = true;
-    load.force = r.info.normal_force + r.info.tangential_force;
-    load.point = r.info.point;
+    // The penalty energy of the contact, as energy() computes it (the same
+    // IP: the lines left out of the cut leave it unchanged).
+    if (with_energy) {
+      pair_results_[static_cast<std::size_t>(k)].energy = contact_energy(sides[p.i].side, sides[p.j].side, ip, tol);
+    }
   }
-  if (team > 1) flags_[static_cast<std::size_t>(t)].pair_work = work;
+  if (team > 1) flags_[static_cast<std::size_t>(t)].pair_work = static_cast<double>(work);
   DDA_OMP(omp barrier)
 }
 
@@ -761,36 +760,61 @@ void Simulation::kick() {
     if (!fixed_[i]) kick_block(i);
 }
 
-bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness, bool with_energy) const {
-  const Polygon& a = poly_[cp];
-  const Polygon& b = poly_[tp];
-  const BlockSide& side_a = sides_[cp];
-  const BlockSide& side_b = sides_[tp];
-  const double tol = std::max(side_a.tol, side_b.tol);
-  // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
-  static thread_local Polygon ip;
-  static thread_local std::array<IpEdge, kMaxVertices> source;
-  if (overlap_and_intersection(a, b, tol, ip, source.data(), witness) != OverlapState::kOverlapping) return false;
-  if (ip.count < 3) return false;
+namespace {
+
+// point_displacement lane by lane: with t = (xt, yt), the displacement is
+// (d0, d1) + (-yt, xt) d2 + t (d3, d4) + (0.5 (yt, xt)) d5, each element
+// point_displacement's operations in its order (d0 - yt d2 is d0 + (-yt) d2
+// exactly).
+detail::Lanes point_displacement_lanes(Vec2 centroid, Vec2 p, const Vec6& d) {
+  using detail::Lanes;
+  const Lanes t = detail::lanes(p) - detail::lanes(centroid), ts = detail::swapped(t);
+  return Lanes{d[0], d[1]} + ts * Lanes{-1.0, 1.0} * Lanes{d[2], d[2]} + t * Lanes{d[3], d[4]} +
+         Lanes{0.5, 0.5} * ts * Lanes{d[5], d[5]};
+}
+
+}  // namespace
+
+// Inlined into the pair loop (its only caller): a call frame of its own
+// costs about as much as the bookkeeping it does.
+[[gnu::always_inline]] inline bool Simulation::pair_force(long k, bool was_active, const Polygon& ip,
+                                                          const IpEdge* source, double tol) {
+  const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
   const ContactParams& c = scene_.contact;
   const NormalForce nf =
-      normal_contact_force(side_a.side, side_b.side, ip, c.integration, tol, source.data());  // Eqs. 11-20
+      normal_contact_force(sides_[cp].side, sides_[tp].side, ip, c.integration, tol, source);  // Eqs. 11-20
   if (!nf.valid) return false;
-
+  PairResult& r = pair_results_[static_cast<std::size_t>(k)];
   ContactInfo& info = r.info;
-  info = ContactInfo{};
   info.cp = cp;
   info.tp = tp;
   info.normal_force = nf.force;
+  info.tangential_force = Vec2{};
   info.point = nf.point;
   info.ip_area = nf.ip_area;
   info.ip_length = 0.5 * nf.ip_perimeter;
-  // The penalty energy of the contact, as energy() computes it (the same
-  // IP: the lines left out of the cut leave it unchanged).
-  if (with_energy) r.energy = contact_energy(side_a.side, side_b.side, ip, tol);
+  info.sliding = false;
   if (friction_) {
-    // Coulomb friction with stick/slide history, Eqs. 24-26.
+    // Coulomb friction with stick/slide history, Eqs. 24-26. A pair that
+    // was not in contact at the last step starts afresh.
     PairHistory& hist = r.history;
+    if (was_active) {
+      // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at the last pg;
+      // a sticking pair accumulates it, a sliding pair restarts from it
+      // (kPaper) or, with the return mapping, accumulates it onto the shear
+      // it was returned to (below). The centroids are those of the step's
+      // start configuration.
+      using detail::Lanes;
+      const Lanes du_cp =
+          fixed_[cp] ? Lanes{0.0, 0.0} : point_displacement_lanes(start_centroid_[cp], hist.point, step_disp_[cp]);
+      const Lanes du_tp =
+          fixed_[tp] ? Lanes{0.0, 0.0} : point_displacement_lanes(start_centroid_[tp], hist.point, step_disp_[tp]);
+      const Lanes dd = du_cp - du_tp;
+      const bool restart = c.friction_update == FrictionUpdate::kPaper;
+      hist.d = detail::vec2(hist.sliding && restart ? dd : detail::lanes(hist.d) + dd);
+    } else {
+      hist = PairHistory{};
+    }
     const double fn = length(nf.force);
     const Vec2 ng = nf.force / fn;
     const Vec2 dtan = hist.d - dot(hist.d, ng) * ng;
@@ -833,6 +857,10 @@ bool Simulation::pair_force(int cp, int tp, PairResult& r, int* witness, bool wi
     info.tangential_force = ft;
     info.sliding = hist.sliding;
   }
+  PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
+  load.active = true;
+  load.force = info.normal_force + info.tangential_force;
+  load.point = info.point;
   return true;
 }
 

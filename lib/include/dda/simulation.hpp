@@ -153,8 +153,11 @@ class Simulation {
     double energy = 0.0;     // penalty energy, J/m (set on steps with an energy check)
     PairHistory history;
   };
-  bool pair_force(int cp, int tp, PairResult& r, int* witness, bool with_energy) const;
-  void advance_pair_history(int cp, int tp, PairHistory& h) const;
+  // The contact of overlapping near pair k from its intersection polygon
+  // ip (Eqs. 11-20, 24-26) into its PairResult and PairLoad (active); false
+  // when the net force vanishes. was_active: the pair was in contact at the
+  // last step (its friction history carries on).
+  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol);
   void kick();
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
   GuardFault guard_fault(int i) const;
