@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "lanes.hpp"
+#include "block_lanes.hpp"
 
 namespace dda {
 
@@ -10,22 +10,16 @@ namespace {
 
 using detail::Lanes;
 
-// displace_vertices for kN vertices (0: poly.count), u and v of
-// point_displacement in the two lanes: with t = (xt, yt) and s = (yt, xt),
-//   (u, v) = (((d0, d1) + s (-d2, d2)) + t (d3, d4)) + (0.5 s) d5,
-// lane by lane its operations (d0 + yt (-d2) is d0 - yt d2 exactly).
+// displace_vertices for kN vertices (0: poly.count).
 template <int kN>
 double displace_n(Polygon& poly, Vec2 centroid, const Vec6& d) {
   const int count = kN ? kN : poly.count;
   const Lanes c = detail::lanes(centroid);
-  const Lanes base{d[0], d[1]}, rotation{-d[2], d[2]}, strain{d[3], d[4]}, shear{d[5], d[5]};
-  const Lanes half{0.5, 0.5};
+  const Vec6 dd = d;  // a local copy: the vertex stores cannot alias it, its lanes stay in registers
   double motion2 = 0.0;
   for (int k = 0; k < count; ++k) {
     const Lanes p = detail::lanes(poly.v[static_cast<std::size_t>(k)]);
-    const Lanes t = p - c;
-    const Lanes s = detail::swapped(t);
-    const Lanes u = base + s * rotation + t * strain + half * s * shear;
+    const Lanes u = detail::point_displacement_lanes(c, p, dd);
     poly.v[static_cast<std::size_t>(k)] = detail::vec2(p + u);
     const Lanes u2 = u * u;
     motion2 = std::max(motion2, u2[0] + u2[1]);

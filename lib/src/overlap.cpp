@@ -260,6 +260,17 @@ struct SeparatingAxes {
 // Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.
 constexpr int contact_label(int c) { return -1 - c; }
 
+// Edge i of an intersection polygon from its clipping label l (a target
+// edge j >= 0 or a contact edge -1 - c): its normal is the source edge's,
+// and its source that edge.
+inline void set_labelled_edge(int i, int l, const Polygon& contact, const Polygon& target, Polygon& result,
+                              IpEdge* source) {
+  const bool on_contact = l < 0;
+  const int e = on_contact ? contact_label(l) : l;  // contact_label is its own inverse
+  result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
+  if (source) source[i] = {on_contact, e};
+}
+
 // One cut of clip_target: the ring in[0..n) with its labels cut by the line
 // through pc with unit normal nc, keeping the inner side. Signed distances
 // within tol of the line are snapped to 0 (no duplicate vertex, no sliver
@@ -294,22 +305,6 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
              : detail::clip_ring_n<true, false>(in, dist, n, out, in_label, line_label, out_label);
 }
 
-// detail::removable_vertex for two vertices at once, lane l testing b
-// between a and c; returns the lane bits of the removable ones. The same
-// products and comparisons per lane (|b - a|^2 for |a - b|^2: the negation
-// is exact and the squares drop the sign); a chord within tol of zero counts
-// as straight, a NaN chord too, as there.
-inline unsigned removable_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx, Lanes cy, Lanes tol2) {
-  const Lanes acx = cx - ax, acy = cy - ay, abx = bx - ax, aby = by - ay;
-  const Lanes lac2 = acx * acx + acy * acy;
-  const Lanes h = acx * aby - acy * abx;  // cross(ac, ab)
-  const unsigned repeated = lane_bits(abx * abx + aby * aby <= tol2);
-  // straight: lac2 > tol2 ? h * h <= tol2 * lac2 : true. Combined as bits:
-  // GCC widens a negated or or-ed comparison mask lane by lane.
-  const unsigned straight = lane_bits(h * h <= tol2 * lac2) | (lane_bits(lac2 > tol2) ^ 3u);
-  return repeated | straight;
-}
-
 // The last ring of clip_target into `result`: its vertices, the source
 // edges' normals and the sources (clipping labels are a target edge j >= 0
 // or a contact edge -1 - c, never kMixedEdgeLabel), and clean_ring's test of
@@ -321,26 +316,13 @@ template <int kN>
 bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& contact, const Polygon& target,
                double tol, Polygon& result, IpEdge* source) {
   const int n = kN ? kN : n_in;
-  const Lanes tol2 = {tol * tol, tol * tol};
-  unsigned removable = 0;
-  for (int k = 0; k < (n + 1) / 2; ++k) {
-    const int i0 = 2 * k, i1 = 2 * k + 1 == n ? 0 : 2 * k + 1;
-    const Vec2 a0 = in[i0 == 0 ? n - 1 : i0 - 1], a1 = in[i1 == 0 ? n - 1 : i1 - 1];
-    const Vec2 b0 = in[i0], b1 = in[i1];
-    const Vec2 c0 = in[i0 + 1 == n ? 0 : i0 + 1], c1 = in[i1 + 1 == n ? 0 : i1 + 1];
-    removable |= removable_lanes(Lanes{a0.x, a1.x}, Lanes{a0.y, a1.y}, Lanes{b0.x, b1.x}, Lanes{b0.y, b1.y},
-                                 Lanes{c0.x, c1.x}, Lanes{c0.y, c1.y}, tol2);
-  }
+  const bool removable = detail::ring_needs_clean<kN>(in, n, tol * tol);
   for (int i = 0; i < n; ++i) {
-    const int l = in_label[i];
-    const bool on_contact = l < 0;
-    const int e = on_contact ? contact_label(l) : l;  // contact_label is its own inverse
     result.v[static_cast<std::size_t>(i)] = in[i];
-    result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
-    if (source) source[i] = {on_contact, e};
+    set_labelled_edge(i, in_label[i], contact, target, result, source);
   }
   result.count = n;
-  return removable == 0;
+  return !removable;
 }
 
 // clip_target's rare end: result (its ring and count set, labels in_label)
@@ -359,10 +341,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
       if (source) source[i] = IpEdge{};
       continue;
     }
-    const bool on_contact = l < 0;
-    const int e = on_contact ? contact_label(l) : l;
-    result.n[static_cast<std::size_t>(i)] = on_contact ? contact.normal(e) : target.normal(e);
-    if (source) source[i] = {on_contact, e};
+    set_labelled_edge(i, l, contact, target, result, source);
   }
 }
 
@@ -379,7 +358,9 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
 // one distance per vertex and no copy. The last ring goes to `result` in one
 // pass with its normals and sources, which also runs clean_ring's test; only
 // a ring that has a vertex to remove (rare) is then cleaned (clean_result).
-void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
+// Out of line: OverlapAndClip::run inlines all else it calls, and one copy
+// of the clipper serves every pair of counts.
+[[gnu::noinline]] void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
                  IpEdge* source) {
   struct Ring {
     std::array<Vec2, kMaxVertices> v;
@@ -430,13 +411,6 @@ void clip_target(const Polygon& contact, const Polygon& target, double tol, std:
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
-// clip_target kept out of line: OverlapAndClip::run inlines all else it
-// calls, and one copy of the clipper serves every pair of counts.
-[[gnu::noinline]] void clip_target_apart(const Polygon& contact, const Polygon& target, double tol,
-                                         std::uint32_t lines, Polygon& result, IpEdge* source) {
-  clip_target(contact, target, tol, lines, result, source);
-}
-
 // overlap_and_intersection for the vertex counts kA, kB (0: read them):
 // the overlap test and, when the polygons overlap, the cut by the lines it
 // found cutting. Flattened, so that the test runs in this call frame with
@@ -449,7 +423,7 @@ struct OverlapAndClip {
     if (kA == 0 && (contact.count < 3 || target.count < 3)) return OverlapState::kSeparate;
     std::uint32_t lines = 0;
     const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness);
-    if (state == OverlapState::kOverlapping) clip_target_apart(contact, target, tol, lines, ip, source);
+    if (state == OverlapState::kOverlapping) clip_target(contact, target, tol, lines, ip, source);
     return state;
   }
 };

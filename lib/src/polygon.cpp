@@ -241,29 +241,14 @@ double area(const Polygon& poly) {
 
 Vec2 centroid(const Polygon& poly) { return area_moments(poly).centroid; }
 
-Aabb bounds(const Polygon& poly) {
-  Aabb b;
-  for (int i = 0; i < poly.count; ++i) {
-    const Vec2 p = poly.vertex(i);
-    b.lo.x = std::min(b.lo.x, p.x);
-    b.lo.y = std::min(b.lo.y, p.y);
-    b.hi.x = std::max(b.hi.x, p.x);
-    b.hi.y = std::max(b.hi.y, p.y);
-  }
-  return b;
-}
-
 namespace {
 
-// update_polygon_geometry for kN vertices (0: poly.count). The bounds lane
-// by lane from the empty box in vertex order: bounds' scalar min and max.
+// bounds for kN vertices (0: poly.count), lane by lane from the empty box in
+// vertex order: lane_min / lane_max are std::min / std::max, operands in
+// that order.
 template <int kN>
-PolygonGeometry polygon_geometry(Polygon& poly) {
+Aabb bounds_n(const Polygon& poly) {
   const int count = kN ? kN : poly.count;
-  PolygonGeometry g;
-  const Lanes min2 = edge_normals<kN>(poly);
-  g.min_edge2 = std::min(min2[0], min2[1]);
-  g.moments = green_moments<kN>(poly.v.data(), count);
   const Aabb empty;
   Lanes lo = detail::lanes(empty.lo), hi = detail::lanes(empty.hi);
   for (int i = 0; i < count; ++i) {
@@ -271,7 +256,24 @@ PolygonGeometry polygon_geometry(Polygon& poly) {
     lo = detail::lane_min(lo, p);
     hi = detail::lane_max(hi, p);
   }
-  g.box = {detail::vec2(lo), detail::vec2(hi)};
+  return {detail::vec2(lo), detail::vec2(hi)};
+}
+
+}  // namespace
+
+Aabb bounds(const Polygon& poly) { return bounds_n<0>(poly); }
+
+namespace {
+
+// update_polygon_geometry for kN vertices (0: poly.count).
+template <int kN>
+PolygonGeometry polygon_geometry(Polygon& poly) {
+  const int count = kN ? kN : poly.count;
+  PolygonGeometry g;
+  const Lanes min2 = edge_normals<kN>(poly);
+  g.min_edge2 = std::min(min2[0], min2[1]);
+  g.moments = green_moments<kN>(poly.v.data(), count);
+  g.box = bounds_n<kN>(poly);
   return g;
 }
 
@@ -328,7 +330,7 @@ int clean_ring(Vec2* v, int count, double tol, int* label) {
   // Squared comparisons: no square root per vertex.
   const double tol2 = tol * tol;
   // The usual ring has nothing to remove: one read-only sweep tells.
-  if (count >= 3 && !detail::ring_needs_clean(v, count, tol2)) return count;
+  if (count >= 3 && !detail::ring_needs_clean<0>(v, count, tol2)) return count;
   bool changed = true;
   while (changed && count >= 3) {
     changed = false;

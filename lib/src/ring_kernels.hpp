@@ -4,6 +4,7 @@
 // call. Not part of the public API.
 #pragma once
 #include "dda/polygon.hpp"
+#include "lanes.hpp"
 
 namespace dda::detail {
 
@@ -68,18 +69,41 @@ inline bool removable_vertex(Vec2 a, Vec2 b, Vec2 c, double tol2) {
   return repeated || straight;
 }
 
-// True when clean_ring would remove some vertex of v[0..count) (count >= 3):
-// its first sweep tests every vertex of the unchanged ring, so a ring with
-// no removable vertex comes back as it is.
-inline bool ring_needs_clean(const Vec2* v, int count, double tol2) {
-  Vec2 a = v[count - 1], b = v[0];
-  for (int i = 1; i < count; ++i) {
-    const Vec2 c = v[i];
-    if (removable_vertex(a, b, c, tol2)) return true;
-    a = b;
-    b = c;
+// removable_vertex for two vertices at once, lane l testing b between a
+// and c; returns the lane bits of the removable ones. The same products and
+// comparisons per lane (|b - a|^2 for |a - b|^2: the negation is exact and
+// the squares drop the sign); a chord within tol of zero counts as
+// straight, a NaN chord too, as there. The comparisons are combined as bits:
+// GCC widens a negated or or-ed comparison mask lane by lane.
+inline unsigned removable_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx, Lanes cy, Lanes tol2) {
+  const Lanes acx = cx - ax, acy = cy - ay, abx = bx - ax, aby = by - ay;
+  const Lanes lac2 = acx * acx + acy * acy;
+  const Lanes h = acx * aby - acy * abx;  // cross(ac, ab)
+  const unsigned repeated = lane_bits(abx * abx + aby * aby <= tol2);
+  // straight: lac2 > tol2 ? h * h <= tol2 * lac2 : true.
+  const unsigned straight = lane_bits(h * h <= tol2 * lac2) | (lane_bits(lac2 > tol2) ^ 3u);
+  return repeated | straight;
+}
+
+// True when clean_ring would remove some vertex of v[0..n) (n >= 3): its
+// first sweep tests every vertex of the unchanged ring, so a ring with no
+// removable vertex comes back as it is. Two vertices at a time (pair k:
+// vertices 2k and 2k + 1, an odd count's last vertex paired with vertex 0,
+// tested twice). kN: n when known at compile time (0: read it).
+template <int kN>
+inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
+  const int n = kN ? kN : n_in;
+  const Lanes t2 = {tol2, tol2};
+  unsigned removable = 0;
+  for (int k = 0; k < (n + 1) / 2; ++k) {
+    const int i0 = 2 * k, i1 = 2 * k + 1 == n ? 0 : 2 * k + 1;
+    const Vec2 a0 = v[i0 == 0 ? n - 1 : i0 - 1], a1 = v[i1 == 0 ? n - 1 : i1 - 1];
+    const Vec2 b0 = v[i0], b1 = v[i1];
+    const Vec2 c0 = v[i0 + 1 == n ? 0 : i0 + 1], c1 = v[i1 + 1 == n ? 0 : i1 + 1];
+    removable |= removable_lanes(Lanes{a0.x, a1.x}, Lanes{a0.y, a1.y}, Lanes{b0.x, b1.x}, Lanes{b0.y, b1.y},
+                                 Lanes{c0.x, c1.x}, Lanes{c0.y, c1.y}, t2);
   }
-  return removable_vertex(a, b, v[0], tol2);
+  return removable != 0;
 }
 
 }  // namespace dda::detail

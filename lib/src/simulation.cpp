@@ -10,7 +10,7 @@
 #include <omp.h>
 #endif
 
-#include "lanes.hpp"
+#include "block_lanes.hpp"
 
 // OpenMP worksharing inside the phase functions. They are "orphaned"
 // directives: called from run_steps' parallel region they split the work of
@@ -239,7 +239,6 @@ void Simulation::build_blocks() {
   // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
   bisector_offset_.assign(n, 0);
   sides_.assign(n, BlockSide{});
-  plain_bisectors_.assign(n, 0);
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
     bisector_offset_[i] = total;
@@ -338,23 +337,6 @@ bool pair_before(const P& x, const P& y) {
 
 bool inside(const Aabb& b, const Aabb& grown) {
   return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
-}
-
-// A Vec6 as three lane pairs (g0, g1), (g2, g3), (g4, g5).
-struct Lanes6 {
-  detail::Lanes g01, g23, g45;
-};
-
-// point_load(c, p, f) lane by lane: with t = (xt, yt), P = (yt, xt) * f and
-// Q = t * f, T(p)^T f = (f, (P1 - P0, Q0), (Q1, 0.5 (P0 + P1))), each
-// element point_load's operations (-yt fx + xt fy is xt fy - yt fx exactly).
-Lanes6 point_load_lanes(detail::Lanes c, Vec2 p, Vec2 f) {
-  using detail::Lanes;
-  const Lanes t = detail::lanes(p) - c, fl = detail::lanes(f);
-  const Lanes pl = detail::swapped(t) * fl, q = t * fl;
-  const Lanes ps = detail::swapped(pl);
-  const Lanes d = ps - pl, h = Lanes{0.5, 0.5} * (pl + ps);
-  return {fl, detail::low_lanes(d, q), Lanes{q[1], h[0]}};
 }
 
 }  // namespace
@@ -471,13 +453,15 @@ void Simulation::update_block_geometry(int i) {
   sides_[i].tol = geometric_tolerance(g.box);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
-    // from step to step: rebuilt only when a small edge comes or goes.
+    // from step to step: rebuilt only when a small edge comes or goes. The
+    // stored list is the vertex rays exactly when it has one ray per vertex
+    // (a virtual node adds a ray, or replaces two by one), 0 before the first.
     const double small = scene_.contact.small_edge_fraction * h_[i];
     const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
-    if (!(plain && plain_bisectors_[i]))
-      sides_[i].side.bisector_count =
+    PotentialSide& side = sides_[i].side;
+    if (!(plain && side.bisector_count == poly_[i].count))
+      side.bisector_count =
           bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
-    plain_bisectors_[i] = plain ? 1 : 0;
   }
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
@@ -693,14 +677,14 @@ void Simulation::gather_contact_forces(int i) {
   const detail::Lanes c = detail::lanes(moments_[i].centroid);
   const bool free_block = !fixed_[i];
   Vec6& force = force_[i];
-  Lanes6 sum{{force[0], force[1]}, {force[2], force[3]}, {force[4], force[5]}};
+  detail::Lanes6 sum{{force[0], force[1]}, {force[2], force[3]}, {force[4], force[5]}};
   for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
     const BlockPair& bp = pairs[q];
     const PairLoad& load = loads[bp.pair];
     if (!load.candidate) continue;
     reach = std::min(reach, radius[bp.other]);
     if (!load.active || !free_block) continue;
-    const Lanes6 g = point_load_lanes(c, load.point, load.force);
+    const detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     if (bp.first) {
       sum.g01 += g.g01;
       sum.g23 += g.g23;
@@ -760,21 +744,6 @@ void Simulation::kick() {
     if (!fixed_[i]) kick_block(i);
 }
 
-namespace {
-
-// point_displacement lane by lane: with t = (xt, yt), the displacement is
-// (d0, d1) + (-yt, xt) d2 + t (d3, d4) + (0.5 (yt, xt)) d5, each element
-// point_displacement's operations in its order (d0 - yt d2 is d0 + (-yt) d2
-// exactly).
-detail::Lanes point_displacement_lanes(Vec2 centroid, Vec2 p, const Vec6& d) {
-  using detail::Lanes;
-  const Lanes t = detail::lanes(p) - detail::lanes(centroid), ts = detail::swapped(t);
-  return Lanes{d[0], d[1]} + ts * Lanes{-1.0, 1.0} * Lanes{d[2], d[2]} + t * Lanes{d[3], d[4]} +
-         Lanes{0.5, 0.5} * ts * Lanes{d[5], d[5]};
-}
-
-}  // namespace
-
 // Inlined into the pair loop (its only caller): a call frame of its own
 // costs about as much as the bookkeeping it does.
 [[gnu::always_inline]] inline bool Simulation::pair_force(long k, bool was_active, const Polygon& ip,
@@ -805,11 +774,12 @@ detail::Lanes point_displacement_lanes(Vec2 centroid, Vec2 p, const Vec6& d) {
       // it was returned to (below). The centroids are those of the step's
       // start configuration.
       using detail::Lanes;
-      const Lanes du_cp =
-          fixed_[cp] ? Lanes{0.0, 0.0} : point_displacement_lanes(start_centroid_[cp], hist.point, step_disp_[cp]);
-      const Lanes du_tp =
-          fixed_[tp] ? Lanes{0.0, 0.0} : point_displacement_lanes(start_centroid_[tp], hist.point, step_disp_[tp]);
-      const Lanes dd = du_cp - du_tp;
+      const Lanes pg = detail::lanes(hist.point);
+      const auto du = [&](int b) {
+        return fixed_[b] ? Lanes{0.0, 0.0}
+                         : detail::point_displacement_lanes(detail::lanes(start_centroid_[b]), pg, step_disp_[b]);
+      };
+      const Lanes dd = du(cp) - du(tp);
       const bool restart = c.friction_update == FrictionUpdate::kPaper;
       hist.d = detail::vec2(hist.sliding && restart ? dd : detail::lanes(hist.d) + dd);
     } else {

@@ -19,6 +19,27 @@ Polygon hexagon(Vec2 c, double r, double phase) {
   return make_polygon(p, 6);
 }
 
+// A small deterministic generator for the randomised tests.
+struct Lcg {
+  std::uint64_t state;
+  double uniform(double lo, double hi) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  }
+};
+
+// A random convex polygon of 3 to 8 vertices around c, radius 0.5 r to r.
+Polygon random_convex(Lcg& rng, Vec2 c, double r) {
+  const int n = 3 + static_cast<int>(rng.uniform(0.0, 6.0));
+  Vec2 p[9];
+  double a = rng.uniform(0.0, 6.3);
+  for (int k = 0; k < n; ++k) {
+    p[k] = c + rng.uniform(0.5, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
+    a += 2.0 * M_PI / n * rng.uniform(0.6, 1.0);
+  }
+  return make_polygon(p, n);
+}
+
 NormalForce force(const Polygon& cp, const Polygon& tp, Integration rule, double h = 1.0) {
   const PotentialSide a{&cp, 1e7 / h, 0.05 * h}, b{&tp, 1e7 / h, 0.05 * h};
   const Polygon ip = intersection_polygon(cp, tp);
@@ -124,21 +145,9 @@ TEST_CASE("edge sources from the fused overlap call change the force only by rou
   // to zero, not evaluated: on random overlapping pairs (shallow and deep,
   // near-parallel faces included) force, loading point and segment count
   // match the plain call to round-off of the force scale.
-  std::uint64_t state = 12345;
-  auto uniform = [&state](double lo, double hi) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
-  };
-  auto random_polygon = [&](Vec2 c, double r) {
-    const int n = 3 + static_cast<int>(uniform(0.0, 6.0));
-    Vec2 p[9];
-    double a = uniform(0.0, 6.3);
-    for (int k = 0; k < n; ++k) {
-      p[k] = c + uniform(0.5, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
-      a += 2.0 * M_PI / n * uniform(0.6, 1.0);
-    }
-    return make_polygon(p, n);
-  };
+  Lcg rng{12345};
+  auto uniform = [&rng](double lo, double hi) { return rng.uniform(lo, hi); };
+  auto random_polygon = [&rng](Vec2 c, double r) { return random_convex(rng, c, r); };
   // Stacked parallelograms (joint faces): TP sunk by up to 1e-3 into CP's
   // top face, turned by up to 1e-3 rad, shifted along it.
   auto stacked = [&](Polygon& cp, Polygon& tp) {
@@ -174,4 +183,59 @@ TEST_CASE("edge sources from the fused overlap call change the force only by rou
     }
   }
   CHECK(compared > 1500);
+}
+
+TEST_CASE("vertex rays: the paired crossing test gives the general one's bits", "[contact]") {
+  // With no small edge, bisectors() gives exactly the n vertex rays (lines
+  // i - 1 and i, d0 = 0), and the force kernel tests them two at a time;
+  // any other ray count takes the general per-ray test. The same rays with
+  // one repeated (a repeated crossing adds no segment) must give the same
+  // force, point and segments to the bit. Also: bisectors() gives n rays
+  // only as the vertex rays, in order, in both small-edge modes.
+  Lcg rng{777};
+  int compared = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Polygon cp = random_convex(rng, {0, 0}, 1.0);
+    const Polygon tp = random_convex(rng, {rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5)}, rng.uniform(0.3, 1.5));
+    if (!validate_polygon(cp.v.data(), cp.count).ok() || !validate_polygon(tp.v.data(), tp.count).ok()) continue;
+    for (const Polygon* p : {&cp, &tp})
+      for (SmallEdgeRays mode : {SmallEdgeRays::kVirtualAndVertex, SmallEdgeRays::kVirtualReplacesVertex}) {
+        BisectorSet set;
+        set.count = bisectors(*p, 0.3, mode, set.b.data());
+        if (set.count != p->count) continue;
+        for (int i = 0; i < p->count; ++i) {
+          CHECK(set.b[static_cast<std::size_t>(i)].line_a == p->prev(i));
+          CHECK(set.b[static_cast<std::size_t>(i)].line_b == i);
+          CHECK(set.b[static_cast<std::size_t>(i)].d0 == 0.0);
+        }
+      }
+    const double tol = pair_tolerance(cp, tp);
+    Polygon ip;
+    std::array<IpEdge, kMaxVertices> src;
+    if (overlap_and_intersection(cp, tp, tol, ip, src.data()) != OverlapState::kOverlapping || ip.count < 3) continue;
+    BisectorSet rays_cp, rays_tp;
+    rays_cp.count = bisectors(cp, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_cp.b.data());
+    rays_tp.count = bisectors(tp, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_tp.b.data());
+    REQUIRE(rays_cp.count == cp.count);
+    REQUIRE(rays_tp.count == tp.count);
+    const PotentialSide a{&cp, 1e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_cp.b.data(), rays_cp.count};
+    const PotentialSide b{&tp, 2e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_tp.b.data(), rays_tp.count};
+    // The same rays, the first one twice: n + 1 rays, the general test.
+    BisectorSet more_cp = rays_cp, more_tp = rays_tp;
+    more_cp.b[static_cast<std::size_t>(more_cp.count++)] = rays_cp.b[0];
+    more_tp.b[static_cast<std::size_t>(more_tp.count++)] = rays_tp.b[0];
+    const PotentialSide a1{&cp, 1e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, more_cp.b.data(), more_cp.count};
+    const PotentialSide b1{&tp, 2e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, more_tp.b.data(), more_tp.count};
+    for (const IpEdge* sources : {static_cast<const IpEdge*>(nullptr), static_cast<const IpEdge*>(src.data())}) {
+      const NormalForce paired = normal_contact_force(a, b, ip, Integration::kPaperBisector, tol, sources);
+      const NormalForce general = normal_contact_force(a1, b1, ip, Integration::kPaperBisector, tol, sources);
+      REQUIRE(paired.valid == general.valid);
+      if (!paired.valid) continue;
+      CHECK(paired.force == general.force);
+      CHECK(paired.point == general.point);
+      CHECK(paired.segments == general.segments);
+      ++compared;
+    }
+  }
+  CHECK(compared > 500);
 }

@@ -132,10 +132,11 @@ void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below,
                    double tol = -1.0);
 
 // The one clipping step shared by the cutting routines (intersection_polygon,
-// split_polygon, the potential's cells in potential_integral): keeps the part of the ring in[0..n) where
-// dist <= 0 (signed distances to a line, already snapped to 0 within the
-// caller's tolerance), in order, with the points where an edge crosses the
-// line. Writes at most kMaxVertices points to out; returns how many.
+// split_polygon, the potential's cells in potential_integral): keeps the
+// part of the ring in[0..n) where dist <= 0 (signed distances to a line,
+// already snapped to 0 within the caller's tolerance), in order, with the
+// points where an edge crosses the line. Writes at most kMaxVertices points
+// to out; returns how many.
 // Edge labels (optional): in_label[i] names the line edge i of the ring lies
 // on; out_label gets the same for the output ring, with line_label for the
 // new edge along the cutting line.

@@ -260,7 +260,6 @@ class Simulation {
     double tol = 0.0;  // geometric_tolerance of the block's box, m
   };
   std::vector<BlockSide> sides_;
-  std::vector<char> plain_bisectors_;  // 1: block i's bisectors are its vertex rays (no small edge)
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last
