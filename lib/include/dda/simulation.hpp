@@ -246,6 +246,14 @@ class Simulation {
   std::vector<long> pair_split_, split_scratch_;
   std::vector<double> work_scratch_;
   void split_pairs_evenly(int team);
+  // This thread's blocks [begin, end) in a per-block phase; prefetching
+  // (a team only) stops kPrefetchBlocks before the end of the share.
+  struct BlockShare {
+    int begin = 0, end = 0, prefetch_end = 0;
+  };
+  BlockShare block_share() const;
+  void prefetch_block(int i) const;
+  void prefetch_gather(int i) const;
   void balance_pair_split();
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
