@@ -11,6 +11,7 @@
 #endif
 
 #include "block_lanes.hpp"
+#include "team_barrier.hpp"
 
 // OpenMP worksharing inside the phase functions. They are "orphaned"
 // directives: called from run_steps' parallel region they split the work of
@@ -356,8 +357,9 @@ void Simulation::run_steps(std::int64_t count) {
   // block's and each pair's result is computed by one thread from the same
   // inputs, and each block sums its pair forces in pair order: the same
   // bits for any thread count. Three barriers per step (after the moves,
-  // the pair forces and the kicks), more only when the broad phase rebuilds
-  // or a guard is due. A guard's SimulationError cannot leave a parallel
+  // the pair forces and the kicks: the team barrier), more (OpenMP's, at
+  // the end of an `omp single`) only when the broad phase rebuilds or a
+  // guard is due. A guard's SimulationError cannot leave a parallel
   // region: it is caught where it is thrown, every thread stops after that
   // step, and it is rethrown here.
   if (count <= 0) return;
@@ -365,10 +367,15 @@ void Simulation::run_steps(std::int64_t count) {
   const std::int64_t first = steps_;
   const int every = scene_.guards.energy_check_every;
   std::exception_ptr error;
+  detail::TeamBarrier barrier;
+  barrier_ = &barrier;
   DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1))
   {
     DDA_OMP(omp single)
-    split_pairs_evenly(team_size());
+    {
+      split_pairs_evenly(team_size());
+      barrier.reset(team_size());
+    }  // implicit barrier: every thread sees the reset
     for (std::int64_t k = 0; k < count; ++k) {
       const std::int64_t done = first + k + 1;
       const bool energy_due = every > 0 && done % every == 0;
@@ -397,12 +404,18 @@ void Simulation::run_steps(std::int64_t count) {
       }
     }
   }
+  barrier_ = nullptr;
   if (error) std::rethrow_exception(error);
   steps_ = first + count;
   time_ = static_cast<double>(steps_) * dt_;
   collect_contacts();
 }
 
+
+void Simulation::team_barrier() {
+  // Every thread of a team waits here for the others (a no-op alone).
+  if (team_size() > 1) barrier_->wait();
+}
 
 void Simulation::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
@@ -427,7 +440,7 @@ void Simulation::move_blocks() {
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   }
   flags_[static_cast<std::size_t>(thread_index())].left_skin = left_skin;
-  DDA_OMP(omp barrier)
+  team_barrier();
 }
 
 Simulation::BlockShare Simulation::block_share() const {
@@ -682,7 +695,7 @@ void Simulation::pair_forces(bool with_energy) {
     }
   }
   if (team > 1) flags_[static_cast<std::size_t>(t)].pair_work = static_cast<double>(work);
-  DDA_OMP(omp barrier)
+  team_barrier();
 }
 
 void Simulation::split_pairs_evenly(int team) {
@@ -780,7 +793,7 @@ void Simulation::gather_and_kick() {
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   }
   flags_[static_cast<std::size_t>(thread_index())].guard_failed = failed;
-  DDA_OMP(omp barrier)
+  team_barrier();
 }
 
 void Simulation::kick_block(int i) {

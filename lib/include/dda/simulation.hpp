@@ -15,6 +15,10 @@
 
 namespace dda {
 
+namespace detail {
+class TeamBarrier;
+}
+
 // A scene that cannot be simulated; what() names the field and the reason,
 // e.g. "blocks[2].vertices[1]: clockwise vertex order".
 struct SceneError : std::runtime_error {
@@ -239,6 +243,9 @@ class Simulation {
     double pair_work = 0.0;     // estimated cost of this thread's share of the pair loop (relative)
   };
   std::vector<ThreadFlags> flags_;
+  // The team's barrier during run_steps (null outside it).
+  detail::TeamBarrier* barrier_ = nullptr;
+  void team_barrier();
   // The pair loop's shares: thread t takes near pairs [pair_split_[t],
   // pair_split_[t + 1]), contiguous (a thread's pairs mostly involve the
   // blocks it moves: fewer polygons travel between cores) and moved every
