@@ -28,6 +28,7 @@
 //          warm-up gravity's compression wave reaches only the lower ~50 m, so
 //          a tall column's upper blocks are still falling without contact.
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
@@ -237,6 +238,34 @@ std::string load_note() {
   return buf;
 }
 
+// The mean round trip of a cache line between two threads (ns), as the
+// two cores the OS gives them see it: one thread stores a number, the other
+// answers with the next, kPingPongRounds times. A team's barriers and
+// every polygon or load that one core writes and the other reads pay this
+// latency, so the 2-thread speed-up follows it (on a virtual machine it can
+// change from one minute to the next with the host's placement of the vCPUs).
+constexpr int kPingPongRounds = 20000;  // ~10 ms at ~0.5 us per round trip
+
+double core_round_trip_ns() {
+  alignas(64) std::atomic<int> ball{0};
+  std::thread partner([&ball] {
+    for (int r = 0; r < kPingPongRounds; ++r) {
+      while (ball.load(std::memory_order_acquire) != 2 * r + 1) {
+      }
+      ball.store(2 * r + 2, std::memory_order_release);
+    }
+  });
+  const Clock::time_point t0 = Clock::now();
+  for (int r = 0; r < kPingPongRounds; ++r) {
+    ball.store(2 * r + 1, std::memory_order_release);
+    while (ball.load(std::memory_order_acquire) != 2 * r + 2) {
+    }
+  }
+  const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+  partner.join();
+  return s / kPingPongRounds * 1e9;
+}
+
 const char* openmp_note() {
 #if defined(_OPENMP)
   return "OpenMP build";
@@ -257,7 +286,9 @@ int run_collapse(const Options& o) {
   std::printf("   warm-up %d steps, then %d timed steps (%.3g s simulated); %s, %u hardware threads, %s\n",
               o.warmup, o.steps, o.steps * s.dt, openmp_note(), std::thread::hardware_concurrency(),
               load_note().c_str());
+  const double trip_before = core_round_trip_ns();
   const ThreadRuns t = run_thread_counts(s, o.warmup, o.steps);
+  const double trip_after = core_round_trip_ns();
   std::printf("%8s %9s %9s %9s %11s %11s %9s %9s %12s\n", "threads", "wall s", "cpu/wall", "steps/s", "cand/step",
               "touch/step", "ns/cand", "ns/touch", "75k steps s");
   for (const RunStats& r : t.runs)
@@ -267,6 +298,9 @@ int run_collapse(const Options& o) {
                 r.wall_s / static_cast<double>(r.steps) * static_cast<double>(kFullRunSteps));
   std::printf("   speed-up 2 vs 1 thread: %.2fx; final state 1 vs 2 threads bit-identical: %s\n",
               t.runs[0].wall_s / t.runs[1].wall_s, t.same ? "yes" : "NO");
+  std::printf("   core-to-core round trip of a cache line: %.0f ns before, %.0f ns after the runs (the 2-thread\n"
+              "   speed-up falls as it grows: barriers and the polygons and loads shared by the two cores pay it)\n",
+              trip_before, trip_after);
   std::printf("   75k steps s: projected wall time of the full 7.5 s run (75,000 steps) at this run's mean cost per step\n");
   std::printf("   ns/cand, ns/touch: wall / steps / mean pairs (the whole step shared out over its pairs)\n");
   return t.same ? 0 : 1;
