@@ -1,6 +1,7 @@
 #include "dda/simulation.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <exception>
@@ -48,6 +49,21 @@ constexpr long kWorkOther = 1;
 // than the work of one block (~60 ns) or pair (~130 ns). One core alone
 // needs no hint (the data stays in its own cache).
 constexpr int kPrefetchBlocks = 2;
+
+// Weight of the latest step in the smoothed per-core speeds that size the
+// team's shares (dimensionless; ~20 steps of memory): slow enough that one
+// step hit by an interrupt does not move the split, fast enough to follow
+// the pile and the host.
+constexpr double kSpeedSmoothing = 0.05;
+
+using PhaseClock = std::chrono::steady_clock;
+
+double seconds_since(PhaseClock::time_point t0) {
+  return std::chrono::duration<double>(PhaseClock::now() - t0).count();
+}
+
+// x smoothed towards the latest measurement (the first one taken as is).
+double smoothed(double x, double latest) { return x > 0.0 ? x + kSpeedSmoothing * (latest - x) : latest; }
 constexpr long kPrefetchPairs = 4;
 
 std::string field(const char* name, std::size_t i) {
@@ -424,6 +440,8 @@ void Simulation::move_blocks() {
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
   const BlockShare share = block_share();
+  const bool team = team_size() > 1;
+  const PhaseClock::time_point t0 = team ? PhaseClock::now() : PhaseClock::time_point{};
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch_block(i + kPrefetchBlocks);
     if (fixed_[i]) continue;
@@ -439,18 +457,24 @@ void Simulation::move_blocks() {
     body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   }
-  flags_[static_cast<std::size_t>(thread_index())].left_skin = left_skin;
+  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  mine.left_skin = left_skin;
+  if (team) mine.block_seconds = seconds_since(t0);
   team_barrier();
 }
 
 Simulation::BlockShare Simulation::block_share() const {
   // This thread's contiguous share of the blocks (all of them outside a
   // team); which thread moves or kicks a block changes only the time.
-  const long nb = block_count(), team = team_size(), t = thread_index();
+  const int team = team_size(), t = thread_index();
   BlockShare s;
-  s.begin = static_cast<int>(nb * t / team);
-  s.end = static_cast<int>(nb * (t + 1) / team);
-  s.prefetch_end = team > 1 ? s.end - kPrefetchBlocks : s.begin;
+  if (team < 2) {
+    s.end = block_count();
+    return s;
+  }
+  s.begin = block_split_[static_cast<std::size_t>(t)];
+  s.end = block_split_[static_cast<std::size_t>(t) + 1];
+  s.prefetch_end = s.end - kPrefetchBlocks;
   return s;
 }
 
@@ -658,6 +682,8 @@ void Simulation::pair_forces(bool with_energy) {
   Polygon ip;
   std::array<IpEdge, kMaxVertices> source;
   long work = 0;
+  const PhaseClock::time_point t0 = team > 1 ? PhaseClock::now() : PhaseClock::time_point{};
+  if (team > 1 && t == 0) balance_block_split();
   const long prefetch_end = team > 1 ? end - kPrefetchPairs : begin;
   for (long k = begin; k < end; ++k) {
     if (k < prefetch_end) {
@@ -694,7 +720,13 @@ void Simulation::pair_forces(bool with_energy) {
       pair_results_[static_cast<std::size_t>(k)].energy = contact_energy(sides[p.i].side, sides[p.j].side, ip, tol);
     }
   }
-  if (team > 1) flags_[static_cast<std::size_t>(t)].pair_work = static_cast<double>(work);
+  if (team > 1) {
+    // The share's cost for the next split: its estimated work at this
+    // core's measured speed.
+    ThreadFlags& mine = flags_[static_cast<std::size_t>(t)];
+    if (work > 0) mine.seconds_per_work = smoothed(mine.seconds_per_work, seconds_since(t0) / static_cast<double>(work));
+    mine.pair_work = static_cast<double>(work) * (mine.seconds_per_work > 0.0 ? mine.seconds_per_work : 1.0);
+  }
   team_barrier();
 }
 
@@ -703,8 +735,29 @@ void Simulation::split_pairs_evenly(int team) {
   const long n = static_cast<long>(near_pairs_.size());
   pair_split_.resize(static_cast<std::size_t>(team) + 1);
   for (int t = 0; t <= team; ++t) pair_split_[static_cast<std::size_t>(t)] = n * t / team;
+  block_split_.resize(static_cast<std::size_t>(team) + 1);
+  for (int t = 0; t <= team; ++t) block_split_[static_cast<std::size_t>(t)] = block_count() * t / team;
   split_scratch_.resize(pair_split_.size());
   work_scratch_.resize(pair_split_.size());
+}
+
+void Simulation::balance_block_split() {
+  // Shares of the blocks in proportion to each core's measured speed
+  // (blocks per second in the per-block phases), so that the phases end
+  // together. Kept as they are until every core has a measurement.
+  const int team = static_cast<int>(block_split_.size()) - 1;
+  double speed_sum = 0.0;
+  for (int t = 0; t < team; ++t) {
+    const double c = flags_[static_cast<std::size_t>(t)].seconds_per_block;
+    if (!(c > 0.0)) return;
+    speed_sum += 1.0 / c;
+  }
+  double before = 0.0;
+  for (int t = 1; t < team; ++t) {
+    before += 1.0 / flags_[static_cast<std::size_t>(t) - 1].seconds_per_block;
+    const int b = static_cast<int>(std::llround(block_count() * before / speed_sum));
+    block_split_[static_cast<std::size_t>(t)] = std::clamp(b, block_split_[static_cast<std::size_t>(t) - 1], block_count());
+  }
 }
 
 void Simulation::balance_pair_split() {
@@ -785,6 +838,8 @@ void Simulation::gather_and_kick() {
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
   const BlockShare share = block_share();
+  const bool team = team_size() > 1;
+  const PhaseClock::time_point t0 = team ? PhaseClock::now() : PhaseClock::time_point{};
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch_gather(i + kPrefetchBlocks);
     gather_contact_forces(i);
@@ -792,7 +847,11 @@ void Simulation::gather_and_kick() {
     kick_block(i);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   }
-  flags_[static_cast<std::size_t>(thread_index())].guard_failed = failed;
+  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  mine.guard_failed = failed;
+  if (team && share.end > share.begin)
+    mine.seconds_per_block =
+        smoothed(mine.seconds_per_block, (mine.block_seconds + seconds_since(t0)) / (share.end - share.begin));
   team_barrier();
 }
 

@@ -241,6 +241,13 @@ class Simulation {
     bool left_skin = false;     // a block of this thread's share left its grown box
     bool guard_failed = false;  // a block of this thread's share failed a per-block guard
     double pair_work = 0.0;     // estimated cost of this thread's share of the pair loop (relative)
+    // Measured on this thread's core (team runs; only the shares, never the
+    // results, depend on them): seconds per unit of estimated pair work and
+    // per block of its share (move and kick), smoothed over steps; this
+    // step's block-phase seconds so far.
+    double seconds_per_work = 0.0;
+    double seconds_per_block = 0.0;
+    double block_seconds = 0.0;
   };
   std::vector<ThreadFlags> flags_;
   // The team's barrier during run_steps (null outside it).
@@ -252,7 +259,13 @@ class Simulation {
   // step so that the shares' estimated work is even (balance_pair_split).
   std::vector<long> pair_split_, split_scratch_;
   std::vector<double> work_scratch_;
+  // The per-block phases' shares: thread t moves and kicks blocks
+  // [block_split_[t], block_split_[t + 1]), sized by each core's measured
+  // time per block (balance_block_split, in the pair phase, when no thread
+  // reads them).
+  std::vector<int> block_split_;
   void split_pairs_evenly(int team);
+  void balance_block_split();
   // This thread's blocks [begin, end) in a per-block phase; prefetching
   // (a team only) stops kPrefetchBlocks before the end of the share.
   struct BlockShare {
