@@ -761,9 +761,9 @@ void Simulation::balance_block_split() {
 }
 
 void Simulation::balance_pair_split() {
-  // The work estimated per share in the last pair loop, taken as spread
-  // evenly over each share's pairs; the new boundaries cut that estimate
-  // into equal parts (by linear interpolation inside the shares). Pairs
+  // The cost of each share in the last pair loop (its estimated work at
+  // its core's measured speed, pair_work), taken as spread evenly over the
+  // share's pairs; the new boundaries cut that cost into equal parts (by linear interpolation inside the shares). Pairs
   // change slowly from step to step, so this follows the pile as it moves.
   // Results do not depend on the split: only the time.
   const int team = static_cast<int>(pair_split_.size()) - 1;

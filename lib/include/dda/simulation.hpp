@@ -256,7 +256,8 @@ class Simulation {
   // The pair loop's shares: thread t takes near pairs [pair_split_[t],
   // pair_split_[t + 1]), contiguous (a thread's pairs mostly involve the
   // blocks it moves: fewer polygons travel between cores) and moved every
-  // step so that the shares' estimated work is even (balance_pair_split).
+  // step so that the shares' cost (estimated work at each core's measured
+  // speed) is even (balance_pair_split).
   std::vector<long> pair_split_, split_scratch_;
   std::vector<double> work_scratch_;
   // The per-block phases' shares: thread t moves and kicks blocks
