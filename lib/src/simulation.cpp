@@ -1002,8 +1002,10 @@ void Simulation::check_state(bool energy_due) {
   // The first block that fails a per-block guard, with the reason.
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
-    std::ostringstream s;
-    switch (guard_fault(i)) {
+    const GuardFault fault = guard_fault(i);
+    if (fault == GuardFault::kNone) continue;
+    std::ostringstream s;  // built only for the message
+    switch (fault) {
       case GuardFault::kNone: continue;
       case GuardFault::kNonFinite: stop(i, "non-finite velocity or position");
       case GuardFault::kAreaCollapsed: s << "area collapsed to " << moments_[i].area << " m^2"; break;
