@@ -7,7 +7,8 @@ Default: the block system at 2.5, 5.0 and 7.5 s (rows) for case 1 (joint
 friction 15 deg) and case 2 (30 deg) (columns), blocks coloured by speed on
 one colour scale, as the paper's panels a-f (times beyond a shortened run are
 left out). --runout: front position, mean centroid drop and runout mass
-versus time for both cases.
+versus time for both cases, with crosses at the end for the reruns with the
+blocks renumbered (renumbered.csv: the spread a round-off-level change gives).
 """
 import os
 import sys
@@ -28,11 +29,23 @@ cases = [("case1", "case 1: joint friction 15 deg"), ("case2", "case 2: joint fr
 
 def runout_figure():
     fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(13, 4))
-    for c, label in cases:
+    renumbered_path = os.path.join(data, "renumbered.csv")
+    renumbered = read_csv(renumbered_path)[1] if os.path.exists(renumbered_path) else None
+    for k, (c, label) in enumerate(cases, start=1):
         _, s = read_csv(os.path.join(data, c, "series.csv"))
-        a1.plot(s["time"], s["front_x"], label=label)
+        line, = a1.plot(s["time"], s["front_x"], label=label)
         a2.plot(s["time"], s["mean_drop"], label=label)
         a3.plot(s["time"], 100.0 * s["runout_mass"], label=label)
+        if renumbered is not None:
+            # The same case rerun with its blocks numbered by centroid x and
+            # by centroid y: where a round-off-level change ends the run.
+            mine = renumbered["case"] == k
+            t_end = np.full(int(mine.sum()), s["time"][-1])
+            first = k == 1
+            a1.plot(t_end, renumbered["front_x_end"][mine], "x", color=line.get_color(), ms=7,
+                    label="end, blocks renumbered (x, y) and as generated" if first else None)
+            a2.plot(t_end, renumbered["mean_drop_end"][mine], "x", color=line.get_color(), ms=7)
+            a3.plot(t_end, 100.0 * renumbered["runout_mass_end"][mine], "x", color=line.get_color(), ms=7)
     for t in (2.5, 5.0, 7.5):
         for a in (a1, a2, a3):
             a.axvline(t, color="0.8", lw=0.8, ls=":")
