@@ -85,6 +85,39 @@ struct CaseResult {
   }
 };
 
+// The rock's start (centroids and total mass) and the geometric measures
+// of a state against it: front, mean drop, travel, runout mass (a Sample
+// without its energies).
+struct Start {
+  std::vector<dda::Vec2> c0;
+  double mass = 0.0;
+  explicit Start(const dda::Simulation& sim) {
+    for (int i = 0; i < sim.scene_block_count(); ++i) {
+      c0.push_back(sim.centroid(i));
+      mass += sim.mass(i);
+    }
+  }
+  Sample measure(const dda::Simulation& sim, double column_width) const {
+    Sample s;
+    s.t = sim.time();
+    s.front_x = -1e300;
+    s.front_cx = -1e300;
+    double drop = 0.0, out = 0.0;
+    for (int i = 0; i < sim.scene_block_count(); ++i) {
+      const dda::Polygon& p = sim.polygon(i);
+      for (int v = 0; v < p.count; ++v) s.front_x = std::max(s.front_x, p.vertex(v).x);
+      const dda::Vec2 c = sim.centroid(i), start = c0[static_cast<std::size_t>(i)];
+      s.front_cx = std::max(s.front_cx, c.x);
+      drop += sim.mass(i) * (start.y - c.y);
+      s.max_travel = std::max(s.max_travel, dda::length(c - start));
+      if (c.x > column_width) out += sim.mass(i);
+    }
+    s.mean_drop = drop / mass;
+    s.runout_mass = out / mass;
+    return s;
+  }
+};
+
 // The end state of a rerun with the blocks numbered in another order.
 struct Renumbered {
   int index = 0;
@@ -106,13 +139,7 @@ Renumbered rerun_renumbered(int k, double friction, double duration, int threads
                    [&](const dda::BlockSpec& a, const dda::BlockSpec& b) { return centroid(a) < centroid(b); });
   dda::Simulation sim(col.scene);
   sim.set_threads(threads);
-  const int n = sim.scene_block_count();
-  std::vector<dda::Vec2> c0(static_cast<std::size_t>(n));
-  double mass = 0.0;
-  for (int i = 0; i < n; ++i) {
-    c0[static_cast<std::size_t>(i)] = sim.centroid(i);
-    mass += sim.mass(i);
-  }
+  const Start start(sim);
   const repro::Progress progress("6.1 collapse case " + std::to_string(k) + ", blocks numbered by " +
                                  (axis == 0 ? "x" : "y"));
   const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
@@ -121,20 +148,8 @@ Renumbered rerun_renumbered(int k, double friction, double duration, int threads
     sim.advance(std::min(chunk, steps - s));
     progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s");
   }
-  Renumbered r;
-  r.index = k;
-  r.order = axis == 0 ? "x" : "y";
-  r.front_x = -1e300;
-  double out = 0.0, drop = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const dda::Polygon& p = sim.polygon(i);
-    for (int v = 0; v < p.count; ++v) r.front_x = std::max(r.front_x, p.vertex(v).x);
-    const dda::Vec2 c = sim.centroid(i);
-    if (c.x > col.width) out += sim.mass(i);
-    drop += sim.mass(i) * (c0[static_cast<std::size_t>(i)].y - c.y);
-  }
-  r.runout_mass = out / mass;
-  r.mean_drop = drop / mass;
+  const Sample end = start.measure(sim, col.width);
+  const Renumbered r{k, axis == 0 ? "x" : "y", end.front_x, end.runout_mass, end.mean_drop};
   progress("done: front " + format_short(r.front_x, 4) + " m");
   return r;
 }
@@ -166,12 +181,7 @@ CaseResult run_case(int k, double friction, double duration, int threads, const 
            " m, dt/dt_crit = " + format_short(r.dt_ratio0, 3) + " at start, " + std::to_string(threads) +
            " thread(s)");
 
-  std::vector<dda::Vec2> c0(static_cast<std::size_t>(n));
-  double mass = 0.0;
-  for (int i = 0; i < n; ++i) {
-    c0[static_cast<std::size_t>(i)] = sim.centroid(i);
-    mass += sim.mass(i);
-  }
+  const Start start(sim);
   const std::string cdir = dir + "/case" + std::to_string(k);
   const std::string note = "Paper A Sect. 6.1, geometry reconstructed (Fig. 19 lost); joint friction " +
                            format_short(friction, 3) + " deg, boundary 35 deg";
@@ -184,22 +194,7 @@ CaseResult run_case(int k, double friction, double duration, int threads, const 
                           {"time", "block", "cx", "cy", "vx", "vy", "speed", "dx", "dy", "rotation"}, {note});
 
   auto sample = [&] {
-    Sample s;
-    s.t = sim.time();
-    s.front_x = -1e300;
-    s.front_cx = -1e300;
-    double drop = 0.0, out = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const dda::Polygon& p = sim.polygon(i);
-      for (int v = 0; v < p.count; ++v) s.front_x = std::max(s.front_x, p.vertex(v).x);
-      const dda::Vec2 c = sim.centroid(i);
-      s.front_cx = std::max(s.front_cx, c.x);
-      drop += sim.mass(i) * (c0[static_cast<std::size_t>(i)].y - c.y);
-      s.max_travel = std::max(s.max_travel, dda::length(c - c0[static_cast<std::size_t>(i)]));
-      if (c.x > col.width) out += sim.mass(i);
-    }
-    s.mean_drop = drop / mass;
-    s.runout_mass = out / mass;
+    Sample s = start.measure(sim, col.width);
     const dda::Energy e = sim.energy();
     s.kinetic = e.kinetic;
     s.gravity = e.gravity;
