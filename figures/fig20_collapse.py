@@ -55,7 +55,7 @@ def runout_figure():
     for a in (a1, a2, a3):
         a.set_xlabel("time (s)")
         a.grid(alpha=0.3)
-    a1.legend()
+    a1.legend(loc="upper left", fontsize=8)
     fig.suptitle("Sect. 6.1 collapse (reconstructed geometry): front, mean drop and runout mass", fontsize=10)
     fig.tight_layout()
     save_atomic(fig, out_png)
