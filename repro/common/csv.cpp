@@ -87,16 +87,23 @@ void CsvWriter::row(const std::vector<double>& values) {
     throw std::invalid_argument("CsvWriter(" + path_ + "): row " + std::to_string(rows_ + 1) + " has " +
                                 std::to_string(values.size()) + " values, header has " +
                                 std::to_string(header_.size()));
-  std::vector<std::string> fields;
-  fields.reserve(values.size());
+  // Numbers need no quoting: each is written with to_chars straight into
+  // one reused line (the drivers write thousands of rows per frame).
+  line_.clear();
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!std::isfinite(values[i]))
       throw std::invalid_argument("CsvWriter(" + path_ + "): non-finite value " + format_full(values[i]) +
                                   " in column '" + header_[i] + "' (data row " + std::to_string(rows_ + 1) +
                                   ")");
-    fields.push_back(format_full(values[i]));
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof buf, values[i]);
+    if (res.ec != std::errc()) throw std::runtime_error("CsvWriter: to_chars failed");
+    if (i) line_ += ',';
+    line_.append(buf, res.ptr);
   }
-  write_fields(fields);
+  line_ += '\n';
+  if (std::fwrite(line_.data(), 1, line_.size(), file_) != line_.size())
+    throw std::runtime_error("CsvWriter: write error on " + tmp_);
   ++rows_;
 }
 

@@ -48,6 +48,7 @@ class CsvWriter {
   std::FILE* file_ = nullptr;
   std::size_t rows_ = 0;
   bool committed_ = false;
+  std::string line_;  // a numeric row's text, reused from row to row
 };
 
 // Quotes a CSV field if it contains a comma, quote, CR or LF.
