@@ -49,6 +49,7 @@ constexpr long kWorkOther = 1;
 // than the work of one block (~60 ns) or pair (~130 ns). One core alone
 // needs no hint (the data stays in its own cache).
 constexpr int kPrefetchBlocks = 2;
+constexpr long kPrefetchPairs = 4;
 
 // Weight of the latest step in the smoothed per-core speeds that size the
 // team's shares (dimensionless; ~20 steps of memory): slow enough that one
@@ -64,7 +65,19 @@ double seconds_since(PhaseClock::time_point t0) {
 
 // x smoothed towards the latest measurement (the first one taken as is).
 double smoothed(double x, double latest) { return x > 0.0 ? x + kSpeedSmoothing * (latest - x) : latest; }
-constexpr long kPrefetchPairs = 4;
+
+// The lines a pair's contact or a block's move reads of a polygon: its
+// first vertices and normals (a block has 3-5 of each). kWrite: the caller
+// is about to write them.
+template <int kWrite>
+void prefetch_polygon(const Polygon& p) {
+  const char* v = reinterpret_cast<const char*>(p.v.data());
+  const char* n = reinterpret_cast<const char*>(p.n.data());
+  __builtin_prefetch(v, kWrite);
+  __builtin_prefetch(v + 64, kWrite);
+  __builtin_prefetch(n, kWrite);
+  __builtin_prefetch(n + 64, kWrite);
+}
 
 std::string field(const char* name, std::size_t i) {
   std::ostringstream s;
@@ -440,8 +453,7 @@ void Simulation::move_blocks() {
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
   const BlockShare share = block_share();
-  const bool team = team_size() > 1;
-  const PhaseClock::time_point t0 = team ? PhaseClock::now() : PhaseClock::time_point{};
+  const PhaseClock::time_point t0 = share.team ? PhaseClock::now() : PhaseClock::time_point{};
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch_block(i + kPrefetchBlocks);
     if (fixed_[i]) continue;
@@ -459,7 +471,7 @@ void Simulation::move_blocks() {
   }
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   mine.left_skin = left_skin;
-  if (team) mine.block_seconds = seconds_since(t0);
+  if (share.team) mine.block_seconds = seconds_since(t0);
   team_barrier();
 }
 
@@ -472,6 +484,7 @@ Simulation::BlockShare Simulation::block_share() const {
     s.end = block_count();
     return s;
   }
+  s.team = true;
   s.begin = block_split_[static_cast<std::size_t>(t)];
   s.end = block_split_[static_cast<std::size_t>(t) + 1];
   s.prefetch_end = s.end - kPrefetchBlocks;
@@ -481,12 +494,7 @@ Simulation::BlockShare Simulation::block_share() const {
 void Simulation::prefetch_block(int i) const {
   // What moving block i reads and writes, for writing where it is written
   // (the other core may hold a copy from the pair loop).
-  const char* v = reinterpret_cast<const char*>(poly_[i].v.data());
-  const char* n = reinterpret_cast<const char*>(poly_[i].n.data());
-  __builtin_prefetch(v, 1);
-  __builtin_prefetch(v + 64, 1);
-  __builtin_prefetch(n, 1);
-  __builtin_prefetch(n + 64, 1);
+  prefetch_polygon<1>(poly_[i]);
   __builtin_prefetch(&vel_[i], 1);
   __builtin_prefetch(&acc_[i]);
   __builtin_prefetch(&moments_[i], 1);
@@ -689,10 +697,7 @@ void Simulation::pair_forces(bool with_energy) {
     if (k < prefetch_end) {
       // The second block of a pair ahead (the first is mostly this pair's).
       const int j = near[k + kPrefetchPairs].j;
-      const char* v = reinterpret_cast<const char*>(poly[j].v.data());
-      __builtin_prefetch(v);
-      __builtin_prefetch(v + 64);
-      __builtin_prefetch(poly[j].n.data());
+      prefetch_polygon<0>(poly[j]);
       __builtin_prefetch(&boxes[j]);
       __builtin_prefetch(&sides[j]);
     }
@@ -763,9 +768,10 @@ void Simulation::balance_block_split() {
 void Simulation::balance_pair_split() {
   // The cost of each share in the last pair loop (its estimated work at
   // its core's measured speed, pair_work), taken as spread evenly over the
-  // share's pairs; the new boundaries cut that cost into equal parts (by linear interpolation inside the shares). Pairs
-  // change slowly from step to step, so this follows the pile as it moves.
-  // Results do not depend on the split: only the time.
+  // share's pairs; the new boundaries cut that cost into equal parts (by
+  // linear interpolation inside the shares). Pairs change slowly from step
+  // to step, so this follows the pile as it moves. Results do not depend
+  // on the split: only the time.
   const int team = static_cast<int>(pair_split_.size()) - 1;
   if (team < 2) return;
   std::vector<double>& cum = work_scratch_;
@@ -838,8 +844,7 @@ void Simulation::gather_and_kick() {
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
   const BlockShare share = block_share();
-  const bool team = team_size() > 1;
-  const PhaseClock::time_point t0 = team ? PhaseClock::now() : PhaseClock::time_point{};
+  const PhaseClock::time_point t0 = share.team ? PhaseClock::now() : PhaseClock::time_point{};
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch_gather(i + kPrefetchBlocks);
     gather_contact_forces(i);
@@ -849,7 +854,7 @@ void Simulation::gather_and_kick() {
   }
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   mine.guard_failed = failed;
-  if (team && share.end > share.begin)
+  if (share.team && share.end > share.begin)
     mine.seconds_per_block =
         smoothed(mine.seconds_per_block, (mine.block_seconds + seconds_since(t0)) / (share.end - share.begin));
   team_barrier();

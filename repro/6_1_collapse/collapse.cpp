@@ -118,17 +118,15 @@ struct Start {
   }
 };
 
-// The end state of a rerun with the blocks numbered in another order.
-struct Renumbered {
-  int index = 0;
-  std::string order;  // "generator", "x" or "y"
-  double front_x = 0.0, runout_mass = 0.0, mean_drop = 0.0;
-};
+// The block numberings of the round-off check: as generated, then by
+// increasing centroid x and y.
+const char* const kNumberings[] = {"generator", "x", "y"};
 
 // Case k rerun to `duration` with the rock blocks numbered by increasing
 // centroid coordinate `axis` (0: x, 1: y; stable, so ties keep the
-// generator's order): the same blocks, joints and boundaries.
-Renumbered rerun_renumbered(int k, double friction, double duration, int threads, int axis) {
+// generator's order): the same blocks, joints and boundaries. Returns the
+// end state's measures.
+Sample rerun_renumbered(int k, double friction, double duration, int threads, int axis) {
   dda::paper::Collapse col = dda::paper::collapse(friction, 0.5, duration);
   auto centroid = [axis](const dda::BlockSpec& b) {
     double sum = 0.0;
@@ -141,7 +139,7 @@ Renumbered rerun_renumbered(int k, double friction, double duration, int threads
   sim.set_threads(threads);
   const Start start(sim);
   const repro::Progress progress("6.1 collapse case " + std::to_string(k) + ", blocks numbered by " +
-                                 (axis == 0 ? "x" : "y"));
+                                 kNumberings[axis + 1]);
   const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
   const long long chunk = static_cast<long long>(std::llround(1.0 / sim.dt()));  // progress every simulated second
   for (long long s = 0; s < steps; s += chunk) {
@@ -149,9 +147,8 @@ Renumbered rerun_renumbered(int k, double friction, double duration, int threads
     progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s");
   }
   const Sample end = start.measure(sim, col.width);
-  const Renumbered r{k, axis == 0 ? "x" : "y", end.front_x, end.runout_mass, end.mean_drop};
-  progress("done: front " + format_short(r.front_x, 4) + " m");
-  return r;
+  progress("done: front " + format_short(end.front_x, 4) + " m");
+  return end;
 }
 
 std::string time_tag(double t) {
@@ -300,22 +297,28 @@ int main(int argc, char** argv) try {
   }
   summary.commit();
 
-  // Round-off sensitivity: both cases again with the blocks renumbered.
-  std::vector<Renumbered> renumbered;
-  if (runs.size() == 2) {
-    for (const CaseResult& r : runs)
-      renumbered.push_back({r.index, "generator", r.series.back().front_x, r.series.back().runout_mass,
-                            r.series.back().mean_drop});
+  // Round-off sensitivity: both cases again with the blocks renumbered;
+  // ends[numbering][case - 1] (kNumberings).
+  const bool renumber = runs.size() == 2;
+  Sample ends[3][2];
+  if (renumber) {
+    for (int c = 0; c < 2; ++c) ends[0][c] = runs[static_cast<std::size_t>(c)].series.back();
     for (int axis = 0; axis < 2; ++axis)
-      for (int k = 1; k <= 2; ++k) renumbered.push_back(rerun_renumbered(k, frictions[k - 1], duration, threads, axis));
+      for (int c = 0; c < 2; ++c) ends[axis + 1][c] = rerun_renumbered(c + 1, frictions[c], duration, threads, axis);
     repro::CsvWriter rn(dir + "/renumbered.csv", {"case", "order", "front_x_end", "runout_mass_end", "mean_drop_end"},
                         {"Paper A Sect. 6.1 reconstructed: each case with its blocks numbered by the generator, by "
                          "centroid x and by centroid y (order: 0 generator, 1 x, 2 y), end of the run"});
-    for (const Renumbered& r : renumbered)
-      rn.row({static_cast<double>(r.index), r.order == "generator" ? 0.0 : r.order == "x" ? 1.0 : 2.0, r.front_x,
-              r.runout_mass, r.mean_drop});
+    for (int o = 0; o < 3; ++o)
+      for (int c = 0; c < 2; ++c)
+        rn.row({c + 1.0, static_cast<double>(o), ends[o][c].front_x, ends[o][c].runout_mass, ends[o][c].mean_drop});
     rn.commit();
   }
+  // The runout test of the claims: case 1 (a) ahead of case 2 (b) by more
+  // than one joint spacing, and with the larger runout mass (a smaller gap
+  // could be one block bouncing ahead).
+  auto runs_out_further = [](const Sample& a, const Sample& b) {
+    return a.front_x > b.front_x + 2.5 && a.runout_mass > b.runout_mass;
+  };
 
   // ---- claims ------------------------------------------------------------
   std::vector<repro::Claim> claims;
@@ -395,31 +398,27 @@ int main(int argc, char** argv) try {
              format_short(100.0 * e1.runout_mass, 3) + " % vs " + format_short(100.0 * e2.runout_mass, 3) +
              " %, mean drop " + format_short(e1.mean_drop, 3) + " vs " + format_short(e2.mean_drop, 3) + " m",
          "case 1's front > case 2's + 2.5 m (one joint spacing) and its runout mass > case 2's",
-         e1.front_x > e2.front_x + 2.5 && e1.runout_mass > e2.runout_mass});
+         runs_out_further(e1, e2)});
   }
-  if (!renumbered.empty()) {
-    // Every numbering: case 1 ahead by more than one joint spacing and with
-    // the larger runout mass (the same test as the row above).
+  if (renumber) {
     bool holds = true;
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     std::string fronts[2];
-    for (const std::string order : {"generator", "x", "y"}) {
-      const Renumbered* r[2] = {nullptr, nullptr};
-      for (const Renumbered& x : renumbered)
-        if (x.order == order) r[x.index - 1] = &x;
-      holds = holds && r[0]->front_x > r[1]->front_x + 2.5 && r[0]->runout_mass > r[1]->runout_mass;
+    for (const auto& end : ends) {
+      holds = holds && runs_out_further(end[0], end[1]);
       for (int c = 0; c < 2; ++c) {
-        lo[c] = std::min(lo[c], r[c]->front_x);
-        hi[c] = std::max(hi[c], r[c]->front_x);
-        fronts[c] += (fronts[c].empty() ? "" : ", ") + format_short(r[c]->front_x, 4) + " m (" +
-                     format_short(100.0 * r[c]->runout_mass, 3) + " %)";
+        lo[c] = std::min(lo[c], end[c].front_x);
+        hi[c] = std::max(hi[c], end[c].front_x);
+        fronts[c] += (fronts[c].empty() ? "" : ", ") + format_short(end[c].front_x, 4) + " m (" +
+                     format_short(100.0 * end[c].runout_mass, 3) + " %)";
       }
     }
     claims.push_back(
         {"6.1", "the runout ordering survives round-off-level changes: each case rerun with its blocks numbered by "
                 "centroid x and by centroid y (same blocks; other summation orders)" + run_note,
          "(not discussed in the paper: a chaotic granular run, one realisation per case)",
-         "front at the end (runout mass) for generator / x / y numbering: case 1 " + fronts[0] + "; case 2 " +
+         "front at the end (runout mass) for " + std::string(kNumberings[0]) + " / " + kNumberings[1] + " / " +
+             kNumberings[2] + " numbering: case 1 " + fronts[0] + "; case 2 " +
              fronts[1] + "; spread of the front " + format_short(hi[0] - lo[0], 3) + " m (case 1), " +
              format_short(hi[1] - lo[1], 3) + " m (case 2)",
          "in every numbering case 1's front > case 2's + 2.5 m and its runout mass > case 2's",

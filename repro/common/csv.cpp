@@ -21,11 +21,20 @@ std::string csv_quote(const std::string& field) {
   return q;
 }
 
+namespace {
+
+// The shortest round-trip text of value into buf; returns its end.
+char* write_full(double value, char (&buf)[64]) {
+  const auto res = std::to_chars(buf, buf + sizeof buf, value);
+  if (res.ec != std::errc()) throw std::runtime_error("to_chars failed");
+  return res.ptr;
+}
+
+}  // namespace
+
 std::string format_full(double value) {
   char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof buf, value);
-  if (res.ec != std::errc()) throw std::runtime_error("format_full: to_chars failed");
-  return std::string(buf, res.ptr);
+  return std::string(buf, write_full(value, buf));
 }
 
 std::string format_short(double value, int digits) {
@@ -96,10 +105,8 @@ void CsvWriter::row(const std::vector<double>& values) {
                                   " in column '" + header_[i] + "' (data row " + std::to_string(rows_ + 1) +
                                   ")");
     char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, values[i]);
-    if (res.ec != std::errc()) throw std::runtime_error("CsvWriter: to_chars failed");
     if (i) line_ += ',';
-    line_.append(buf, res.ptr);
+    line_.append(buf, write_full(values[i], buf));
   }
   line_ += '\n';
   if (std::fwrite(line_.data(), 1, line_.size(), file_) != line_.size())

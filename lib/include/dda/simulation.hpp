@@ -240,7 +240,7 @@ class Simulation {
   struct alignas(64) ThreadFlags {
     bool left_skin = false;     // a block of this thread's share left its grown box
     bool guard_failed = false;  // a block of this thread's share failed a per-block guard
-    double pair_work = 0.0;     // estimated cost of this thread's share of the pair loop (relative)
+    double pair_work = 0.0;     // its share of the last pair loop: estimated work x seconds_per_work
     // Measured on this thread's core (team runs; only the shares, never the
     // results, depend on them): seconds per unit of estimated pair work and
     // per block of its share (move and kick), smoothed over steps; this
@@ -267,9 +267,11 @@ class Simulation {
   std::vector<int> block_split_;
   void split_pairs_evenly(int team);
   void balance_block_split();
-  // This thread's blocks [begin, end) in a per-block phase; prefetching
-  // (a team only) stops kPrefetchBlocks before the end of the share.
+  // This thread's blocks [begin, end) in a per-block phase; with a team
+  // (only then: prefetching and timing) prefetching stops kPrefetchBlocks
+  // before the end of the share.
   struct BlockShare {
+    bool team = false;
     int begin = 0, end = 0, prefetch_end = 0;
   };
   BlockShare block_share() const;
