@@ -282,6 +282,7 @@ void add_common_claims(std::vector<Claim>& claims, const std::string& fig, const
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 3.2.2 (Figs. 4b, 5): the potential fields phi = kn d_exit / H (Eq. 12) of the paper's polygons.");
   const std::string out = repro::out_dir(argc, argv);
   const std::string dir = out + "/data/potential_fields";
   repro::Progress progress("potential_fields");

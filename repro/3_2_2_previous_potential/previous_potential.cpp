@@ -111,6 +111,7 @@ bool inside_quad(const std::vector<Vec2>& q, Vec2 x) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 3.2.2 (Fig. 4a): the previous sub-polygon potential beside the shortest-exit one.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("previous_potential");
   const std::string dir = out + "/data/previous_potential";

@@ -15,6 +15,7 @@
 #include "repro/common/common.hpp"
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Paper A Sect. 4.1 (Figs. 7-8): collision of two identical squares.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("4.1 two squares");
   const dda::Scene scene = dda::paper::two_squares();

@@ -19,6 +19,7 @@
 #include "repro/common/sim_output.hpp"
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Paper A Sect. 4.2 (Figs. 9-10): a polygon hitting a symmetric polygonal system.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("4.2 symmetric stack");
   const dda::paper::SymmetricStack st = dda::paper::symmetric_stack();

@@ -55,6 +55,8 @@ Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg, dda::Fric
 }  // namespace
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Paper A Sect. 4.3 (Figs. 11-12, geometry reconstructed): a block sliding on a 30-degree incline.",
+                            {{"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true}});
   const std::string out = repro::out_dir(argc, argv);
   const bool return_mapping = repro::option_int(argc, argv, "--return-mapping", 0) != 0;
   const dda::FrictionUpdate update =

@@ -94,6 +94,7 @@ double max_difference(const Run& a, const Run& b) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 5.1 (Figs. 13-14, geometry reconstructed): collision of polygons of different sizes.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("5.1 bouncing block");
   const std::string dir = out + "/data/bouncing_block";

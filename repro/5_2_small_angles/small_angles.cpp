@@ -76,6 +76,7 @@ Result run(const dda::paper::SmallAngleTriangles& st, repro::CsvWriter* traces, 
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 5.2 (Figs. 15-16, geometry reconstructed): polygons with small angles.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("5.2 small angles");
   const std::string dir = out + "/data/small_angles";

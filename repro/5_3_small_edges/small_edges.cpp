@@ -127,6 +127,7 @@ void add_claims(std::vector<repro::Claim>& claims, const std::string& section, c
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 5.3 (Figs. 17-18, geometry reconstructed): a polygon with small edges.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("5.3 small edges");
   const std::string dir = out + "/data/small_edges";

@@ -327,6 +327,7 @@ std::vector<std::string> outcome_fields(const Outcome& o, bool present) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Beyond Paper A Sect. 5: the Sect. 5 scenes with ever smaller angles and edges.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("5.4 extreme geometry");
   std::vector<Case> cases = make_cases();

@@ -198,6 +198,7 @@ std::vector<Vec2> random_polygon(std::mt19937_64& rng) {
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Beyond Paper A Sect. 3.2.3: is the segmentation of Eq. 16 exact?");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("5.5 segmentation");
   const std::string dir = out + "/data/segmentation";

@@ -265,6 +265,10 @@ CaseResult run_case(int k, double friction, double duration, int threads, const 
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 6.1 (Figs. 19-20, geometry reconstructed): frictional collapse of a jointed rock mass, cases 1 and 2.",
+                            {{"--duration", "S", "simulated seconds per case (default 7.5: the paper's)", false},
+                             {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
+                             {"--case", "N", "1 or 2: that case only, without the renumbered reruns (default 0: both)", true}});
   const std::string out = repro::out_dir(argc, argv);
   const double full = dda::paper::collapse(15.0).scene.duration;
   const double duration = repro::option_number(argc, argv, "--duration", full);

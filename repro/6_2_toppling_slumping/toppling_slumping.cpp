@@ -182,6 +182,10 @@ Control run_control(const dda::paper::TopplingSlumping& ts, const dda::Scene& sc
 }  // namespace
 
 int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper A Sect. 6.2 (Figs. 21-22, geometry reconstructed): toppling and slumping of a jointed valley slope.",
+                            {{"--duration", "S", "simulated seconds (default 3.5: the paper's)", false},
+                             {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
+                             {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true}});
   const std::string out = repro::out_dir(argc, argv);
   const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
   const double duration = repro::option_number(argc, argv, "--duration", full.scene.duration);

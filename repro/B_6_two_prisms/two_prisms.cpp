@@ -74,6 +74,7 @@ void write_snapshot(repro::CsvWriter& tris, repro::CsvWriter& clones, int id, co
 }  // namespace
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Paper B Sect. 6 (Figs. 12-16): two triangular prisms colliding.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("B-6 two prisms");
   const std::string dir = out + "/data/" + kDriver + "/";

@@ -171,6 +171,7 @@ Result run_cdem(const SceneDef& def, bool subdivision, double dt, History* hist)
 }  // namespace
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Paper A against Paper B: both contact models on the same collisions.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("B-7 contact comparison");
   const std::string dir = out + "/data/" + kDriver + "/";

@@ -508,6 +508,7 @@ std::string num(double x) { return repro::format_full(x); }
 }  // namespace
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Work-precision: error against run time for every scene with a reference.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("S1 work precision");
   std::vector<Case> cases;

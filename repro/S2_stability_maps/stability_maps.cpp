@@ -307,6 +307,7 @@ Lines lines_for(const MapScene& m, double kn) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Stability maps and a check of the critical time step.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("S2 stability maps");
   const std::string dir = out + "/data/stability_maps";

@@ -240,6 +240,7 @@ Outcome run(const Extreme& e, double dt_fraction) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "Extreme cases at the paper's dt and at 0.5 x the predicted critical step.");
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("S3 extreme cases");
   const std::string dir = out + "/data/extreme_cases";

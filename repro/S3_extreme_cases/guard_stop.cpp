@@ -9,19 +9,23 @@
 // status is 3. Without a stop (F well below 1): exit status 0.
 // ctest runs it both ways (repro/S3_extreme_cases/check_guard_stop.cmake).
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <string>
 
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/options.hpp"
 
 int main(int argc, char** argv) {
+  repro::check_command_line(argc, argv, "A deliberately too coarse run that the solver's guard must stop (exit status 3).",
+                            {{"--fraction", "F", "dt as a multiple of the predicted critical step (default 3)", false}});
   const std::string out = repro::out_dir(argc, argv);
-  double fraction = 3.0;
-  for (int i = 1; i + 1 < argc; ++i)
-    if (std::strcmp(argv[i], "--fraction") == 0) fraction = std::stod(argv[i + 1]);
+  const double fraction = repro::option_number(argc, argv, "--fraction", 3.0);
+  if (!(fraction > 0.0)) {
+    std::fprintf(stderr, "guard_stop: --fraction must be positive\n");
+    return 2;
+  }
   dda::Scene s = dda::paper::two_squares();
   s.blocks[0].vertices = {{-1.001, -0.5}, {-0.001, -0.5}, {-0.001, 0.5}, {-1.001, 0.5}};
   s.contact.kn = 1e10;

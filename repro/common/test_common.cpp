@@ -1,5 +1,5 @@
 // Unit tests of the driver helpers: atomic CSV, non-finite refusal, claims
-// quoting, --out parsing.
+// quoting, --out parsing, command-line checks.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "repro/common/common.hpp"
 
@@ -91,4 +93,36 @@ TEST_CASE("out_dir parses --out", "[cli]") {
   CHECK(repro::out_dir(3, v3) == "dir2");
   char* v4[] = {a0, a1};
   CHECK_THROWS_AS(repro::out_dir(2, v4), std::invalid_argument);
+}
+
+TEST_CASE("command_line_error names an unknown option, a stray argument and a bad value", "[cli]") {
+  const std::initializer_list<repro::OptionHelp> options = {{"--duration", "S", "seconds", false},
+                                                            {"--threads", "N", "threads", true}};
+  auto error = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), "prog");
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    return repro::command_line_error(static_cast<int>(argv.size()), argv.data(), options);
+  };
+  CHECK(error({}) == "");
+  CHECK(error({"--out", "d", "--duration", "0.5", "--threads=2", "--help"}) == "");
+  CHECK(error({"--out=d", "--duration=-1e-3", "--threads", "-3"}) == "");  // ranges are the driver's to check
+  CHECK(error({"--durration", "1"}) == "unknown option '--durration' (this driver takes --out, --duration, --threads, --help)");
+  CHECK(error({"--threads=2", "extra"}).rfind("unexpected argument 'extra'", 0) == 0);
+  CHECK(error({"-x"}).rfind("unknown option '-x'", 0) == 0);
+  CHECK(error({"--duration"}) == "--duration needs a value");
+  CHECK(error({"--duration="}) == "--duration needs a value");
+  CHECK(error({"--duration", "2s"}) == "--duration not a finite number: '2s'");
+  CHECK(error({"--duration", "nan"}) == "--duration not a finite number: 'nan'");
+  CHECK(error({"--threads", "1.5"}) == "--threads not a whole number: '1.5'");
+  CHECK(error({"--out"}) == "--out needs a directory");
+  CHECK(error({"--out="}) == "--out needs a directory");
+  CHECK(error({"--duration", "1", "--out"}) == "--out needs a directory");
+}
+
+TEST_CASE("usage_text lists --out and every option with its help", "[cli]") {
+  const std::string u = repro::usage_text("prog", "What it does.", {{"--duration", "S", "simulated seconds", false}});
+  CHECK(u.rfind("usage: prog [--out DIR] [--duration S]\nWhat it does.\n", 0) == 0);
+  CHECK(u.find("  --out DIR     output root") != std::string::npos);
+  CHECK(u.find("  --duration S  simulated seconds\n") != std::string::npos);
 }
