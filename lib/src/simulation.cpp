@@ -402,7 +402,7 @@ void Simulation::run_steps(std::int64_t count) {
   {
     DDA_OMP(omp single)
     {
-      split_pairs_evenly(team_size());
+      split_evenly(team_size());
       barrier.reset(team_size());
     }  // implicit barrier: every thread sees the reset
     for (std::int64_t k = 0; k < count; ++k) {
@@ -529,7 +529,7 @@ void Simulation::update_near_pairs() {
       for (long& b : pair_split_) b = b * after / before;
       pair_split_.back() = after;
     } else {
-      split_pairs_evenly(team_size());
+      split_evenly(team_size());
     }
   }
 }
@@ -735,8 +735,9 @@ void Simulation::pair_forces(bool with_energy) {
   team_barrier();
 }
 
-void Simulation::split_pairs_evenly(int team) {
-  // Equal numbers of pairs per thread (a start, before any work is known).
+void Simulation::split_evenly(int team) {
+  // Equal numbers of pairs and of blocks per thread (a start, before any
+  // work or core speed is known).
   const long n = static_cast<long>(near_pairs_.size());
   pair_split_.resize(static_cast<std::size_t>(team) + 1);
   for (int t = 0; t <= team; ++t) pair_split_[static_cast<std::size_t>(t)] = n * t / team;

@@ -24,19 +24,18 @@ std::string out_dir(int argc, char** argv) {
   return out;
 }
 
-namespace {
-
-bool is_help(const std::string& a) { return a == "--help" || a == "-h"; }
-
-// "" if text is a finite number (and whole, if asked), else why not.
-std::string number_error(const std::string& text, bool whole) {
-  char* end = nullptr;
-  const double x = std::strtod(text.c_str(), &end);
+std::string parse_number(const std::string& text, bool whole, double& x) {
   if (text.empty()) return "needs a value";
+  char* end = nullptr;
+  x = std::strtod(text.c_str(), &end);
   if (*end != '\0' || !std::isfinite(x)) return "not a finite number: '" + text + "'";
   if (whole && (x != std::floor(x) || std::fabs(x) > 1e9)) return "not a whole number: '" + text + "'";
   return "";
 }
+
+namespace {
+
+bool is_help(const std::string& a) { return a == "--help" || a == "-h"; }
 
 // command_line_error, also saying whether --help / -h was given as an
 // argument (not as an option's value).
@@ -68,7 +67,8 @@ std::string walk(int argc, char** argv, std::initializer_list<OptionHelp> option
              " (this driver takes " + valid + ", --help)";
     }
     const std::string v = inline_value ? a.substr(eq + 1) : (has_next ? argv[i + 1] : "");
-    const std::string why = number_error(v, known->whole);
+    double x = 0.0;
+    const std::string why = parse_number(v, known->whole, x);
     if (!why.empty()) return name + " " + why;
     if (!inline_value) ++i;
   }

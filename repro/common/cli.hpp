@@ -10,6 +10,11 @@ namespace repro {
 // std::invalid_argument if --out has no value. Other arguments are ignored.
 std::string out_dir(int argc, char** argv);
 
+// text as a finite number (a whole one of at most 1e9 in magnitude if
+// `whole`): "" with the value in x, or why not ("needs a value",
+// "not a finite number: '2s'", "not a whole number: '1.5'").
+std::string parse_number(const std::string& text, bool whole, double& x);
+
 // One numeric option a driver accepts besides --out: "--name V" or
 // "--name=V". whole: V must be a whole number.
 struct OptionHelp {

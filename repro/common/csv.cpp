@@ -80,13 +80,17 @@ void CsvWriter::check_open() const {
 }
 
 void CsvWriter::write_fields(const std::vector<std::string>& fields) {
-  std::string line;
+  line_.clear();
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i) line += ',';
-    line += csv_quote(fields[i]);
+    if (i) line_ += ',';
+    line_ += csv_quote(fields[i]);
   }
-  line += '\n';
-  if (std::fwrite(line.data(), 1, line.size(), file_) != line.size())
+  write_line();
+}
+
+void CsvWriter::write_line() {
+  line_ += '\n';
+  if (std::fwrite(line_.data(), 1, line_.size(), file_) != line_.size())
     throw std::runtime_error("CsvWriter: write error on " + tmp_);
 }
 
@@ -108,9 +112,7 @@ void CsvWriter::row(const std::vector<double>& values) {
     if (i) line_ += ',';
     line_.append(buf, write_full(values[i], buf));
   }
-  line_ += '\n';
-  if (std::fwrite(line_.data(), 1, line_.size(), file_) != line_.size())
-    throw std::runtime_error("CsvWriter: write error on " + tmp_);
+  write_line();
   ++rows_;
 }
 

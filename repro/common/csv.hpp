@@ -42,13 +42,14 @@ class CsvWriter {
  private:
   void check_open() const;
   void write_fields(const std::vector<std::string>& fields);
+  void write_line();  // line_ and a newline to the file
 
   std::string path_, tmp_;
   std::vector<std::string> header_;
   std::FILE* file_ = nullptr;
   std::size_t rows_ = 0;
   bool committed_ = false;
-  std::string line_;  // a numeric row's text, reused from row to row
+  std::string line_;  // the row being written, reused from row to row
 };
 
 // Quotes a CSV field if it contains a comma, quote, CR or LF.

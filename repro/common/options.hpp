@@ -1,41 +1,48 @@
 // Optional numeric command-line options of the drivers ("--name V" or
-// "--name=V"), next to repro::out_dir. Header only.
+// "--name=V"), next to repro::out_dir. Header only; the numbers are read by
+// repro::parse_number, as check_command_line checks them.
 #pragma once
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
+#include "repro/common/cli.hpp"
+
 namespace repro {
 
-// The value of option `name` (e.g. "--duration"), or `fallback` if absent.
-// Throws std::invalid_argument if the value is missing or not a finite number.
-inline double option_number(int argc, char** argv, const std::string& name, double fallback) {
+namespace detail {
+
+// The value of option `name` (a whole number if `whole`), or `fallback` if
+// absent. Throws std::invalid_argument naming the option and the reason.
+inline double option_value(int argc, char** argv, const std::string& name, double fallback, bool whole) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     std::string v;
     if (a == name) {
-      if (i + 1 >= argc) throw std::invalid_argument(name + " needs a value");
-      v = argv[i + 1];
+      v = i + 1 < argc ? argv[i + 1] : "";
     } else if (a.rfind(name + "=", 0) == 0) {
       v = a.substr(name.size() + 1);
     } else {
       continue;
     }
-    char* end = nullptr;
-    const double x = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || !std::isfinite(x)) throw std::invalid_argument(name + ": not a number: '" + v + "'");
+    double x = 0.0;
+    const std::string why = parse_number(v, whole, x);
+    if (!why.empty()) throw std::invalid_argument(name + " " + why);
     return x;
   }
   return fallback;
 }
 
+}  // namespace detail
+
+// The value of option `name` (e.g. "--duration"), or `fallback` if absent.
+// Throws std::invalid_argument if the value is missing or not a finite number.
+inline double option_number(int argc, char** argv, const std::string& name, double fallback) {
+  return detail::option_value(argc, argv, name, fallback, false);
+}
+
 // Like option_number, for a whole number.
 inline int option_int(int argc, char** argv, const std::string& name, int fallback) {
-  const double x = option_number(argc, argv, name, static_cast<double>(fallback));
-  if (x != std::floor(x) || std::fabs(x) > 1e9) throw std::invalid_argument(name + ": not a whole number");
-  return static_cast<int>(x);
+  return static_cast<int>(detail::option_value(argc, argv, name, static_cast<double>(fallback), true));
 }
 
 }  // namespace repro

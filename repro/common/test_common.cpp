@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "repro/common/common.hpp"
+#include "repro/common/options.hpp"
 
 namespace fs = std::filesystem;
 
@@ -125,4 +126,16 @@ TEST_CASE("usage_text lists --out and every option with its help", "[cli]") {
   CHECK(u.rfind("usage: prog [--out DIR] [--duration S]\nWhat it does.\n", 0) == 0);
   CHECK(u.find("  --out DIR     output root") != std::string::npos);
   CHECK(u.find("  --duration S  simulated seconds\n") != std::string::npos);
+}
+
+TEST_CASE("option_number and option_int read an option's value or throw naming it", "[cli]") {
+  std::vector<std::string> args = {"prog", "--duration", "0.25", "--threads=2", "--case", "x"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  const int argc = static_cast<int>(argv.size());
+  CHECK(repro::option_number(argc, argv.data(), "--duration", 7.5) == 0.25);
+  CHECK(repro::option_int(argc, argv.data(), "--threads", 1) == 2);
+  CHECK(repro::option_int(argc, argv.data(), "--missing", 7) == 7);
+  CHECK_THROWS_WITH(repro::option_int(argc, argv.data(), "--case", 0), "--case not a finite number: 'x'");
+  CHECK_THROWS_WITH(repro::option_int(argc, argv.data(), "--duration", 0), "--duration not a whole number: '0.25'");
 }

@@ -265,7 +265,7 @@ class Simulation {
   // time per block (balance_block_split, in the pair phase, when no thread
   // reads them).
   std::vector<int> block_split_;
-  void split_pairs_evenly(int team);
+  void split_evenly(int team);
   void balance_block_split();
   // This thread's blocks [begin, end) in a per-block phase; with a team
   // (only then: prefetching and timing) prefetching stops kPrefetchBlocks
