@@ -471,7 +471,8 @@ void Simulation::move_blocks() {
   }
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   mine.left_skin = left_skin;
-  if (share.team) mine.block_seconds = seconds_since(t0);
+  if (share.team && share.end > share.begin)
+    mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
   team_barrier();
 }
 
@@ -857,7 +858,7 @@ void Simulation::gather_and_kick() {
   mine.guard_failed = failed;
   if (share.team && share.end > share.begin)
     mine.seconds_per_block =
-        smoothed(mine.seconds_per_block, (mine.block_seconds + seconds_since(t0)) / (share.end - share.begin));
+        smoothed(mine.seconds_per_block, mine.move_seconds_per_block + seconds_since(t0) / (share.end - share.begin));
   team_barrier();
 }
 

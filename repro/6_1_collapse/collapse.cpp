@@ -41,8 +41,10 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "dda/polygon.hpp"
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/common.hpp"
@@ -128,13 +130,13 @@ const char* const kNumberings[] = {"generator", "x", "y"};
 // end state's measures.
 Sample rerun_renumbered(int k, double friction, double duration, int threads, int axis) {
   dda::paper::Collapse col = dda::paper::collapse(friction, 0.5, duration);
-  auto centroid = [axis](const dda::BlockSpec& b) {
-    double sum = 0.0;
-    for (const dda::Vec2& v : b.vertices) sum += axis == 0 ? v.x : v.y;
-    return sum / static_cast<double>(b.vertices.size());
-  };
-  std::stable_sort(col.scene.blocks.begin(), col.scene.blocks.end(),
-                   [&](const dda::BlockSpec& a, const dda::BlockSpec& b) { return centroid(a) < centroid(b); });
+  std::vector<std::pair<double, dda::BlockSpec>> keyed;
+  for (dda::BlockSpec& b : col.scene.blocks) {
+    const dda::Vec2 c = dda::area_centroid(b.vertices.data(), static_cast<int>(b.vertices.size())).centroid;
+    keyed.emplace_back(axis == 0 ? c.x : c.y, std::move(b));
+  }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 0; i < keyed.size(); ++i) col.scene.blocks[i] = std::move(keyed[i].second);
   dda::Simulation sim(col.scene);
   sim.set_threads(threads);
   const Start start(sim);

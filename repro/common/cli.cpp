@@ -6,21 +6,62 @@
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace repro {
 
+namespace {
+
+// One argument of a driver's command line: --help / -h, a word that is no
+// option, or an option with its value ("--name V" or "--name=V"; V empty
+// when missing: "--name" last, or followed by another "--" argument; "-3"
+// is a value). The one reading of argv behind option_text,
+// out_dir and check_command_line.
+struct Arg {
+  enum class Kind { kHelp, kStray, kOption } kind = Kind::kOption;
+  std::string text;   // the argument as given
+  std::string name;   // kOption: "--name"
+  std::string value;  // kOption: V
+};
+
+std::vector<Arg> read_args(int argc, char** argv) {
+  std::vector<Arg> args;
+  for (int i = 1; i < argc; ++i) {
+    Arg a;
+    a.text = argv[i];
+    const std::size_t eq = a.text.find('=');
+    if (a.text == "--help" || a.text == "-h") {
+      a.kind = Arg::Kind::kHelp;
+    } else if (a.text.rfind('-', 0) != 0) {
+      a.kind = Arg::Kind::kStray;
+    } else if (a.text.rfind("--", 0) == 0 && eq != std::string::npos) {
+      a.name = a.text.substr(0, eq);
+      a.value = a.text.substr(eq + 1);
+    } else {
+      a.name = a.text;
+      if (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) a.value = argv[++i];
+    }
+    args.push_back(std::move(a));
+  }
+  return args;
+}
+
+}  // namespace
+
+bool option_text(int argc, char** argv, const std::string& name, std::string& value) {
+  bool found = false;
+  for (const Arg& a : read_args(argc, argv))
+    if (a.kind == Arg::Kind::kOption && a.name == name) {
+      value = a.value;
+      found = true;
+    }
+  return found;
+}
+
 std::string out_dir(int argc, char** argv) {
   std::string out = "out";
-  for (int i = 1; i < argc; ++i) {
-    const char* a = argv[i];
-    if (std::strcmp(a, "--out") == 0) {
-      if (i + 1 >= argc || argv[i + 1][0] == '\0') throw std::invalid_argument("--out needs a directory");
-      out = argv[++i];
-    } else if (std::strncmp(a, "--out=", 6) == 0) {
-      if (a[6] == '\0') throw std::invalid_argument("--out= needs a directory");
-      out = a + 6;
-    }
-  }
+  if (option_text(argc, argv, "--out", out) && out.empty()) throw std::invalid_argument("--out needs a directory");
   return out;
 }
 
@@ -35,42 +76,30 @@ std::string parse_number(const std::string& text, bool whole, double& x) {
 
 namespace {
 
-bool is_help(const std::string& a) { return a == "--help" || a == "-h"; }
-
-// command_line_error, also saying whether --help / -h was given as an
-// argument (not as an option's value).
+// command_line_error, also saying whether --help / -h was given (as an
+// argument, not as an option's value) before the first error.
 std::string walk(int argc, char** argv, std::initializer_list<OptionHelp> options, bool& help) {
   help = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (is_help(a)) {
+  std::string valid = "--out";
+  for (const OptionHelp& o : options) valid += std::string(", ") + o.name;
+  const std::string takes = " (this driver takes " + valid + ", --help)";
+  for (const Arg& a : read_args(argc, argv)) {
+    if (a.kind == Arg::Kind::kHelp) {
       help = true;
       continue;
     }
-    const std::size_t eq = a.find('=');
-    const std::string name = a.rfind("--", 0) == 0 ? a.substr(0, eq) : a;
-    const bool inline_value = a.rfind("--", 0) == 0 && eq != std::string::npos;
-    const bool has_next = i + 1 < argc;
-    if (name == "--out") {
-      const std::string v = inline_value ? a.substr(eq + 1) : (has_next ? argv[i + 1] : "");
-      if (v.empty()) return "--out needs a directory";
-      if (!inline_value) ++i;
+    if (a.kind == Arg::Kind::kStray) return "unexpected argument '" + a.text + "'" + takes;
+    if (a.name == "--out") {
+      if (a.value.empty()) return "--out needs a directory";
       continue;
     }
     const OptionHelp* known = nullptr;
     for (const OptionHelp& o : options)
-      if (name == o.name) known = &o;
-    if (!known) {
-      std::string valid = "--out";
-      for (const OptionHelp& o : options) valid += std::string(", ") + o.name;
-      return (a.rfind("-", 0) == 0 ? "unknown option '" + name + "'" : "unexpected argument '" + a + "'") +
-             " (this driver takes " + valid + ", --help)";
-    }
-    const std::string v = inline_value ? a.substr(eq + 1) : (has_next ? argv[i + 1] : "");
+      if (a.name == o.name) known = &o;
+    if (!known) return "unknown option '" + a.name + "'" + takes;
     double x = 0.0;
-    const std::string why = parse_number(v, known->whole, x);
-    if (!why.empty()) return name + " " + why;
-    if (!inline_value) ++i;
+    const std::string why = parse_number(a.value, known->whole, x);
+    if (!why.empty()) return a.name + " " + why;
   }
   return "";
 }

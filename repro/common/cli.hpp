@@ -6,6 +6,13 @@
 
 namespace repro {
 
+// The value text of option `name` ("--name V" or "--name=V"; the last one
+// given wins): true with it in `value` ("" when V is missing), false if the
+// option is absent. Arguments are read as check_command_line reads them: an
+// option's separate value is never taken for an option itself, nor an
+// argument starting with "--" for a value.
+bool option_text(int argc, char** argv, const std::string& name, std::string& value);
+
 // The output root: "--out DIR" or "--out=DIR"; default "out". Throws
 // std::invalid_argument if --out has no value. Other arguments are ignored.
 std::string out_dir(int argc, char** argv);

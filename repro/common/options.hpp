@@ -1,6 +1,7 @@
 // Optional numeric command-line options of the drivers ("--name V" or
-// "--name=V"), next to repro::out_dir. Header only; the numbers are read by
-// repro::parse_number, as check_command_line checks them.
+// "--name=V"), next to repro::out_dir. Header only; found by
+// repro::option_text and read by repro::parse_number, as check_command_line
+// reads and checks them.
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -14,22 +15,12 @@ namespace detail {
 // The value of option `name` (a whole number if `whole`), or `fallback` if
 // absent. Throws std::invalid_argument naming the option and the reason.
 inline double option_value(int argc, char** argv, const std::string& name, double fallback, bool whole) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    std::string v;
-    if (a == name) {
-      v = i + 1 < argc ? argv[i + 1] : "";
-    } else if (a.rfind(name + "=", 0) == 0) {
-      v = a.substr(name.size() + 1);
-    } else {
-      continue;
-    }
-    double x = 0.0;
-    const std::string why = parse_number(v, whole, x);
-    if (!why.empty()) throw std::invalid_argument(name + " " + why);
-    return x;
-  }
-  return fallback;
+  std::string v;
+  if (!option_text(argc, argv, name, v)) return fallback;
+  double x = 0.0;
+  const std::string why = parse_number(v, whole, x);
+  if (!why.empty()) throw std::invalid_argument(name + " " + why);
+  return x;
 }
 
 }  // namespace detail

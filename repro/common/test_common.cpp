@@ -119,6 +119,25 @@ TEST_CASE("command_line_error names an unknown option, a stray argument and a ba
   CHECK(error({"--out"}) == "--out needs a directory");
   CHECK(error({"--out="}) == "--out needs a directory");
   CHECK(error({"--duration", "1", "--out"}) == "--out needs a directory");
+  CHECK(error({"--duration", "--out", "d"}) == "--duration needs a value");  // an option is no value
+  CHECK(error({"--out", "--duration", "1"}) == "--out needs a directory");
+}
+
+TEST_CASE("option_text reads arguments as the command-line check does", "[cli]") {
+  std::vector<std::string> args = {"prog", "--threads", "--out", "d", "--case", "-3", "--case=2", "--duration="};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  const int argc = static_cast<int>(argv.size());
+  std::string v = "unset";
+  CHECK(repro::option_text(argc, argv.data(), "--threads", v));
+  CHECK(v == "");  // followed by an option: no value
+  CHECK(repro::out_dir(argc, argv.data()) == "d");
+  CHECK(repro::option_text(argc, argv.data(), "--case", v));
+  CHECK(v == "2");  // the last one given
+  CHECK(repro::option_text(argc, argv.data(), "--duration", v));
+  CHECK(v == "");
+  CHECK_FALSE(repro::option_text(argc, argv.data(), "--d", v));
+  CHECK_FALSE(repro::option_text(argc, argv.data(), "d", v));
 }
 
 TEST_CASE("usage_text lists --out and every option with its help", "[cli]") {

@@ -243,11 +243,12 @@ class Simulation {
     double pair_work = 0.0;     // its share of the last pair loop: estimated work x seconds_per_work
     // Measured on this thread's core (team runs; only the shares, never the
     // results, depend on them): seconds per unit of estimated pair work and
-    // per block of its share (move and kick), smoothed over steps; this
-    // step's block-phase seconds so far.
+    // per block (move and kick), smoothed over steps; this step's move
+    // seconds per block of its share (the kick's share may differ: the
+    // split moves in between, in the pair phase).
     double seconds_per_work = 0.0;
     double seconds_per_block = 0.0;
-    double block_seconds = 0.0;
+    double move_seconds_per_block = 0.0;
   };
   std::vector<ThreadFlags> flags_;
   // The team's barrier during run_steps (null outside it).
