@@ -1,6 +1,6 @@
 // Internal: the block kinematics of block.hpp (T(p) d and T(p)^T f, Eqs. 1-3
 // and 22-23) lane by lane, for the per-vertex moves (block.cpp), the
-// friction history and the per-block force sums (simulation.cpp). Each
+// friction history and the per-block force sums (simulation/). Each
 // element is computed with the scalar formula's operations in its order:
 // the same bits. Not part of the public API.
 #pragma once

@@ -5,6 +5,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,6 +57,12 @@ struct ContactInfo {
 class Simulation {
  public:
   explicit Simulation(const Scene& scene);
+  // Out of line: the private pair and team structures are complete only there.
+  Simulation(const Simulation&);
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(const Simulation&);
+  Simulation& operator=(Simulation&&) noexcept;
+  ~Simulation();
 
   // One explicit step (velocity Verlet, Eqs. 7-8). Throws SimulationError.
   void step();
@@ -126,52 +133,63 @@ class Simulation {
   std::int64_t broad_phase_rebuilds() const { return broad_phase_rebuilds_; }
 
  private:
-  // Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
-  struct PairHistory {
-    Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
-    Vec2 slide_dir{};       // sliding direction s of the last sliding step
-    Vec2 point{};           // pg of the last force evaluation
-    bool sliding = false;
-  };
+  // Defined in lib/src/simulation/internal.hpp (users need not see them).
+  struct PairHistory;  // a pair's friction history
+  struct PairResult;   // a near pair's contact of the last force evaluation
+  struct NearPair;     // a broad-phase pair
+  struct PairLoad;     // what a block's force sum reads of a pair
+  struct BlockPair;    // an entry of a block's near-pair list
+  struct ThreadFlags;  // a thread's guard flags and measured speeds
+  struct BlockShare;   // a thread's blocks in a per-block phase
+  struct BlockSide;    // what a pair's contact reads of a block
 
+  // The step (step.cpp: run_steps is the table of contents) and its phases,
+  // one file each under lib/src/simulation/.
+  void run_steps(std::int64_t count);
+  void compute_forces();
+  void collect_contacts();
+  // setup.cpp
   void build_blocks();
   void choose_potential_length();
-  void run_steps(std::int64_t count);
-  // The phases of a step (run_steps), each one worksharing loop of the team.
-  void move_blocks();        // per block: half kick, drift, geometry, body force
-  void update_near_pairs();  // the broad phase's list, rebuilt when a block left its skin
-  void pair_forces(bool with_energy);  // per near pair: friction history, overlap, contact force
-  void gather_and_kick();    // per block: contact forces in pair order, kick, guard flags
+  void choose_broad_phase_skin();
+  // integration.cpp: per block, half kick, drift, geometry, body force; gather, kick
+  void move_blocks();
   void update_geometry();
   void update_block_geometry(int i);
-  void compute_forces();
   void body_force(int i);
+  void gather_and_kick();
   void gather_contact_forces(int i);
   void kick_block(int i);
-  void rebuild_near_pairs();
-  void collect_contacts();
-  // One near pair's contact, computed independently of all others (whether
-  // it is a candidate and in contact: its PairLoad).
-  struct PairResult {
-    ContactInfo info;
-    double energy = 0.0;     // penalty energy, J/m (set on steps with an energy check)
-    PairHistory history;
-  };
-  // The contact of overlapping near pair k from its intersection polygon
-  // ip (Eqs. 11-20, 24-26) into its PairResult and PairLoad (active); false
-  // when the net force vanishes. was_active: the pair was in contact at the
-  // last step (its friction history carries on).
-  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol);
   void kick();
+  void prefetch_block(int i) const;
+  void prefetch_gather(int i) const;
+  // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
+  void update_near_pairs();
+  void rebuild_near_pairs();
+  // contact_forces.cpp: per near pair, overlap, IP, contact force
+  void pair_forces(bool with_energy);
+  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol);
+  // friction.cpp
+  void pair_friction(PairResult& r, bool was_active, const NormalForce& nf);
+  double friction_tan(int a, int b) const;
+  // guards.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
   GuardFault guard_fault(int i) const;
+  bool guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error);
   void check_state(bool energy_due);
-  Energy block_energy() const;
-  void predict_critical_step();
-  void choose_broad_phase_skin();
-  double block_strain_omega2(int i) const;
   [[noreturn]] void stop(int block, const std::string& what) const;
-  double friction_tan(int a, int b) const;
+  // energy.cpp
+  Energy block_energy() const;
+  // critical_step.cpp
+  void predict_critical_step();
+  double block_strain_omega2(int i) const;
+  // team.cpp
+  void start_team();
+  void team_barrier();
+  BlockShare block_share() const;
+  void split_evenly(int team);
+  void balance_block_split();
+  void balance_pair_split();
 
   Scene scene_;
   double dt_ = 0.0;
@@ -205,55 +223,24 @@ class Simulation {
   double energy0_ = 0.0, energy_scale_ = 0.0;
 
   // Contacts. The broad phase's near pairs (i < j, sorted) each own a
-  // result slot that lives as long as the pair stays near: its friction
-  // history stays in place from step to step. near_pair_offset_ and
-  // block_pairs_ list each block's near pairs in increasing order (CSR),
-  // so that each block sums its contact forces in that fixed order.
-  struct NearPair {
-    int i = -1, j = -1;
-    int witness = -1;  // separating axis the overlap test found last (-1: none yet)
-  };
+  // result slot (pair_results_, pair_loads_) that lives as long as the pair
+  // stays near: its friction history stays in place from step to step.
+  // near_pair_offset_ and block_pairs_ list each block's near pairs in
+  // increasing order (CSR), so that each block sums its contact forces in
+  // that fixed order.
   std::vector<NearPair> near_pairs_;
   std::vector<PairResult> pair_results_;
-  // What the per-block sum reads of each near pair, compact (a PairResult
-  // spans several cache lines): written by the pair loop, read per block.
-  struct PairLoad {
-    Vec2 force{};            // normal + tangential force on the pair's first block, N/m
-    Vec2 point{};            // loading point pg
-    bool candidate = false;  // the two boxes overlap at this step
-    bool active = false;     // in contact: force, point and the PairResult are this step's
-  };
   std::vector<PairLoad> pair_loads_;
-  // One entry of a block's near-pair list: the pair, the other block, and
-  // whether this block is the pair's first (the force acts on it with +).
-  struct BlockPair {
-    int pair = -1, other = -1;
-    bool first = false;
-  };
   std::vector<int> near_pair_offset_;
   std::vector<BlockPair> block_pairs_;
   std::vector<ContactInfo> contact_info_;  // active pairs in near-pair order, after each advance
   std::size_t candidate_count_ = 0;
+
+  // The thread team (team.cpp).
   int threads_ = 1;
-  // One flag block per thread, each on its own cache line: set in a
-  // worksharing loop, read by every thread after the loop's barrier.
-  struct alignas(64) ThreadFlags {
-    bool left_skin = false;     // a block of this thread's share left its grown box
-    bool guard_failed = false;  // a block of this thread's share failed a per-block guard
-    double pair_work = 0.0;     // its share of the last pair loop: estimated work x seconds_per_work
-    // Measured on this thread's core (team runs; only the shares, never the
-    // results, depend on them): seconds per unit of estimated pair work and
-    // per block (move and kick), smoothed over steps; this step's move
-    // seconds per block of its share (the kick's share may differ: the
-    // split moves in between, in the pair phase).
-    double seconds_per_work = 0.0;
-    double seconds_per_block = 0.0;
-    double move_seconds_per_block = 0.0;
-  };
   std::vector<ThreadFlags> flags_;
   // The team's barrier during run_steps (null outside it).
   detail::TeamBarrier* barrier_ = nullptr;
-  void team_barrier();
   // The pair loop's shares: thread t takes near pairs [pair_split_[t],
   // pair_split_[t + 1]), contiguous (a thread's pairs mostly involve the
   // blocks it moves: fewer polygons travel between cores) and moved every
@@ -266,31 +253,12 @@ class Simulation {
   // time per block (balance_block_split, in the pair phase, when no thread
   // reads them).
   std::vector<int> block_split_;
-  void split_evenly(int team);
-  void balance_block_split();
-  // This thread's blocks [begin, end) in a per-block phase; with a team
-  // (only then: prefetching and timing) prefetching stops kPrefetchBlocks
-  // before the end of the share.
-  struct BlockShare {
-    bool team = false;
-    int begin = 0, end = 0, prefetch_end = 0;
-  };
-  BlockShare block_share() const;
-  void prefetch_block(int i) const;
-  void prefetch_gather(int i) const;
-  void balance_pair_split();
+
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
   // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count sides_[i].side.bisector_count.
   std::vector<Bisector> bisector_store_;
   std::vector<int> bisector_offset_;
-  // What a pair's contact reads of each block, in one cache line: its
-  // potential side (polygon, kn/H, small edge, its bisectors and their
-  // count) and its round-off tolerance.
-  struct alignas(64) BlockSide {
-    PotentialSide side;
-    double tol = 0.0;  // geometric_tolerance of the block's box, m
-  };
   std::vector<BlockSide> sides_;
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the

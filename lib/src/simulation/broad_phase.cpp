@@ -1,0 +1,127 @@
+// The broad phase: the near-pair list, sorted by (i, j), each pair owning
+// its result slot while it stays near. A sort and sweep on boxes grown by
+// a skin (a Verlet list), rebuilt only when a block left its grown box; or,
+// without the sweep, all pairs whose boxes overlap, every step.
+#include <algorithm>
+
+#include "simulation/internal.hpp"
+
+namespace dda {
+
+using detail::team_size;
+
+namespace {
+
+// The near-pair order: by first block, then second.
+template <class P>
+bool pair_before(const P& x, const P& y) {
+  return x.i < y.i || (x.i == y.i && x.j < y.j);
+}
+
+}  // namespace
+
+void Simulation::update_near_pairs() {
+  // Every thread reads every flag after move_blocks' barrier: the same
+  // verdict in all of them. Without the sweep the list is rebuilt every step.
+  bool rebuild = scene_.broad_phase == BroadPhase::kNone;
+  for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
+  if (!rebuild) return;
+  DDA_OMP(omp single)
+  {
+    // The shares keep their proportions of the new list.
+    const long before = static_cast<long>(near_pairs_.size());
+    rebuild_near_pairs();
+    const long after = static_cast<long>(near_pairs_.size());
+    if (before > 0 && pair_split_.size() == static_cast<std::size_t>(team_size()) + 1) {
+      for (long& b : pair_split_) b = b * after / before;
+      pair_split_.back() = after;
+    } else {
+      split_evenly(team_size());
+    }
+  }
+}
+
+void Simulation::rebuild_near_pairs() {
+  // The pairs that may touch before the next rebuild, sorted by (i, j).
+  // Sweep: sort and sweep along x on the boxes grown by the skin; the order
+  // of the last rebuild is nearly sorted, so insertion sort is linear in
+  // practice. Every pair whose current boxes overlap is in the list as
+  // long as both boxes stay inside their grown boxes, so skipping the
+  // others gives exactly the pairs a full sweep would give, in the same
+  // order. Without the sweep (rebuilt every step): every pair with a free
+  // block whose boxes overlap now, by testing all pairs.
+  const int n = block_count();
+  std::vector<NearPair> pairs;
+  if (scene_.broad_phase == BroadPhase::kNone) {
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) pairs.push_back({i, j, -1});
+  } else {
+    ++broad_phase_rebuilds_;
+    skin_boxes_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      skin_boxes_[i] = boxes_[i];
+      if (fixed_[i]) continue;  // a fixed box never moves: no skin needed
+      skin_boxes_[i].lo -= Vec2{skin_, skin_};
+      skin_boxes_[i].hi += Vec2{skin_, skin_};
+    }
+    if (order_.size() != static_cast<std::size_t>(n)) {
+      order_.resize(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) order_[i] = i;
+    }
+    const std::vector<Aabb>& g = skin_boxes_;
+    for (std::size_t a = 1; a < order_.size(); ++a) {
+      const int key = order_[a];
+      std::size_t b = a;
+      while (b > 0 && g[order_[b - 1]].lo.x > g[key].lo.x) {
+        order_[b] = order_[b - 1];
+        --b;
+      }
+      order_[b] = key;
+    }
+    for (std::size_t a = 0; a < order_.size(); ++a) {
+      const int i = order_[a];
+      for (std::size_t b = a + 1; b < order_.size(); ++b) {
+        const int j = order_[b];
+        if (g[j].lo.x > g[i].hi.x) break;
+        if (fixed_[i] && fixed_[j]) continue;
+        if (g[j].lo.y > g[i].hi.y || g[i].lo.y > g[j].hi.y) continue;
+        pairs.push_back({std::min(i, j), std::max(i, j), -1});
+      }
+    }
+    std::sort(pairs.begin(), pairs.end(), pair_before<NearPair>);
+  }
+  // A pair on both lists keeps its slot's state (witness, contact, history):
+  // one merge pass over the two sorted lists. A pair in contact now is on
+  // both (its boxes overlap, so its grown boxes do).
+  std::vector<PairResult> results(pairs.size());
+  std::vector<PairLoad> loads(pairs.size());
+  std::size_t h = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    while (h < near_pairs_.size() && pair_before(near_pairs_[h], pairs[k])) ++h;
+    if (h < near_pairs_.size() && !pair_before(pairs[k], near_pairs_[h])) {
+      pairs[k].witness = near_pairs_[h].witness;
+      results[k] = pair_results_[h];
+      loads[k] = pair_loads_[h];
+    }
+  }
+  near_pairs_.swap(pairs);
+  pair_results_.swap(results);
+  pair_loads_.swap(loads);
+  // Each block's pairs in increasing order (CSR).
+  near_pair_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const NearPair& p : near_pairs_) {
+    ++near_pair_offset_[static_cast<std::size_t>(p.i) + 1];
+    ++near_pair_offset_[static_cast<std::size_t>(p.j) + 1];
+  }
+  for (int i = 0; i < n; ++i) near_pair_offset_[i + 1] += near_pair_offset_[i];
+  block_pairs_.resize(static_cast<std::size_t>(near_pair_offset_[n]));
+  std::vector<int> fill(near_pair_offset_.begin(), near_pair_offset_.end() - 1);
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+    const int i = near_pairs_[k].i, j = near_pairs_[k].j;
+    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j, true};
+    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i, false};
+  }
+}
+
+}  // namespace dda

@@ -1,0 +1,130 @@
+// The pair loop: per near pair (independent of all others), the overlap
+// test and intersection polygon (Paper A Sect. 3.1), the normal contact
+// force and its loading point (Eqs. 10-20), the friction force
+// (friction.cpp, Eqs. 24-26), and the penalty energy when a check is due.
+#include <algorithm>
+#include <array>
+
+#include "simulation/internal.hpp"
+
+namespace dda {
+
+using detail::thread_index;
+using detail::team_size;
+using detail::kPrefetchPairs;
+using detail::PhaseClock;
+using detail::seconds_since;
+using detail::smoothed;
+using detail::prefetch_polygon;
+
+namespace {
+
+// Relative cost of a near pair in the pair loop by what it turned out to
+// be (dimensionless; instructions measured on the 6.1 collapse: ~2,500 for
+// a touching pair, ~120 for a separate candidate, ~20 for a pair whose
+// boxes do not overlap). Only the shares' balance depends on them.
+constexpr long kWorkTouching = 125;
+constexpr long kWorkCandidate = 6;
+constexpr long kWorkOther = 1;
+
+}  // namespace
+
+// Inlined into the pair loop (its only caller): a call frame of its own
+// costs about as much as the bookkeeping it does.
+[[gnu::always_inline]] inline bool Simulation::pair_force(long k, bool was_active, const Polygon& ip,
+                                                          const IpEdge* source, double tol) {
+  const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
+  const ContactParams& c = scene_.contact;
+  const NormalForce nf =
+      normal_contact_force(sides_[cp].side, sides_[tp].side, ip, c.integration, tol, source);  // Eqs. 11-20
+  if (!nf.valid) return false;
+  PairResult& r = pair_results_[static_cast<std::size_t>(k)];
+  ContactInfo& info = r.info;
+  info.cp = cp;
+  info.tp = tp;
+  info.normal_force = nf.force;
+  info.tangential_force = Vec2{};
+  info.point = nf.point;
+  info.ip_area = nf.ip_area;
+  info.ip_length = 0.5 * nf.ip_perimeter;
+  info.sliding = false;
+  if (friction_) pair_friction(r, was_active, nf);  // friction.cpp, Eqs. 24-26
+  PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
+  load.active = true;
+  load.force = info.normal_force + info.tangential_force;
+  load.point = info.point;
+  return true;
+}
+
+void Simulation::pair_forces(bool with_energy) {
+  // Pair forces, independent of each other. Each thread takes its
+  // contiguous share of the list (pair_split_; all of it outside a
+  // parallel region), not a dynamic schedule: its shared chunk counter
+  // costs a cross-core round trip per chunk, which on a virtual machine
+  // with slow core-to-core latency cost more than the uneven pair costs it
+  // evens out (measured: 2 threads 0.9x of 1 thread with dynamic chunks of
+  // 16). A pair whose boxes do not overlap is no candidate; a pair that
+  // did not touch at the last step starts its friction history afresh
+  // (pair_force). with_energy: each contact also stores its penalty energy
+  // (for the energy guard, summed in pair order as energy() sums it).
+  const int team = team_size(), t = thread_index();
+  const long n = static_cast<long>(near_pairs_.size());
+  const long begin = team > 1 ? pair_split_[static_cast<std::size_t>(t)] : 0;
+  const long end = team > 1 ? pair_split_[static_cast<std::size_t>(t) + 1] : n;
+  // The loop's arrays in locals: its stores could alias the vectors' members.
+  NearPair* const near = near_pairs_.data();
+  PairLoad* const loads = pair_loads_.data();
+  const Aabb* const boxes = boxes_.data();
+  const Polygon* const poly = poly_.data();
+  const BlockSide* const sides = sides_.data();
+  // The intersection polygon and its edges' sources, rewritten by every
+  // overlap test.
+  Polygon ip;
+  std::array<IpEdge, kMaxVertices> source;
+  long work = 0;
+  const PhaseClock::time_point t0 = team > 1 ? PhaseClock::now() : PhaseClock::time_point{};
+  if (team > 1 && t == 0) balance_block_split();
+  const long prefetch_end = team > 1 ? end - kPrefetchPairs : begin;
+  for (long k = begin; k < end; ++k) {
+    if (k < prefetch_end) {
+      // The second block of a pair ahead (the first is mostly this pair's).
+      const int j = near[k + kPrefetchPairs].j;
+      prefetch_polygon<0>(poly[j]);
+      __builtin_prefetch(&boxes[j]);
+      __builtin_prefetch(&sides[j]);
+    }
+    NearPair& p = near[k];
+    PairLoad& load = loads[k];
+    const bool was_active = load.active;
+    load.active = false;
+    load.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
+    if (!load.candidate) {
+      work += kWorkOther;
+      continue;
+    }
+    // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
+    const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
+    if (overlap_and_intersection(poly[p.i], poly[p.j], tol, ip, source.data(), &p.witness) !=
+            OverlapState::kOverlapping ||
+        ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol)) {
+      work += kWorkCandidate;
+      continue;
+    }
+    work += kWorkTouching;
+    // The penalty energy of the contact, as energy() computes it (the same
+    // IP: the lines left out of the cut leave it unchanged).
+    if (with_energy) {
+      pair_results_[static_cast<std::size_t>(k)].energy = contact_energy(sides[p.i].side, sides[p.j].side, ip, tol);
+    }
+  }
+  if (team > 1) {
+    // The share's cost for the next split: its estimated work at this
+    // core's measured speed.
+    ThreadFlags& mine = flags_[static_cast<std::size_t>(t)];
+    if (work > 0) mine.seconds_per_work = smoothed(mine.seconds_per_work, seconds_since(t0) / static_cast<double>(work));
+    mine.pair_work = static_cast<double>(work) * (mine.seconds_per_work > 0.0 ? mine.seconds_per_work : 1.0);
+  }
+  team_barrier();
+}
+
+}  // namespace dda

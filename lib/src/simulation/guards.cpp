@@ -1,0 +1,118 @@
+// The guards: a run that leaves the method's domain stops with a
+// SimulationError naming the step, time, block, pair, the value, the bound
+// and dt/dt_crit. Per block (flagged in the kick loop): a non-finite state,
+// a collapsed area, a vertex moving too far in one step; every
+// energy_check_every steps: the total energy's growth.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <exception>
+#include <sstream>
+
+#include "simulation/internal.hpp"
+
+namespace dda {
+
+bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error) {
+  // The per-block flags were set before the kick loop's barrier: every
+  // thread takes the same branch. One thread reports the first failure
+  // (check_state) into `error`; true (for every thread) when it did.
+  bool failed = false;
+  for (const ThreadFlags& f : flags_) failed = failed || f.guard_failed;
+  if (!(failed || energy_due)) return false;
+  DDA_OMP(omp single)
+  {
+    steps_ = done;
+    time_ = static_cast<double>(steps_) * dt_;
+    try {
+      collect_contacts();
+      check_state(energy_due);  // stops at the failed block; the energy check when due
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }  // implicit barrier: every thread sees `error` before reading it
+  return static_cast<bool>(error);
+}
+
+[[noreturn]] void Simulation::stop(int block, const std::string& what) const {
+  std::ostringstream s;
+  s << "step " << steps_ << " (t = " << time_ << " s): block " << block;
+  // The pair through which the block takes its largest contact force.
+  double fmax = 0.0;
+  int other = -1;
+  for (const ContactInfo& c : contact_info_)
+    if ((c.cp == block || c.tp == block) && length(c.normal_force) > fmax) {
+      fmax = length(c.normal_force);
+      other = c.cp == block ? c.tp : c.cp;
+    }
+  if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
+  s << ": " << what << "; dt/dt_crit = ";
+  const double now = critical_time_step();
+  if (std::isfinite(now) && now < DBL_MAX) s << dt_ / now << " now, ";
+  else s << "undefined now (state not finite), ";
+  s << dt_ / dt_crit_prior_ << " predicted at start";
+  throw SimulationError(s.str());
+}
+
+Simulation::GuardFault Simulation::guard_fault(int i) const {
+  // Block i (free) after its kick: a non-finite state, a collapsed area, or
+  // a vertex that moved more in this step than max_step_motion of the
+  // thinnest block within its reach (itself and its candidates: a block in
+  // free flight is not stopped because a thin plate exists somewhere else).
+  const bool finite = vel_[i].allFinite() && std::isfinite(moments_[i].centroid.x) &&
+                      std::isfinite(moments_[i].centroid.y) && std::isfinite(moments_[i].area);
+  if (!finite) return GuardFault::kNonFinite;
+  if (!(moments_[i].area > 0.0)) return GuardFault::kAreaCollapsed;
+  const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
+  if (step_motion2_[i] > motion_limit * motion_limit) return GuardFault::kStepMotion;
+  return GuardFault::kNone;
+}
+
+void Simulation::check_state(bool energy_due) {
+  // The first block that fails a per-block guard, with the reason.
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    const GuardFault fault = guard_fault(i);
+    if (fault == GuardFault::kNone) continue;
+    std::ostringstream s;  // built only for the message
+    switch (fault) {
+      case GuardFault::kNone: continue;
+      case GuardFault::kNonFinite: stop(i, "non-finite velocity or position");
+      case GuardFault::kAreaCollapsed: s << "area collapsed to " << moments_[i].area << " m^2"; break;
+      case GuardFault::kStepMotion:
+        // Largest vertex motion of this step, |T(p) dd| at the vertices
+        // (squared, recorded by move_blocks as it moved them).
+        s << "a vertex moved " << std::sqrt(step_motion2_[i]) << " m in one step, more than "
+          << scene_.guards.max_step_motion << " of the smallest inscribed radius within reach (" << reach_radius_[i]
+          << " m)";
+        break;
+    }
+    stop(i, s.str());
+  }
+  if (energy_due) {
+    // energy() with this step's stored contact energies, in pair order.
+    Energy e = block_energy();
+    for (std::size_t k = 0; k < pair_loads_.size(); ++k)
+      if (pair_loads_[k].active) e.contact += pair_results_[k].energy;
+    energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
+    const double growth = (e.total() - energy0_) / std::max(energy_scale_, DBL_MIN);
+    if (growth > scene_.guards.max_energy_growth) {
+      int worst = 0;
+      double kmax = -1.0;
+      for (int i = 0; i < block_count(); ++i) {
+        if (fixed_[i]) continue;
+        const double k = vel_[i].head<2>().squaredNorm() * mass_[i];
+        if (k > kmax) {
+          kmax = k;
+          worst = i;
+        }
+      }
+      std::ostringstream s;
+      s << "total energy grew by " << growth << " of the largest mechanical energy (" << energy_scale_
+        << " J), more than " << scene_.guards.max_energy_growth;
+      stop(worst, s.str());
+    }
+  }
+}
+
+}  // namespace dda

@@ -1,0 +1,192 @@
+// Velocity Verlet (Paper A Sect. 2.3, Eqs. 6-8) per block: the half kick
+// and drift with the moved geometry and body forces (move_blocks), and the
+// contact forces summed in pair order through T(pg)^T (Eqs. 22-23, 28-29),
+// a^{n+1} from M (Eq. 5a) and the second half kick (gather_and_kick).
+#include <algorithm>
+
+#include "block_lanes.hpp"
+#include "simulation/internal.hpp"
+
+namespace dda {
+
+using detail::thread_index;
+using detail::kPrefetchBlocks;
+using detail::PhaseClock;
+using detail::seconds_since;
+using detail::smoothed;
+using detail::prefetch_polygon;
+
+namespace {
+
+bool inside(const Aabb& b, const Aabb& grown) {
+  return !(b.lo.x < grown.lo.x || b.lo.y < grown.lo.y || b.hi.x > grown.hi.x || b.hi.y > grown.hi.y);
+}
+
+}  // namespace
+
+void Simulation::move_blocks() {
+  // One pass per block: the half kick and drift of Eq. 8, the moved
+  // block's geometry, its body forces, and whether its box left its grown
+  // box (the broad phase's list then needs a rebuild).
+  const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
+  bool left_skin = false;
+  const BlockShare share = block_share();
+  const PhaseClock::time_point t0 = share.team ? PhaseClock::now() : PhaseClock::time_point{};
+  for (int i = share.begin; i < share.end; ++i) {
+    if (i < share.prefetch_end) prefetch_block(i + kPrefetchBlocks);
+    if (fixed_[i]) continue;
+    vel_[i] += 0.5 * dt_ * acc_[i];
+    const Vec6 dd = dt_ * vel_[i];  // Eq. 8
+    step_disp_[i] = dd;
+    disp_[i] += dd;
+    const Vec2 c = moments_[i].centroid;
+    start_centroid_[i] = c;
+    step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
+    if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+    update_block_geometry(i);
+    body_force(i);
+    if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
+  }
+  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  mine.left_skin = left_skin;
+  if (share.team && share.end > share.begin)
+    mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
+  team_barrier();
+}
+
+void Simulation::prefetch_block(int i) const {
+  // What moving block i reads and writes, for writing where it is written
+  // (the other core may hold a copy from the pair loop).
+  prefetch_polygon<1>(poly_[i]);
+  __builtin_prefetch(&vel_[i], 1);
+  __builtin_prefetch(&acc_[i]);
+  __builtin_prefetch(&moments_[i], 1);
+  __builtin_prefetch(&sides_[i], 1);
+  __builtin_prefetch(&boxes_[i], 1);
+  __builtin_prefetch(&disp_[i], 1);
+  __builtin_prefetch(&step_disp_[i], 1);
+}
+
+void Simulation::prefetch_gather(int i) const {
+  // Block i's pair loads (the other core wrote those of its pairs) and the
+  // force and velocity its kick writes.
+  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q)
+    __builtin_prefetch(&pair_loads_[block_pairs_[q].pair]);
+  __builtin_prefetch(&vel_[i], 1);
+  __builtin_prefetch(&force_[i], 1);
+}
+
+void Simulation::update_geometry() {
+  for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
+}
+
+void Simulation::update_block_geometry(int i) {
+  const PolygonGeometry g = update_polygon_geometry(poly_[i]);
+  moments_[i] = g.moments;
+  boxes_[i] = g.box;
+  sides_[i].tol = geometric_tolerance(g.box);
+  if (scene_.contact.integration == Integration::kPaperBisector) {
+    // Without a small edge the bisectors are the vertex rays, the same list
+    // from step to step: rebuilt only when a small edge comes or goes. The
+    // stored list is the vertex rays exactly when it has one ray per vertex
+    // (a virtual node adds a ray, or replaces two by one), 0 before the first.
+    const double small = scene_.contact.small_edge_fraction * h_[i];
+    const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
+    PotentialSide& side = sides_[i].side;
+    if (!(plain && side.bisector_count == poly_[i].count))
+      side.bisector_count =
+          bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
+  }
+  // Mass is conserved (set once, at t = 0): the density follows the strained area.
+  if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
+  density_[i] = mass_[i] / moments_[i].area;
+}
+
+void Simulation::body_force(int i) {
+  // Gravity (int T^T rho g dS = rho S g on the translation DOFs) and the
+  // step's initial stress on the strain DOFs (K d of Eq. 4 carried as
+  // accumulated stress because d is reset every step).
+  force_[i].setZero();
+  if (fixed_[i]) return;
+  const double m = density_[i] * moments_[i].area;
+  force_[i][0] = m * scene_.gravity.x;
+  force_[i][1] = m * scene_.gravity.y;
+  if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
+}
+
+void Simulation::gather_contact_forces(int i) {
+  // Block i's contact forces, Eqs. 22-23 and 28-29 through T(pg)^T, added
+  // in increasing pair order (the same bits for any thread count); and the
+  // smallest inscribed radius within its reach (itself and its candidates)
+  // for the step-motion guard. The sum is kept in lanes (point_load_lanes)
+  // and the arrays in locals: the force's stores could alias them.
+  const BlockPair* pairs = block_pairs_.data();
+  const PairLoad* loads = pair_loads_.data();
+  const double* radius = radius_.data();
+  double reach = radius[i];
+  const detail::Lanes c = detail::lanes(moments_[i].centroid);
+  const bool free_block = !fixed_[i];
+  Vec6& force = force_[i];
+  detail::Lanes6 sum{{force[0], force[1]}, {force[2], force[3]}, {force[4], force[5]}};
+  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
+    const BlockPair& bp = pairs[q];
+    const PairLoad& load = loads[bp.pair];
+    if (!load.candidate) continue;
+    reach = std::min(reach, radius[bp.other]);
+    if (!load.active || !free_block) continue;
+    const detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
+    if (bp.first) {
+      sum.g01 += g.g01;
+      sum.g23 += g.g23;
+      sum.g45 += g.g45;
+    } else {
+      sum.g01 -= g.g01;
+      sum.g23 -= g.g23;
+      sum.g45 -= g.g45;
+    }
+  }
+  force << sum.g01[0], sum.g01[1], sum.g23[0], sum.g23[1], sum.g45[0], sum.g45[1];
+  reach_radius_[i] = reach;
+}
+
+void Simulation::gather_and_kick() {
+  // Per block: its contact forces, a^{n+1}, the second half kick, and the
+  // per-block guards (flagged here, reported by check_state).
+  bool failed = false;
+  const BlockShare share = block_share();
+  const PhaseClock::time_point t0 = share.team ? PhaseClock::now() : PhaseClock::time_point{};
+  for (int i = share.begin; i < share.end; ++i) {
+    if (i < share.prefetch_end) prefetch_gather(i + kPrefetchBlocks);
+    gather_contact_forces(i);
+    if (fixed_[i]) continue;
+    kick_block(i);
+    if (guard_fault(i) != GuardFault::kNone) failed = true;
+  }
+  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  mine.guard_failed = failed;
+  if (share.team && share.end > share.begin)
+    mine.seconds_per_block =
+        smoothed(mine.seconds_per_block, mine.move_seconds_per_block + seconds_since(t0) / (share.end - share.begin));
+  team_barrier();
+}
+
+void Simulation::kick_block(int i) {
+  const AreaMoments& m = moments_[i];
+  const double mass = density_[i] * m.area;
+  acc_[i][0] = force_[i][0] / mass;
+  acc_[i][1] = force_[i][1] / mass;
+  if (strains_) {
+    // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
+    acc_[i].tail<4>() = rotation_strain_acceleration(m, density_[i], force_[i].tail<4>());
+  } else {
+    acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
+  }
+  vel_[i] += 0.5 * dt_ * acc_[i];
+}
+
+void Simulation::kick() {
+  for (int i = 0; i < block_count(); ++i)
+    if (!fixed_[i]) kick_block(i);
+}
+
+}  // namespace dda

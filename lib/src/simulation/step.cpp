@@ -1,0 +1,82 @@
+// The explicit DDA step as a table of contents: each phase lives in its own
+// file (see internal.hpp); run_steps below lists them in order.
+#include <exception>
+
+#include "simulation/internal.hpp"
+#include "team_barrier.hpp"
+
+namespace dda {
+
+void Simulation::step() { run_steps(1); }
+
+void Simulation::advance_to(double t) {
+  std::int64_t count = 0;
+  while (static_cast<double>(steps_ + count) * dt_ + 0.5 * dt_ < t) ++count;
+  run_steps(count);
+}
+
+void Simulation::run_steps(std::int64_t count) {
+  // Paper A Sect. 2.3: velocity Verlet (Eqs. 6-8) with the potential
+  // contact forces of Sect. 3 at t^{n+1}. One parallel region serves all
+  // `count` steps: every thread runs this loop and each phase shares out its
+  // own loop (per block or per near pair; team.cpp). Each block's and each
+  // pair's result is computed by one thread and each block sums its pair
+  // forces in pair order: the same bits for any thread count. A guard's
+  // SimulationError cannot leave the parallel region: it is caught where it
+  // is thrown, every thread stops after that step, and it is rethrown here.
+  if (count <= 0) return;
+  const std::int64_t first = steps_;
+  const int every = scene_.guards.energy_check_every;
+  std::exception_ptr error;
+  detail::TeamBarrier barrier;
+  barrier_ = &barrier;
+  flags_.assign(static_cast<std::size_t>(threads_), ThreadFlags{});
+  DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1))
+  {
+    start_team();  // team.cpp: first shares, barrier reset
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::int64_t done = first + k + 1;
+      const bool energy_due = every > 0 && done % every == 0;
+      // integration.cpp, Eqs. 7-8: v^{n+1/2} = v^n + h/2 a^n, move by
+      // h v^{n+1/2}; the moved geometry; body forces (gravity, Eq. 4's K d).
+      move_blocks();
+      // broad_phase.cpp: the near pairs, rebuilt when a block left its grown box.
+      update_near_pairs();
+      // contact_forces.cpp + friction.cpp: per pair, overlap and IP (Sect.
+      // 3.1), normal force and pg (Eqs. 10-20), friction (Eqs. 24-26).
+      pair_forces(energy_due);
+      // integration.cpp, Eqs. 22-23, 28-29, 6-7: F^{n+1} summed in pair
+      // order through T(pg)^T, a^{n+1}, v^{n+1}; per-block guard flags.
+      gather_and_kick();
+      if (detail::thread_index() == 0) balance_pair_split();  // team.cpp: the next pair loop's shares
+      // guards.cpp: a failed guard or a due energy check stops the run.
+      if (guards_stop(done, energy_due, error)) break;
+    }
+  }
+  barrier_ = nullptr;
+  if (error) std::rethrow_exception(error);
+  steps_ = first + count;
+  time_ = static_cast<double>(steps_) * dt_;
+  collect_contacts();
+}
+
+void Simulation::compute_forces() {
+  // Serial: the forces at the current state (the constructor's a^0).
+  for (int i = 0; i < block_count(); ++i) body_force(i);
+  rebuild_near_pairs();
+  pair_forces(false);
+  for (int i = 0; i < block_count(); ++i) gather_contact_forces(i);
+  collect_contacts();
+}
+
+void Simulation::collect_contacts() {
+  // The active pairs in pair order, for the accessors and the guards.
+  contact_info_.clear();
+  candidate_count_ = 0;
+  for (std::size_t k = 0; k < pair_loads_.size(); ++k) {
+    candidate_count_ += pair_loads_[k].candidate ? 1 : 0;
+    if (pair_loads_[k].active) contact_info_.push_back(pair_results_[k].info);
+  }
+}
+
+}  // namespace dda
