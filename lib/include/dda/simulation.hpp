@@ -168,16 +168,22 @@ class Simulation {
   void rebuild_near_pairs();
   // contact_forces.cpp: per near pair, overlap, IP, contact force
   void pair_forces(bool with_energy);
-  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol);
+  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault);
   // friction.cpp
   void pair_friction(PairResult& r, bool was_active, const NormalForce& nf);
   double friction_tan(int a, int b) const;
-  // guards.cpp
+  // guards.cpp, penetration_guard.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
   GuardFault guard_fault(int i) const;
   bool guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error);
   void check_state(bool energy_due);
+  bool pair_guard_fault(const PairResult& r) const;
+  double pair_energy_bound(int a, int b) const;
+  double approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed = nullptr, double* mass = nullptr) const;
+  void check_pairs() const;
+  std::string block_label(int i) const;
   [[noreturn]] void stop(int block, const std::string& what) const;
+  [[noreturn]] void stop_pair(int a, int b, const std::string& what) const;
   // energy.cpp
   Energy block_energy() const;
   // critical_step.cpp

@@ -32,7 +32,7 @@ constexpr long kWorkOther = 1;
 // Inlined into the pair loop (its only caller): a call frame of its own
 // costs about as much as the bookkeeping it does.
 [[gnu::always_inline]] inline bool Simulation::pair_force(long k, bool was_active, const Polygon& ip,
-                                                          const IpEdge* source, double tol) {
+                                                          const IpEdge* source, double tol, bool& pair_fault) {
   const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
   const ContactParams& c = scene_.contact;
   const NormalForce nf =
@@ -49,6 +49,20 @@ constexpr long kWorkOther = 1;
   info.ip_length = 0.5 * nf.ip_perimeter;
   info.sliding = false;
   if (friction_) pair_friction(r, was_active, nf);  // friction.cpp, Eqs. 24-26
+  const StabilityGuards& g = scene_.guards;
+  if (g.max_penetration > 0.0 || g.max_approach_energy > 0.0) {
+    // The penetration guard's measures (penetration_guard.cpp): the depth,
+    // the IP's width -- computed only where its cheap upper bound, the IP's
+    // extent along the normal force (a few dot products on the IP at hand),
+    // exceeds the bound -- and at a first contact the relative approach energy.
+    const double fn = length(nf.force);
+    r.depth = detail::extent_along(ip, nf.force) / fn;
+    if (r.depth > g.max_penetration * std::min(radius_[cp], radius_[tp])) r.depth = detail::min_width(ip);
+    r.approach_energy = was_active || !(g.max_approach_energy > 0.0)
+                            ? 0.0
+                            : approach_energy(cp, tp, nf.point, nf.force / fn);
+    if (pair_guard_fault(r)) pair_fault = true;
+  }
   PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
   load.active = true;
   load.force = info.normal_force + info.tangential_force;
@@ -82,6 +96,7 @@ void Simulation::pair_forces(bool with_energy) {
   Polygon ip;
   std::array<IpEdge, kMaxVertices> source;
   long work = 0;
+  bool pair_fault = false;  // a pair failed the penetration guard
   const PhaseClock::time_point t0 = team > 1 ? PhaseClock::now() : PhaseClock::time_point{};
   if (team > 1 && t == 0) balance_block_split();
   const long prefetch_end = team > 1 ? end - kPrefetchPairs : begin;
@@ -106,7 +121,7 @@ void Simulation::pair_forces(bool with_energy) {
     const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
     if (overlap_and_intersection(poly[p.i], poly[p.j], tol, ip, source.data(), &p.witness) !=
             OverlapState::kOverlapping ||
-        ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol)) {
+        ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol, pair_fault)) {
       work += kWorkCandidate;
       continue;
     }
@@ -117,6 +132,9 @@ void Simulation::pair_forces(bool with_energy) {
       pair_results_[static_cast<std::size_t>(k)].energy = contact_energy(sides[p.i].side, sides[p.j].side, ip, tol);
     }
   }
+  // Read by every thread after the barrier below (run_steps' flags; none
+  // before the first step).
+  if (!flags_.empty()) flags_[static_cast<std::size_t>(t)].pair_failed = pair_fault;
   if (team > 1) {
     // The share's cost for the next split: its estimated work at this
     // core's measured speed.

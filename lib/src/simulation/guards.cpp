@@ -1,7 +1,8 @@
 // The guards: a run that leaves the method's domain stops with a
 // SimulationError naming the step, time, block, pair, the value, the bound
 // and dt/dt_crit. Per block (flagged in the kick loop): a non-finite state,
-// a collapsed area, a vertex moving too far in one step; every
+// a collapsed area, a vertex moving too far in one step; per pair (flagged
+// in the pair loop): the penetration guard (penetration_guard.cpp); every
 // energy_check_every steps: the total energy's growth.
 #include <algorithm>
 #include <cfloat>
@@ -13,12 +14,28 @@
 
 namespace dda {
 
+namespace {
+
+// The end of every stop message: dt against the critical step now (the
+// current contacts) and as predicted at the start.
+std::string dt_ratio_text(const Simulation& sim) {
+  std::ostringstream s;
+  s << "dt/dt_crit = ";
+  const double now = sim.critical_time_step();
+  if (std::isfinite(now) && now < DBL_MAX) s << sim.dt() / now << " now, ";
+  else s << "undefined now (state not finite), ";
+  s << sim.dt() / sim.predicted_critical_step() << " predicted at start";
+  return s.str();
+}
+
+}  // namespace
+
 bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error) {
   // The per-block flags were set before the kick loop's barrier: every
   // thread takes the same branch. One thread reports the first failure
   // (check_state) into `error`; true (for every thread) when it did.
   bool failed = false;
-  for (const ThreadFlags& f : flags_) failed = failed || f.guard_failed;
+  for (const ThreadFlags& f : flags_) failed = failed || f.guard_failed || f.pair_failed;
   if (!(failed || energy_due)) return false;
   DDA_OMP(omp single)
   {
@@ -46,12 +63,28 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
       other = c.cp == block ? c.tp : c.cp;
     }
   if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
-  s << ": " << what << "; dt/dt_crit = ";
-  const double now = critical_time_step();
-  if (std::isfinite(now) && now < DBL_MAX) s << dt_ / now << " now, ";
-  else s << "undefined now (state not finite), ";
-  s << dt_ / dt_crit_prior_ << " predicted at start";
+  s << ": " << what << "; " << dt_ratio_text(*this);
   throw SimulationError(s.str());
+}
+
+[[noreturn]] void Simulation::stop_pair(int a, int b, const std::string& what) const {
+  std::ostringstream s;
+  s << "step " << steps_ << " (t = " << time_ << " s): pair (" << a << ", " << b << ") = " << block_label(a)
+    << " and " << block_label(b) << ": " << what << "; " << dt_ratio_text(*this);
+  throw SimulationError(s.str());
+}
+
+std::string Simulation::block_label(int i) const {
+  // "block 3 'name'" (the scene's name, if any) or "boundaries[k]".
+  std::ostringstream s;
+  if (i >= scene_blocks_) {
+    s << "boundaries[" << i - scene_blocks_ << "]";
+  } else {
+    s << "block " << i;
+    const std::string& name = scene_.blocks[static_cast<std::size_t>(i)].name;
+    if (!name.empty()) s << " '" << name << "'";
+  }
+  return s.str();
 }
 
 Simulation::GuardFault Simulation::guard_fault(int i) const {
@@ -89,6 +122,7 @@ void Simulation::check_state(bool energy_due) {
     }
     stop(i, s.str());
   }
+  check_pairs();  // penetration_guard.cpp: the first pair that fails the penetration guard
   if (energy_due) {
     // energy() with this step's stored contact energies, in pair order.
     Energy e = block_energy();

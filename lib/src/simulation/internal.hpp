@@ -10,11 +10,14 @@
 //   contact_forces.cpp  the pair loop: overlap, IP, normal force (Eqs. 10-20)
 //   friction.cpp        Coulomb friction with history (Eqs. 24-26)
 //   guards.cpp          the per-block and energy guards, the stop message
+//   penetration_guard.cpp  the penetration guard (depth, approach energy)
 //   energy.cpp          energy and momentum
 //   critical_step.cpp   the critical time step bounds
 //   team.cpp            the thread team's barrier and shares
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cfloat>
 #include <chrono>
 
 #if defined(DDA_HAVE_OPENMP)
@@ -48,6 +51,12 @@ struct Simulation::PairHistory {
 struct Simulation::PairResult {
   ContactInfo info;
   double energy = 0.0;  // penalty energy, J/m (set on steps with an energy check)
+  // The penetration guard's measures (set while a check is on): the depth,
+  // m (the intersection polygon's width where it may exceed the bound, else
+  // its extent along the normal force, an upper bound of the width), and
+  // the relative approach energy, J/m, at the pair's first contact (0 after it).
+  double depth = 0.0;
+  double approach_energy = 0.0;
   PairHistory history;
 };
 
@@ -78,6 +87,7 @@ struct Simulation::BlockPair {
 struct alignas(64) Simulation::ThreadFlags {
   bool left_skin = false;     // a block of this thread's share left its grown box
   bool guard_failed = false;  // a block of this thread's share failed a per-block guard
+  bool pair_failed = false;   // a pair of this thread's share failed the penetration guard
   double pair_work = 0.0;     // its share of the last pair loop: estimated work x seconds_per_work
   // Measured on this thread's core (team runs; only the shares, never the
   // results, depend on them): seconds per unit of estimated pair work and
@@ -162,5 +172,49 @@ inline int team_size() {
 #endif
 }
 
+// The extent of `ip` along direction `dir` (any length), times |dir|:
+// max - min of v . dir over its vertices. Along the pair's normal force
+// (divided by its length): an upper bound of min_width(ip), a few dot
+// products.
+inline double extent_along(const Polygon& ip, Vec2 dir) {
+  double lo = DBL_MAX, hi = -DBL_MAX;
+  for (int q = 0; q < ip.count; ++q) {
+    const double x = dot(ip.v[q], dir);
+    lo = x < lo ? x : lo;
+    hi = x > hi ? x : hi;
+  }
+  return hi - lo;
+}
+
+// The width of convex polygon `ip`: its smallest extent over all
+// directions, which is attained across one of its edges (rotating
+// calipers): min over edges of the farthest vertex behind the edge's line.
+// A zero-length edge (no normal) is skipped. The penetration guard's depth:
+// a thin sliver along a joint has width ~0 whatever its length, where the
+// extent along its (then ill-defined) normal force can be long.
+inline double min_width(const Polygon& ip) {
+  double width = DBL_MAX;
+  for (int e = 0; e < ip.count; ++e) {
+    const Vec2 n = ip.n[e];
+    if (!(dot(n, n) > 0.5)) continue;
+    const double line = dot(n, ip.v[e]);
+    double deepest = 0.0;
+    for (int q = 0; q < ip.count; ++q) deepest = std::max(deepest, line - dot(n, ip.v[q]));
+    width = std::min(width, deepest);
+  }
+  return width == DBL_MAX ? 0.0 : width;
+}
+
 }  // namespace detail
+
+// Whether pair result r fails the penetration guard (guards.cpp): inlined
+// into the pair loop; the energy bound is computed only at a first contact
+// that approaches.
+inline bool Simulation::pair_guard_fault(const PairResult& r) const {
+  const StabilityGuards& g = scene_.guards;
+  const int a = r.info.cp, b = r.info.tp;
+  if (r.depth > g.max_penetration * std::min(radius_[a], radius_[b]) && g.max_penetration > 0.0) return true;
+  return r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * pair_energy_bound(a, b);
+}
+
 }  // namespace dda

@@ -53,6 +53,10 @@ void check_scene(const Scene& scene) {
   if (!(std::isfinite(scene.guards.max_energy_growth) && scene.guards.max_energy_growth > 0.0))
     fail("guards.max_energy_growth", "must be positive");
   if (scene.guards.energy_check_every < 0) fail("guards.energy_check_every", "must be >= 0");
+  if (!(std::isfinite(scene.guards.max_penetration) && scene.guards.max_penetration >= 0.0))
+    fail("guards.max_penetration", "must be >= 0 (0 switches the penetration check off)");
+  if (!(std::isfinite(scene.guards.max_approach_energy) && scene.guards.max_approach_energy >= 0.0))
+    fail("guards.max_approach_energy", "must be >= 0 (0 switches the approach-energy check off)");
   if (!(std::isfinite(scene.initial_overlap) && scene.initial_overlap >= 0.0))
     fail("initial_overlap", "must be finite and >= 0");
   if (!(std::isfinite(scene.duration) && scene.duration >= 0.0)) fail("duration", "must be finite and >= 0");
