@@ -457,7 +457,8 @@ ContactParams read_contact(const Reader& r, const json& v, const std::string& pa
 // The solver's stability guards; every key optional (the kernel checks the
 // ranges, with the same field names: guards.max_step_motion, ...).
 StabilityGuards read_guards(const Reader& r, const json& v, const std::string& path) {
-  r.object(v, path, {"max_step_motion", "max_energy_growth", "energy_check_every"});
+  r.object(v, path,
+           {"max_step_motion", "max_energy_growth", "energy_check_every", "max_penetration", "max_approach_energy"});
   StabilityGuards g;
   if (const json* x = Reader::find(v, "max_step_motion"))
     g.max_step_motion = r.number(*x, join_path(path, "max_step_motion"));
@@ -465,6 +466,10 @@ StabilityGuards read_guards(const Reader& r, const json& v, const std::string& p
     g.max_energy_growth = r.number(*x, join_path(path, "max_energy_growth"));
   if (const json* x = Reader::find(v, "energy_check_every"))
     g.energy_check_every = r.integer(*x, join_path(path, "energy_check_every"));
+  if (const json* x = Reader::find(v, "max_penetration"))
+    g.max_penetration = r.number(*x, join_path(path, "max_penetration"));
+  if (const json* x = Reader::find(v, "max_approach_energy"))
+    g.max_approach_energy = r.number(*x, join_path(path, "max_approach_energy"));
   return g;
 }
 
@@ -743,7 +748,9 @@ std::string write_scene(const SceneFile& file) {
   root["duration"] = s.duration;
   root["guards"] = {{"max_step_motion", s.guards.max_step_motion},
                     {"max_energy_growth", s.guards.max_energy_growth},
-                    {"energy_check_every", s.guards.energy_check_every}};
+                    {"energy_check_every", s.guards.energy_check_every},
+                    {"max_penetration", s.guards.max_penetration},
+                    {"max_approach_energy", s.guards.max_approach_energy}};
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
                     {"tracked_blocks", file.output.tracked_blocks}};

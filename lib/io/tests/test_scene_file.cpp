@@ -454,6 +454,8 @@ TEST_CASE("dt_fraction, guards and contact.small_edge_rays: defaults", "[io][sce
   CHECK(f.scene.guards.max_step_motion == defaults.guards.max_step_motion);
   CHECK(f.scene.guards.max_energy_growth == defaults.guards.max_energy_growth);
   CHECK(f.scene.guards.energy_check_every == defaults.guards.energy_check_every);
+  CHECK(f.scene.guards.max_penetration == defaults.guards.max_penetration);
+  CHECK(f.scene.guards.max_approach_energy == defaults.guards.max_approach_energy);
   CHECK(f.scene.contact.small_edge_rays == dda::SmallEdgeRays::kVirtualAndVertex);
 }
 
@@ -487,6 +489,10 @@ TEST_CASE("dt_fraction, guards and contact.small_edge_rays are read", "[io][scen
   CHECK(parse_scene(j.dump(), "scene.json").scene.guards.energy_check_every == 0);
   j["guards"] = {{"energy_check_every", 3.0}};  // integral doubles are integers
   CHECK(parse_scene(j.dump(), "scene.json").scene.guards.energy_check_every == 3);
+  j["guards"] = {{"max_penetration", 0}, {"max_approach_energy", 2.0}};  // 0 switches the depth check off
+  f = parse_scene(j.dump(), "scene.json");
+  CHECK(f.scene.guards.max_penetration == 0.0);
+  CHECK(f.scene.guards.max_approach_energy == 2.0);
   j["guards"] = json::object();
   CHECK(parse_scene(j.dump(), "scene.json").scene.guards.max_step_motion == dda::StabilityGuards{}.max_step_motion);
 
@@ -589,6 +595,8 @@ TEST_CASE("dt_fraction, guards and contact.small_edge_rays round-trip", "[io][sc
     CHECK(g.scene.guards.max_step_motion == f.scene.guards.max_step_motion);
     CHECK(g.scene.guards.max_energy_growth == f.scene.guards.max_energy_growth);
     CHECK(g.scene.guards.energy_check_every == f.scene.guards.energy_check_every);
+    CHECK(g.scene.guards.max_penetration == f.scene.guards.max_penetration);
+    CHECK(g.scene.guards.max_approach_energy == f.scene.guards.max_approach_energy);
     CHECK(g.scene.contact.small_edge_rays == f.scene.contact.small_edge_rays);
     return std::make_pair(f, json::parse(text));
   };
@@ -615,7 +623,9 @@ TEST_CASE("dt_fraction, guards and contact.small_edge_rays round-trip", "[io][sc
   CHECK(dw["dt_fraction"] == 0);
   CHECK(dw["guards"] == json({{"max_step_motion", d.scene.guards.max_step_motion},
                               {"max_energy_growth", d.scene.guards.max_energy_growth},
-                              {"energy_check_every", d.scene.guards.energy_check_every}}));
+                              {"energy_check_every", d.scene.guards.energy_check_every},
+                              {"max_penetration", d.scene.guards.max_penetration},
+                              {"max_approach_energy", d.scene.guards.max_approach_energy}}));
   CHECK(dw["contact"]["small_edge_rays"] == "virtual_and_vertex");
 }
 
