@@ -108,15 +108,15 @@ struct StabilityGuards {
   // only removes it. Checked every `energy_check_every` steps; 0 disables.
   double max_energy_growth = 0.5;
   int energy_check_every = 100;
-  // Penetration guard (derived in lib/src/simulation/guards.cpp from Eqs.
-  // 10-14). A pair's potential has its maximum kn r / H at the inscribed-
-  // circle centre of a block (r its inscribed radius): material pressed
-  // deeper than r into a block is pushed on, through it, not back, and a
-  // pair stores at most a finite energy. The run stops before two blocks
-  // cross when
+  // Penetration guard (derived in lib/src/simulation/penetration_guard.cpp
+  // from Eqs. 10-14). A block's potential is largest, kn r / H, at its
+  // inscribed-circle centre (r its inscribed radius): material pressed past
+  // a block's middle is pushed on, through it, not back, and a pair stores
+  // at most a finite energy. The run stops before two blocks cross when
   //  - a pair's penetration depth (the intersection polygon's width, its
   //    smallest extent over all directions) exceeds max_penetration times
-  //    the smaller inscribed radius of the two blocks, or
+  //    the smaller half-thickness of the two blocks across the contact
+  //    (half their extent along the contact normal, at least r), or
   //  - at a pair's first contact, the relative approach energy (1/2 m_eff
   //    v_n^2, v_n the normal closing speed at the loading point, m_eff the
   //    pair's effective mass there) exceeds max_approach_energy times the

@@ -51,13 +51,20 @@ constexpr long kWorkOther = 1;
   if (friction_) pair_friction(r, was_active, nf);  // friction.cpp, Eqs. 24-26
   const StabilityGuards& g = scene_.guards;
   if (g.max_penetration > 0.0 || g.max_approach_energy > 0.0) {
-    // The penetration guard's measures (penetration_guard.cpp): the depth,
-    // the IP's width -- computed only where its cheap upper bound, the IP's
-    // extent along the normal force (a few dot products on the IP at hand),
-    // exceeds the bound -- and at a first contact the relative approach energy.
+    // The penetration guard's measures (penetration_guard.cpp): the depth
+    // and its bound, and at a first contact the relative approach energy.
+    // The IP's extent along the normal force (a few dot products on the IP
+    // at hand) bounds the depth from above, and the smaller inscribed
+    // radius bounds the bound from below: only a pair past that cheap test
+    // gets its IP's width and the blocks' half-thicknesses along the normal.
     const double fn = length(nf.force);
     r.depth = detail::extent_along(ip, nf.force) / fn;
-    if (r.depth > g.max_penetration * std::min(radius_[cp], radius_[tp])) r.depth = detail::min_width(ip);
+    r.depth_bound = g.max_penetration * std::min(radius_[cp], radius_[tp]);
+    if (r.depth > r.depth_bound) {
+      r.depth = detail::min_width(ip);
+      r.depth_bound = 0.5 * g.max_penetration *
+                      std::min(detail::extent_along(poly_[cp], nf.force), detail::extent_along(poly_[tp], nf.force)) / fn;
+    }
     r.approach_energy = was_active || !(g.max_approach_energy > 0.0)
                             ? 0.0
                             : approach_energy(cp, tp, nf.point, nf.force / fn);

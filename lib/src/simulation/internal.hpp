@@ -51,11 +51,14 @@ struct Simulation::PairHistory {
 struct Simulation::PairResult {
   ContactInfo info;
   double energy = 0.0;  // penalty energy, J/m (set on steps with an energy check)
-  // The penetration guard's measures (set while a check is on): the depth,
-  // m (the intersection polygon's width where it may exceed the bound, else
-  // its extent along the normal force, an upper bound of the width), and
-  // the relative approach energy, J/m, at the pair's first contact (0 after it).
+  // The penetration guard's measures (set while a check is on): the depth
+  // and its bound, m (where the depth may exceed the bound: the
+  // intersection polygon's width and max_penetration times the smaller
+  // half-thickness of the blocks along the normal; elsewhere upper and lower
+  // bounds of them), and the relative approach energy, J/m, at the pair's
+  // first contact (0 after it).
   double depth = 0.0;
+  double depth_bound = 0.0;
   double approach_energy = 0.0;
   PairHistory history;
 };
@@ -212,9 +215,8 @@ inline double min_width(const Polygon& ip) {
 // that approaches.
 inline bool Simulation::pair_guard_fault(const PairResult& r) const {
   const StabilityGuards& g = scene_.guards;
-  const int a = r.info.cp, b = r.info.tp;
-  if (r.depth > g.max_penetration * std::min(radius_[a], radius_[b]) && g.max_penetration > 0.0) return true;
-  return r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * pair_energy_bound(a, b);
+  if (r.depth > r.depth_bound && g.max_penetration > 0.0) return true;
+  return r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * pair_energy_bound(r.info.cp, r.info.tp);
 }
 
 }  // namespace dda

@@ -7,14 +7,19 @@
 // = kn r / H, r its inscribed radius. The force on CP (Eq. 10) integrates
 // grad phi_CP - grad phi_TP over the intersection polygon IP (Eq. 11: the
 // same on its boundary): TP pushes each part of CP inside it toward TP's
-// nearest exit. While CP's material lies less than r_TP deep behind the face
-// it entered through, that face is the nearest exit and the force pushes
-// the blocks apart; past TP's medial axis (depth r_TP at the centre) the
-// nearest exit is the far side and TP's potential pulls CP on, through it.
-// The depth of no return is therefore at most r_min = min(r_CP, r_TP): for
-// two equal squares head on the net force peaks at depth r and falls to
-// zero at full overlap (2 r); for a corner driven into a thin plate it
-// turns at r_plate.
+// nearest exit. While CP's material has not passed TP's medial axis, the
+// nearest exit is the face it entered through and the force pushes the
+// blocks apart; past it the nearest exit is the far side and TP's
+// potential pulls CP on, through it. Along the line of approach n the
+// medial axis lies about half TP's extent along n behind the entry face:
+// its half-thickness across the contact, h_TP = extent(TP, n) / 2 >= r_TP
+// (= r for a face of a square; the inscribed-circle centre, 0.71 m deep,
+// for a square's corner; the mid-plane for a plate hit on its face). The
+// depth of no return is therefore about h_min = min(h_CP, h_TP): for two
+// equal squares head on the net force peaks at depth r and falls to zero at
+// full overlap (2 r); a corner driven into a thin plate is pulled through
+// past h_plate. A thin block driven end-on into a large one is not at risk
+// when its own thickness is penetrated: across the contact it is long.
 //
 // The largest energy a pair can store. The energy of a pair is the
 // integral of phi_CP + phi_TP over IP (contact_energy; Eq. 10's force is
@@ -36,13 +41,14 @@
 //    k = kn L (1/H_CP + 1/H_TP) that stores E = k d^2 / 2; for a corner of
 //    angle alpha driven in by delta it is delta min(1, 2 sin(alpha / 2));
 //    a sliver along a joint has width ~0 however long it is (the normal
-//    force of a vanishing overlap has no reliable direction, so the extent
-//    along it is used only as the cheap upper bound that lets the pair loop
-//    skip the width of a shallow pair). Stop when d > max_penetration r_min
+//    force of a vanishing overlap has no reliable direction: the IP's extent
+//    along it is only the cheap upper bound of d with which the pair loop
+//    skips the width of a shallow pair, and r_min = min(r_CP, r_TP) <= h_min
+//    the cheap lower bound of h_min). Stop when d > max_penetration h_min
 //    (default half the depth of no return). The depth grows per step by at
 //    most the two blocks' vertex motions, which the step-motion guard keeps
-//    below max_step_motion (0.25) r_min each: the check cannot be stepped
-//    over between the bound and r_min.
+//    below max_step_motion (0.25) r_min <= 0.25 h_min each: the check cannot
+//    be stepped over between the bound and h_min.
 //  - approach energy, at a pair's first contact: E_app = m_eff v_n^2 / 2,
 //    v_n the normal closing speed at the loading point pg and 1 / m_eff =
 //    sum over the two blocks of 1/m + ((pg - c) x n)^2 / I (rigid, a fixed
@@ -100,8 +106,10 @@ void Simulation::check_pairs() const {
     double speed = 0.0, m_eff = 0.0;
     const double e_now = approach_energy(a, b, c.point, n, &speed, &m_eff);
     const double e_max = pair_energy_bound(a, b);
-    const double r_min = std::min(radius_[a], radius_[b]);
-    const int thin = radius_[a] <= radius_[b] ? a : b;
+    // The half-thicknesses across the contact (as the pair loop took them).
+    const double h_a = 0.5 * detail::extent_along(poly_[a], n), h_b = 0.5 * detail::extent_along(poly_[b], n);
+    const double h_min = std::min(h_a, h_b);
+    const int thin = h_a <= h_b ? a : b;
     const double kn = scene_.contact.kn;
     std::ostringstream s;
     if (r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * e_max) {
@@ -116,14 +124,15 @@ void Simulation::check_pairs() const {
     } else {
       // The depth a flat contact of this length would reach if the closing
       // energy went into its spring, and the kn that keeps it at the bound.
-      const double bound = g.max_penetration * r_min;
+      const double bound = r.depth_bound;
       const double spring = kn * c.ip_length * (1.0 / h_[a] + 1.0 / h_[b]);
       const double reach = std::sqrt(r.depth * r.depth + 2.0 * e_now / spring);
       s << "penetration depth " << r.depth << " m (the intersection polygon's width; "
-        << r.depth / h_[a] << " H) is " << r.depth / r_min << " of the inscribed radius " << r_min << " m of "
-        << block_label(thin) << ", more than guards.max_penetration = " << g.max_penetration
-        << ": at depth r the potential (Eq. 12, largest at the inscribed-circle centre) stops pushing the blocks "
-           "apart and they pass through each other (closing speed "
+        << r.depth / h_[a] << " H) is " << r.depth / h_min << " of the half-thickness " << h_min
+        << " m across the contact of " << block_label(thin) << ", more than guards.max_penetration = "
+        << g.max_penetration << " (bound " << bound
+        << " m): past that block's middle its potential (Eq. 12) stops pushing the blocks apart and they pass "
+           "through each other (closing speed "
         << speed << " m/s, approach energy " << e_now << " J/m; the pair stores at most " << e_max
         << " J/m). Raise contact.kn to about " << kn * (reach / bound) * (reach / bound)
         << " Pa or more (the depth falls as 1/sqrt(kn); lower dt with it), or lower the impact speed; "
