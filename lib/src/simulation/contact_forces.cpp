@@ -58,12 +58,15 @@ constexpr long kWorkOther = 1;
     // radius bounds the bound from below: only a pair past that cheap test
     // gets its IP's width and the blocks' half-thicknesses along the normal.
     const double fn = length(nf.force);
-    r.depth = detail::extent_along(ip, nf.force) / fn;
-    r.depth_bound = g.max_penetration * std::min(radius_[cp], radius_[tp]);
-    if (r.depth > r.depth_bound) {
-      r.depth = detail::min_width(ip);
-      r.depth_bound = 0.5 * g.max_penetration *
-                      std::min(detail::extent_along(poly_[cp], nf.force), detail::extent_along(poly_[tp], nf.force)) / fn;
+    if (g.max_penetration > 0.0) {
+      r.depth = detail::extent_along(ip, nf.force) / fn;
+      r.depth_bound = g.max_penetration * std::min(radius_[cp], radius_[tp]);
+      if (r.depth > r.depth_bound) {
+        r.depth = detail::min_width(ip);
+        r.depth_bound = 0.5 * g.max_penetration *
+                        std::min(detail::extent_along(poly_[cp], nf.force), detail::extent_along(poly_[tp], nf.force)) /
+                        fn;
+      }
     }
     r.approach_energy = was_active || !(g.max_approach_energy > 0.0)
                             ? 0.0
