@@ -102,6 +102,11 @@ struct StabilityGuards {
   // candidates): beyond it a vertex can pass through a thin block between
   // two contact checks (flip-through).
   double max_step_motion = 0.25;
+  // Largest error of the energy budget (Energy::balance_error: kinetic +
+  // gravity + strain + contact + friction springs + dissipated work against
+  // the initial energy), relative to the largest mechanical energy seen so
+  // far; checked with the energy growth below. 0 switches it off.
+  double max_balance_error = 0.1;
   // Largest growth of the total energy above its initial value, relative to
   // the largest mechanical (kinetic + strain + contact) energy seen so far.
   // Without damping an explicit run conserves energy to O(dt^2); friction

@@ -35,12 +35,25 @@ struct SimulationError : std::runtime_error {
 // Throws SceneError for the first problem found in the scene.
 void check_scene(const Scene& scene);
 
+// The energy of the state and its budget, J/m: initial = total() +
+// dissipated, up to the time integration's error (O(dt^2) without friction).
 struct Energy {
   double kinetic = 0.0;
   double gravity = 0.0;  // -sum m g.x_c, relative to the origin
   double strain = 0.0;
   double contact = 0.0;  // penalty energy stored in overlaps
-  double total() const { return kinetic + gravity + strain + contact; }
+  // Elastic energy of the friction springs of the pairs in contact:
+  // 1/2 kt |d_tan|^2 of each sticking pair (and of a pair sliding under the
+  // return mapping, its d_tan returned onto the limit); none in a pair
+  // sliding under the paper's rule, which keeps no shear (energy.cpp).
+  double friction_spring = 0.0;
+  // Work that friction took out of the blocks since t = 0 and no spring
+  // holds (sliding, shear dropped by a restart or a separation). The solver
+  // has no damping.
+  double dissipated = 0.0;
+  double initial = 0.0;  // total() at t = 0
+  double total() const { return kinetic + gravity + strain + contact + friction_spring; }
+  double balance_error() const { return total() + dissipated - initial; }
 };
 
 // A contact as seen in the last force evaluation.
@@ -49,6 +62,7 @@ struct ContactInfo {
   Vec2 normal_force{};   // on CP, N
   Vec2 tangential_force{};
   Vec2 point{};          // loading point pg
+  double couple = 0.0;   // pure moment on CP besides the forces at pg (pg kept in the IP), N m/m
   double ip_area = 0.0;
   double ip_length = 0.0;  // half the IP perimeter: the contact length, m
   bool sliding = false;
@@ -180,6 +194,8 @@ class Simulation {
   [[noreturn]] void stop(int block, const std::string& what) const;
   // energy.cpp
   Energy block_energy() const;
+  void add_friction_energy(Energy& e) const;
+  void bank_friction_work(const std::vector<NearPair>& kept);
   // critical_step.cpp
   void predict_critical_step();
   double block_strain_omega2(int i) const;
@@ -221,6 +237,7 @@ class Simulation {
   std::vector<double> radius_, reach_radius_;  // inscribed radii at t = 0; per-step reach
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
+  double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m
 
   // Contacts. The broad phase's near pairs (i < j, sorted) each own a
   // result slot (pair_results_, pair_loads_) that lives as long as the pair

@@ -134,7 +134,12 @@ void Simulation::gather_contact_forces(int i) {
     if (!load.candidate) continue;
     reach = std::min(reach, radius[bp.other]);
     if (!load.active || !free_block) continue;
-    const detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
+    detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
+    // A pair whose pg was kept within its IP carries the rest of Eq. 20's
+    // moment as a couple on the rotation DOF (+ on the first block, - on
+    // the second, as the force): only then, so that every other sum keeps
+    // its bits.
+    if (load.couple != 0.0) g.g23[0] += load.couple;
     if (bp.first) {
       sum.g01 += g.g01;
       sum.g23 += g.g23;

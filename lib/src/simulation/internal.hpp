@@ -40,6 +40,7 @@ struct Simulation::PairHistory {
   Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
   Vec2 slide_dir{};       // sliding direction s of the last sliding step
   Vec2 point{};           // pg of the last force evaluation
+  Vec2 ft{};              // tangential force on CP of the last evaluation (the friction work's trapezoid)
   bool sliding = false;
 };
 
@@ -48,6 +49,9 @@ struct Simulation::PairHistory {
 struct Simulation::PairResult {
   ContactInfo info;
   double energy = 0.0;  // penalty energy, J/m (set on steps with an energy check)
+  // Work friction took out of the two blocks while this pair was near
+  // (outlives the history's restarts), J/m; only with friction.
+  double friction_work = 0.0;
   PairHistory history;
 };
 
@@ -62,6 +66,7 @@ struct Simulation::NearPair {
 struct Simulation::PairLoad {
   Vec2 force{};            // normal + tangential force on the pair's first block, N/m
   Vec2 point{};            // loading point pg
+  double couple = 0.0;     // pure moment on the first block besides force at point (NormalForce::couple), N m/m
   bool candidate = false;  // the two boxes overlap at this step
   bool active = false;     // in contact: force, point and the PairResult are this step's
 };

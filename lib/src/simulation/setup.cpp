@@ -53,6 +53,8 @@ void check_scene(const Scene& scene) {
   if (!(std::isfinite(scene.guards.max_energy_growth) && scene.guards.max_energy_growth > 0.0))
     fail("guards.max_energy_growth", "must be positive");
   if (scene.guards.energy_check_every < 0) fail("guards.energy_check_every", "must be >= 0");
+  if (!(std::isfinite(scene.guards.max_balance_error) && scene.guards.max_balance_error >= 0.0))
+    fail("guards.max_balance_error", "must be >= 0 (0 switches the energy budget check off)");
   if (!(std::isfinite(scene.initial_overlap) && scene.initial_overlap >= 0.0))
     fail("initial_overlap", "must be finite and >= 0");
   if (!(std::isfinite(scene.duration) && scene.duration >= 0.0)) fail("duration", "must be finite and >= 0");
