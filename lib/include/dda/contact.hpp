@@ -40,7 +40,8 @@ enum class LoadingPoint {
   // The crossing where it lies inside the IP (the same bits as kPaper);
   // outside, the IP's boundary point on the auxiliary line nearest to it,
   // and the moment the force no longer carries there as a couple (see
-  // normal_contact_force). Not a rule of the paper.
+  // contact.cpp, bound_to_ip). Beyond the paper, where the paper's point
+  // leaves the contact; what the simulation uses (it applies the couple).
   kWithinIp,
 };
 
