@@ -332,7 +332,10 @@ void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
     else if (k > 0.0) lo = std::max(lo, -g / k);
   }
   // A degenerate IP (c not inside within round-off): the centroid itself.
+  // Within [lo, hi] after all (a crossing on an edge, within round-off):
+  // the paper's point stays, with no couple.
   const double clamped = lo <= hi ? std::clamp(lambda, lo, hi) : 0.0;
+  if (clamped == lambda) return;
   out.point = c + clamped * t;
   out.couple = out.moment - cross(out.point - c, out.force);
 }
