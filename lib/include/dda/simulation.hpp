@@ -36,7 +36,10 @@ struct SimulationError : std::runtime_error {
 void check_scene(const Scene& scene);
 
 // The energy of the state and its budget, J/m: initial = total() +
-// dissipated, up to the time integration's error (O(dt^2) without friction).
+// dissipated, up to the time integration's error: O(dt^2) for rigid blocks
+// in translation without friction (test_energy.cpp); a spinning block adds
+// an O(dt) drift (the linearised rotation of Eq. 1 grows it a little each
+// step), deformable blocks a small floor.
 struct Energy {
   double kinetic = 0.0;
   double gravity = 0.0;  // -sum m g.x_c, relative to the origin

@@ -127,9 +127,9 @@ void Simulation::check_state(bool energy_due) {
       if (std::fabs(error) > max_error) {
         std::ostringstream s;
         s << "energy budget off by " << error << " of the largest mechanical energy (" << energy_scale_
-          << " J/m): kinetic + gravity + strain + contact + friction springs " << e.total() << " + dissipated "
+          << " J): kinetic + gravity + strain + contact + friction springs " << e.total() << " + dissipated "
           << e.dissipated << " against " << e.initial << " at t = 0, more than guards.max_balance_error = "
-          << max_error << "; reduce dt (the error falls as dt^2) or raise the bound (0 switches it off)";
+          << max_error << "; reduce dt (the integration error falls with it) or raise the bound (0 switches it off)";
         stop(fastest(), s.str());
       }
     }
