@@ -303,14 +303,14 @@ bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integrati
 // the same pg, the couples cancel): linear and angular momentum are
 // conserved, and each block's moment about c is M as before.
 //
-// inside_ip: pg on the inner side of (or on) every IP edge longer than tol
-// (shorter edges have no reliable direction; the others bound the polygon).
-bool inside_ip(const Polygon& ip, Vec2 p, double tol) {
-  const double tol2 = tol * tol;
+// inside_ip: pg on the inner side of (or on) every IP edge. The quick test
+// of every contact; an edge no longer than tol (no reliable direction) may
+// call a point outside by round-off: bound_to_ip, which bounds by the
+// longer edges only, then finds it inside after all and keeps it.
+bool inside_ip(const Polygon& ip, Vec2 p) {
   for (int e = 0; e < ip.count; ++e) {
-    const Vec2 a = ip.vertex(e), ab = ip.vertex(ip.next(e)) - a;
-    if (length_squared(ab) <= tol2) continue;
-    if (cross(ab, p - a) < 0.0) return false;  // CCW: the inside is on the left
+    const Vec2 a = ip.vertex(e);
+    if (cross(ip.vertex(ip.next(e)) - a, p - a) < 0.0) return false;  // CCW: the inside is on the left
   }
   return true;
 }
@@ -458,7 +458,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   out.moment = moment;
   out.point = c + lambda * (perp_left(force) / fl);
   out.valid = true;
-  if (where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point, tol)) bound_to_ip(ip, tol, out);
+  if (where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
   return out;
 }
 
