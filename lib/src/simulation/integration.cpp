@@ -41,8 +41,16 @@ void Simulation::move_blocks() {
     disp_[i] += dd;
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
-    step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
-    if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+    if (exact_rotation_) {
+      // RotationUpdate::kExact (see there and rotate_and_displace_vertices):
+      // the rigid part turned by r0 exactly, and the stress (this step's
+      // increment on the start configuration) turned with the material.
+      step_motion2_[i] = rotate_and_displace_vertices(poly_[i], c, dd);
+      if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic_[i] * dd.tail<3>(), dd[2]);
+    } else {
+      step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
+      if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+    }
     update_block_geometry(i);
     body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
@@ -171,6 +179,10 @@ void Simulation::gather_and_kick() {
 }
 
 void Simulation::kick_block(int i) {
+  if (damped_) {
+    damped_kick_block(i);  // Eq. 5c (damping.cpp)
+    return;
+  }
   const AreaMoments& m = moments_[i];
   const double mass = density_[i] * m.area;
   acc_[i][0] = force_[i][0] / mass;
