@@ -556,11 +556,13 @@ std::string generated_note(const std::string& message, const std::vector<Generat
 
 // Eq. 5c damping; every key optional (the kernel checks the ranges).
 Damping read_damping(const Reader& r, const json& v, const std::string& path) {
-  r.object(v, path, {"mass", "stiffness", "settle_time"});
+  r.object(v, path, {"mass", "stiffness", "settle_time", "settle_sticking"});
   Damping d;
   if (const json* x = Reader::find(v, "mass")) d.mass = r.number(*x, join_path(path, "mass"));
   if (const json* x = Reader::find(v, "stiffness")) d.stiffness = r.number(*x, join_path(path, "stiffness"));
   if (const json* x = Reader::find(v, "settle_time")) d.settle_time = r.number(*x, join_path(path, "settle_time"));
+  if (const json* x = Reader::find(v, "settle_sticking"))
+    d.settle_sticking = r.boolean(*x, join_path(path, "settle_sticking"));
   return d;
 }
 
@@ -761,7 +763,8 @@ std::string write_scene(const SceneFile& file) {
   root["rotation_update"] = s.rotation_update == RotationUpdate::kExact ? "exact" : "paper_linear";
   root["damping"] = {{"mass", s.damping.mass},
                      {"stiffness", s.damping.stiffness},
-                     {"settle_time", s.damping.settle_time}};
+                     {"settle_time", s.damping.settle_time},
+                     {"settle_sticking", s.damping.settle_sticking}};
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
                     {"tracked_blocks", file.output.tracked_blocks}};

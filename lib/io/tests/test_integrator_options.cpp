@@ -18,7 +18,7 @@ json scene() {
   return json::parse(R"({
     "materials": [{"density": 2000, "young": 1e9, "poisson": 0.25}],
     "blocks": [{"rect": [0, 0, 1, 1], "spin": 1}],
-    "contact": {"kn": 1e7},
+    "contact": {"kn": 1e7, "kt": 1e7, "friction_deg": 20},
     "dt": 1e-4,
     "duration": 0.1
   })");
@@ -42,18 +42,20 @@ TEST_CASE("rotation_update and damping: defaults, values, round trip", "[io][sce
   CHECK_FALSE(s.damping.on());
   CHECK(s.damping.settle_time == 0.0);
   j["rotation_update"] = "exact";
-  j["damping"] = {{"mass", 2.0}, {"stiffness", 1e-4}, {"settle_time", 0.5}};
+  j["damping"] = {{"mass", 2.0}, {"stiffness", 1e-4}, {"settle_time", 0.5}, {"settle_sticking", true}};
   const dda::io::SceneFile f = parse_scene(j.dump(), "scene.json");
   CHECK(f.scene.rotation_update == dda::RotationUpdate::kExact);
   CHECK(f.scene.damping.mass == 2.0);
   CHECK(f.scene.damping.stiffness == 1e-4);
   CHECK(f.scene.damping.settle_time == 0.5);
+  CHECK(f.scene.damping.settle_sticking);
   const std::string text = dda::io::write_scene(f);
   const dda::Scene g = parse_scene(text, "scene.json (rewritten)").scene;
   CHECK(g.rotation_update == dda::RotationUpdate::kExact);
   CHECK(g.damping.mass == 2.0);
   CHECK(g.damping.stiffness == 1e-4);
   CHECK(g.damping.settle_time == 0.5);
+  CHECK(g.damping.settle_sticking);
 }
 
 TEST_CASE("invalid rotation_update and damping name their field", "[io][scene][options][reject]") {
@@ -66,6 +68,9 @@ TEST_CASE("invalid rotation_update and damping name their field", "[io][scene][o
   j = scene();
   j["damping"] = {{"settle_time", 1.0}};
   CHECK(error_of(j).find("damping.settle_time: settling needs damping") != std::string::npos);
+  j = scene();
+  j["damping"] = {{"mass", 1.0}, {"settle_sticking", true}};
+  CHECK(error_of(j).find("damping.settle_sticking: needs damping.settle_time > 0") != std::string::npos);
   j = scene();
   j["damping"] = {{"alpha", 1.0}};
   CHECK(error_of(j).find("damping.alpha: unknown key") != std::string::npos);

@@ -1,7 +1,9 @@
 // Eq. 5c damping, C = a M + b K (Paper A Sect. 2.2; Scene::damping), in the
 // kicks of velocity Verlet, and the settle-then-load start. Not the paper's
 // method: its Eq. 6 leaves C d' out; off unless a scene asks for it.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "simulation/internal.hpp"
@@ -63,9 +65,9 @@ void Simulation::start_damping(bool on) {
 void Simulation::settle() {
   // The constructor's start with damping. Without a settle time: damped
   // from t = 0. With one (dynamic relaxation): from rest, damped, for that
-  // long; then undamped from the settled state, the blocks' initial
-  // velocities added and the clock (time, steps, displacements) started at
-  // zero. The stresses and the contacts' friction springs keep what the
+  // long; then undamped from the settled configuration at rest (what
+  // velocity the settling left is dropped), with the blocks' initial
+  // velocities, the clock (time, steps, displacements) started at zero. The stresses and the contacts' friction springs keep what the
   // settling loaded into them.
   const double settle = scene_.damping.settle_time;
   std::vector<Vec6> v0;
@@ -76,9 +78,17 @@ void Simulation::settle() {
   start_damping(true);
   start_energy_guard();  // damping only removes energy: the guard stays valid
   if (!(settle > 0.0)) return;
+  std::vector<double> friction_tan;
+  if (scene_.damping.settle_sticking) {
+    // No friction limit while settling (an infinite tan phi: a contact's
+    // normal force is never zero, so the limit is +inf, never NaN).
+    friction_tan = friction_tan_table_;
+    std::fill(friction_tan_table_.begin(), friction_tan_table_.end(), std::numeric_limits<double>::infinity());
+  }
   advance_to(settle);
+  if (scene_.damping.settle_sticking) friction_tan_table_ = friction_tan;
   start_damping(false);
-  for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] += v0[i];
+  for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] = v0[i];
   for (Vec6& d : disp_) d.setZero();
   steps_ = 0;
   time_ = 0.0;

@@ -65,6 +65,8 @@ void check_scene(const Scene& scene) {
   if (!(std::isfinite(dmp.settle_time) && dmp.settle_time >= 0.0)) fail("damping.settle_time", "must be finite and >= 0");
   if (dmp.settle_time > 0.0 && !dmp.on())
     fail("damping.settle_time", "settling needs damping: set damping.mass or damping.stiffness > 0");
+  if (dmp.settle_sticking && !(dmp.settle_time > 0.0 && scene.contact.friction()))
+    fail("damping.settle_sticking", "needs damping.settle_time > 0 and friction (contact.kt > 0)");
   if (scene.materials.empty()) fail("materials", "at least one material is needed");
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
