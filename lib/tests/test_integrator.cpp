@@ -26,28 +26,21 @@ double polar_moment(const Polygon& p) {
 
 // Angular momentum about o of the free blocks, orbital plus spin:
 // sum m (x_c - o) x v_c + (M d')[r], the rotation row of Eq. 5a's M d'
-// (int rho (x - x_c) x v dS of the linear velocity field of Eq. 1).
-double angular_momentum(const Simulation& sim, Vec2 o) {
-  double l = 0.0;
+// (int rho (x - x_c) x v dS of the linear velocity field of Eq. 1); and
+// the same sum of absolute values, the scale of its round-off.
+struct AngularMomentum {
+  double value = 0.0, scale = 0.0;
+};
+AngularMomentum angular_momentum(const Simulation& sim, Vec2 o) {
+  AngularMomentum l;
   for (int i = 0; i < sim.block_count(); ++i) {
     if (sim.fixed(i)) continue;
     const Vec6& v = sim.velocity(i);
     const AreaMoments m = area_moments(sim.polygon(i));
     const Mat6 mm = mass_matrix(m, sim.mass(i) / m.area);
-    l += sim.mass(i) * cross(sim.centroid(i) - o, Vec2{v[0], v[1]}) + mm.row(2).dot(v);
-  }
-  return l;
-}
-
-// |L| summed term by term: the scale against which round-off is measured.
-double angular_momentum_scale(const Simulation& sim, Vec2 o) {
-  double l = 0.0;
-  for (int i = 0; i < sim.block_count(); ++i) {
-    if (sim.fixed(i)) continue;
-    const Vec6& v = sim.velocity(i);
-    const AreaMoments m = area_moments(sim.polygon(i));
-    const Mat6 mm = mass_matrix(m, sim.mass(i) / m.area);
-    l += sim.mass(i) * std::abs(cross(sim.centroid(i) - o, Vec2{v[0], v[1]})) + std::abs(mm.row(2).dot(v));
+    const double orbital = sim.mass(i) * cross(sim.centroid(i) - o, Vec2{v[0], v[1]}), spin = mm.row(2).dot(v);
+    l.value += orbital + spin;
+    l.scale += std::abs(orbital) + std::abs(spin);
   }
   return l;
 }
@@ -92,13 +85,13 @@ Drift momentum_drift(const Scene& scene, double t_end) {
       m += sim.mass(i);
     }
   o = o / m;
-  const double l0 = angular_momentum(sim, o), scale = angular_momentum_scale(sim, o);
+  const AngularMomentum l0 = angular_momentum(sim, o);
   const Vec2 p0 = sim.momentum();
   Drift d;
   while (sim.time() < t_end) {
     sim.step();
     d.contact_steps += sim.contacts().empty() ? 0 : 1;
-    d.angular = std::max(d.angular, std::abs(angular_momentum(sim, o) - l0) / scale);
+    d.angular = std::max(d.angular, std::abs(angular_momentum(sim, o).value - l0.value) / l0.scale);
     d.linear = std::max(d.linear, length(sim.momentum() - p0) / length(p0));
   }
   return d;

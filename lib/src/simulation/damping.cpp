@@ -10,22 +10,6 @@
 
 namespace dda {
 
-Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
-  // M^-1 f (Eq. 5a), as kick_block computes it.
-  const AreaMoments& m = moments_[i];
-  const double mass = density_[i] * m.area;
-  Vec6 a;
-  a[0] = f[0] / mass;
-  a[1] = f[1] / mass;
-  if (strains_) {
-    a.tail<4>() = rotation_strain_acceleration(m, density_[i], f.tail<4>());
-  } else {
-    a.tail<4>().setZero();
-    a[2] = f[2] / (density_[i] * (m.sxx + m.syy));
-  }
-  return a;
-}
-
 void Simulation::damped_kick_block(int i) {
   // Eq. 4 with Eq. 5c's C = a M + b K, M d'' = F - a M d' - b K d', in the
   // second half kick of velocity Verlet (Eq. 7):

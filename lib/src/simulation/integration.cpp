@@ -178,21 +178,29 @@ void Simulation::gather_and_kick() {
   team_barrier();
 }
 
+Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
+  // M^-1 f (Eq. 5a).
+  const AreaMoments& m = moments_[i];
+  const double mass = density_[i] * m.area;
+  Vec6 a;
+  a[0] = f[0] / mass;
+  a[1] = f[1] / mass;
+  if (strains_) {
+    // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
+    a.tail<4>() = rotation_strain_acceleration(m, density_[i], f.tail<4>());
+  } else {
+    a.tail<4>().setZero();
+    a[2] = f[2] / (density_[i] * (m.sxx + m.syy));
+  }
+  return a;
+}
+
 void Simulation::kick_block(int i) {
   if (damped_) {
     damped_kick_block(i);  // Eq. 5c (damping.cpp)
     return;
   }
-  const AreaMoments& m = moments_[i];
-  const double mass = density_[i] * m.area;
-  acc_[i][0] = force_[i][0] / mass;
-  acc_[i][1] = force_[i][1] / mass;
-  if (strains_) {
-    // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
-    acc_[i].tail<4>() = rotation_strain_acceleration(m, density_[i], force_[i].tail<4>());
-  } else {
-    acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
-  }
+  acc_[i] = force_acceleration(i, force_[i]);
   vel_[i] += 0.5 * dt_ * acc_[i];
 }
 
