@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "simulation/internal.hpp"
 
@@ -69,7 +70,12 @@ void Simulation::settle() {
     friction_tan = friction_tan_table_;
     std::fill(friction_tan_table_.begin(), friction_tan_table_.end(), std::numeric_limits<double>::infinity());
   }
-  advance_to(settle);
+  try {
+    advance_to(settle);
+  } catch (const SimulationError& e) {
+    throw SimulationError(std::string("while settling (damping.settle_time = ") + std::to_string(settle) +
+                          " s, before t = 0): " + e.what());
+  }
   if (scene_.damping.settle_sticking) friction_tan_table_ = friction_tan;
   start_damping(false);
   for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] = v0[i];
