@@ -444,3 +444,34 @@ TEST_CASE("with strain DOFs the angular momentum drift left by exact rotation do
   CHECK(paper.angular > 10.0 * exact.angular);
   CHECK(paper.angular - exact.angular == Approx(2.0 * (paper_half.angular - exact.angular)).epsilon(0.1));
 }
+
+TEST_CASE("rotated_stress turns the tensor; the exact drift agrees with Eq. 1 to first order", "[integrator]") {
+  // sigma_x = 1 turned by 90 deg is sigma_y = 1; by 45 deg, pure shear of
+  // half the stress on the diagonal (Mohr's circle).
+  const double quarter = 0.5 * 3.14159265358979323846;
+  const Vec3 t90 = rotated_stress(Vec3{1.0, 0.0, 0.0}, quarter);
+  CHECK(std::abs(t90[0]) < 1e-15);
+  CHECK(t90[1] == Approx(1.0));
+  CHECK(std::abs(t90[2]) < 1e-15);
+  const Vec3 t45 = rotated_stress(Vec3{1.0, 0.0, 0.0}, 0.5 * quarter);
+  CHECK(t45[0] == Approx(0.5));
+  CHECK(t45[1] == Approx(0.5));
+  CHECK(t45[2] == Approx(0.5));
+  // The exact drift minus Eq. 1's displacement is second order in d: the
+  // difference falls by 4 when d halves.
+  const std::vector<Vec2> pts = {{0.0, 0.0}, {2.0, 0.2}, {1.5, 1.7}, {-0.3, 1.1}};
+  Vec6 d;
+  d << 0.01, -0.02, 0.03, 0.004, -0.002, 0.006;
+  double diff[2];
+  for (int k = 0; k < 2; ++k) {
+    Polygon a = make_polygon(pts.data(), 4), b = a;
+    const Vec2 c = area_moments(a).centroid;
+    const Vec6 dk = d * (k == 0 ? 1.0 : 0.5);
+    rotate_and_displace_vertices(a, c, dk);
+    displace_vertices(b, c, dk);
+    diff[k] = 0.0;
+    for (std::size_t v = 0; v < 4; ++v) diff[k] = std::max(diff[k], length(a.v[v] - b.v[v]));
+  }
+  CHECK(diff[0] > 0.0);
+  CHECK(diff[0] / diff[1] == Approx(4.0).epsilon(0.05));
+}

@@ -574,7 +574,8 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
            {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
-            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "guards", "rotation_update", "damping", "output"});
+            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "guards", "rotation_update", "damping",
+            "output"});
 
   SceneFile f;
   Scene& s = f.scene;

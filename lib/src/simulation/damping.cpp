@@ -52,7 +52,8 @@ void Simulation::settle() {
   // from t = 0. With one (dynamic relaxation): from rest, damped, for that
   // long; then undamped from the settled configuration at rest (what
   // velocity the settling left is dropped), with the blocks' initial
-  // velocities, the clock (time, steps, displacements) started at zero. The stresses and the contacts' friction springs keep what the
+  // velocities, the clock (time, steps, displacements) started at zero.
+  // The stresses and the contacts' friction springs keep what the
   // settling loaded into them.
   const double settle = scene_.damping.settle_time;
   std::vector<Vec6> v0;

@@ -62,7 +62,8 @@ void check_scene(const Scene& scene) {
   if (!(std::isfinite(dmp.mass) && dmp.mass >= 0.0)) fail("damping.mass", "must be finite and >= 0 (a of Eq. 5c, 1/s)");
   if (!(std::isfinite(dmp.stiffness) && dmp.stiffness >= 0.0))
     fail("damping.stiffness", "must be finite and >= 0 (b of Eq. 5c, s)");
-  if (!(std::isfinite(dmp.settle_time) && dmp.settle_time >= 0.0)) fail("damping.settle_time", "must be finite and >= 0");
+  if (!(std::isfinite(dmp.settle_time) && dmp.settle_time >= 0.0))
+    fail("damping.settle_time", "must be finite and >= 0");
   if (dmp.settle_time > 0.0 && !dmp.on())
     fail("damping.settle_time", "settling needs damping: set damping.mass or damping.stiffness > 0");
   if (dmp.settle_sticking && !(dmp.settle_time > 0.0 && scene.contact.friction()))
