@@ -178,6 +178,14 @@ class Simulation {
   void gather_contact_forces(int i);
   void kick_block(int i);
   void kick();
+  // Eq. 5c damping (Scene::damping): the kick with C = a M + b K, switching
+  // it on or off (a^n recomputed), and the constructor's settling run.
+  Vec6 force_acceleration(int i, const Vec6& f) const;
+  void damped_kick_block(int i);
+  void start_damping(bool on);
+  void settle();
+  void start_energy_guard();
+  void check_stiffness_damping() const;
   void prefetch_block(int i) const;
   void prefetch_gather(int i) const;
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
@@ -217,6 +225,10 @@ class Simulation {
   int scene_blocks_ = 0;
   bool strains_ = true;
   bool friction_ = false;
+  bool exact_rotation_ = false;  // RotationUpdate::kExact
+  bool damped_ = false;          // Eq. 5c damping acts now (off after a settle)
+  double damp_a_ = 0.0, damp_b_ = 0.0;  // a (1/s) and b (s) of Eq. 5c while damped_
+  std::vector<Vec6> force_prev_;        // F^n of the last kick, for b K d' (only with b > 0)
 
   // Hot state, one entry per block.
   std::vector<Polygon> poly_;
