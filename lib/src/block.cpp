@@ -1,6 +1,7 @@
 #include "dda/block.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "block_lanes.hpp"
 
@@ -32,6 +33,25 @@ double displace_n(Polygon& poly, Vec2 centroid, const Vec6& d) {
 double displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d) {
   if (poly.count == 4) return displace_n<4>(poly, centroid, d);
   return displace_n<0>(poly, centroid, d);
+}
+
+double rotate_and_displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d) {
+  // p' - p = u0 + E q + (R - I)(q + E q), q = p - c. cos r0 - 1 is taken as
+  // -2 sin^2(r0 / 2): no cancellation for the small angles of a step.
+  const double half = std::sin(0.5 * d[2]);
+  const double c1 = -2.0 * half * half, s = std::sin(d[2]);
+  const double ex = d[3], ey = d[4], g2 = 0.5 * d[5];
+  double motion2 = 0.0;
+  for (int k = 0; k < poly.count; ++k) {
+    Vec2& p = poly.v[static_cast<std::size_t>(k)];
+    const double qx = p.x - centroid.x, qy = p.y - centroid.y;
+    const double sx = ex * qx + g2 * qy, sy = g2 * qx + ey * qy;  // E q
+    const double wx = qx + sx, wy = qy + sy;                       // (I + E) q
+    const Vec2 u{d[0] + sx + c1 * wx - s * wy, d[1] + sy + s * wx + c1 * wy};
+    p = p + u;
+    motion2 = std::max(motion2, u.x * u.x + u.y * u.y);
+  }
+  return motion2;
 }
 
 Mat6 mass_matrix(const AreaMoments& m, double density) {

@@ -1,6 +1,7 @@
 #include "dda/contact.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -281,10 +282,68 @@ bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integrati
   }
 }
 
+// The loading point kept within the intersection polygon (Eq. 20,
+// LoadingPoint::kWithinIp). Eq. 20 puts pg where the acting line of the
+// net force f = sum f_k (Eq. 18) crosses the auxiliary line through the IP
+// centroid c: pg = c + lambda t, t = perp_left(f) / |f|, lambda = -M / |f|
+// with M = sum (p_k - c) x f_k. When the segment forces nearly cancel
+// (|f| << sum |f_k|, e.g. a bar inside a block whose two halves are pushed
+// to opposite sides) lambda grows without bound, and with it everything
+// the point stands for besides the moment about c: the strain load
+// T(pg)^T f, the friction history's relative displacement at pg, and the
+// tangential force's lever arm. Where pg lies inside the IP the paper's
+// point is kept unchanged (the same bits). Outside, pg goes to where the
+// auxiliary line leaves the IP on the side of the crossing (lambda clamped
+// to [lambda_lo, lambda_hi], continuous in lambda), and the moment that f
+// no longer carries there is kept as a pure couple
+//   couple = M - (pg - c) x f
+// on CP's rotation DOF, and -couple on TP's (what F += T^T f cannot carry
+// with a point inside the IP). The pair's total force is unchanged (f on
+// CP, -f on TP) and so is its total moment about any point (f and -f act at
+// the same pg, the couples cancel): linear and angular momentum are
+// conserved, and each block's moment about c is M as before.
+//
+// inside_ip: pg on the inner side of (or on) every IP edge. The quick test
+// of every contact; an edge no longer than tol (no reliable direction) may
+// call a point outside by round-off: bound_to_ip, which bounds by the
+// longer edges only, then finds it inside after all and keeps it.
+bool inside_ip(const Polygon& ip, Vec2 p) {
+  for (int e = 0; e < ip.count; ++e) {
+    const Vec2 a = ip.vertex(e);
+    if (cross(ip.vertex(ip.next(e)) - a, p - a) < 0.0) return false;  // CCW: the inside is on the left
+  }
+  return true;
+}
+
+void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
+  // Along c + lambda t, edge e (from a along ab) keeps the inside where
+  // g + lambda k >= 0 with g = ab x (c - a) >= 0 and k = ab x t.
+  const Vec2 c = out.ip_centroid;
+  const double fl = length(out.force);
+  const Vec2 t = perp_left(out.force) / fl;
+  const double lambda = -out.moment / fl;
+  const double tol2 = tol * tol;
+  double lo = -DBL_MAX, hi = DBL_MAX;
+  for (int e = 0; e < ip.count; ++e) {
+    const Vec2 a = ip.vertex(e), ab = ip.vertex(ip.next(e)) - a;
+    if (length_squared(ab) <= tol2) continue;
+    const double g = cross(ab, c - a), k = cross(ab, t);
+    if (k < 0.0) hi = std::min(hi, g / -k);
+    else if (k > 0.0) lo = std::max(lo, -g / k);
+  }
+  // A degenerate IP (c not inside within round-off): the centroid itself.
+  // Within [lo, hi] after all (a crossing on an edge, within round-off):
+  // the paper's point stays, with no couple.
+  const double clamped = lo <= hi ? std::clamp(lambda, lo, hi) : 0.0;
+  if (clamped == lambda) return;
+  out.point = c + clamped * t;
+  out.couple = out.moment - cross(out.point - c, out.force);
+}
+
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any).
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
-                            double tol, const IpEdge* source) {
+                            double tol, const IpEdge* source, LoadingPoint where) {
   NormalForce out;
   if (ip.count < 3) return out;
   const AreaMoments am = area_centroid(ip);
@@ -396,17 +455,19 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   const double fl = std::sqrt(f2);
   const double lambda = -moment / fl;
   out.force = force;
+  out.moment = moment;
   out.point = c + lambda * (perp_left(force) / fl);
   out.valid = true;
+  if (where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
   return out;
 }
 
 }  // namespace
 
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
-                                 Integration rule, double tol, const IpEdge* source) {
-  if (cp.poly->count == 4 && tp.poly->count == 4) return contact_force_n<4, 4>(cp, tp, ip, rule, tol, source);
-  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source);
+                                 Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
+  if (cp.poly->count == 4 && tp.poly->count == 4) return contact_force_n<4, 4>(cp, tp, ip, rule, tol, source, where);
+  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
 }
 
 

@@ -125,6 +125,77 @@ TEST_CASE("exact integration equals a fine area quadrature of Eq. 10", "[contact
   CHECK(cross(nf.point - nf.ip_centroid, nf.force) == Approx(m).epsilon(5e-3).margin(1e-6 * length(f)));
 }
 
+namespace {
+// A 1.6 m x 0.1 m bar CP, tilted 10 deg, inside a 2 m square TP (H = 1 m),
+// shifted dx to the right of TP's centre. TP's potential pushes each half
+// of the bar toward its nearer side of the square: the two halves' segment
+// forces nearly cancel (exactly at dx = 0) and leave a couple.
+struct BarInSquare {
+  Polygon cp, tp, ip;
+  double tol = 0.0;
+  explicit BarInSquare(double dx) {
+    const Vec2 sq[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    tp = make_polygon(sq, 4);
+    Vec2 b[4] = {{-0.8, -0.05}, {0.8, -0.05}, {0.8, 0.05}, {-0.8, 0.05}};
+    for (Vec2& v : b) v = rotate(v, 10.0 * M_PI / 180.0) + Vec2{dx, 0.0};
+    cp = make_polygon(b, 4);
+    ip = intersection_polygon(cp, tp);
+    tol = pair_tolerance(cp, tp);
+  }
+  NormalForce force(Integration rule, LoadingPoint where) const {
+    const PotentialSide a{&cp, 1e7, 0.05}, b{&tp, 1e7, 0.05};
+    return normal_contact_force(a, b, ip, rule, tol, nullptr, where);
+  }
+};
+}  // namespace
+
+TEST_CASE("opposed segment forces: pg stays inside the IP, force and moment unchanged", "[contact]") {
+  for (double dx : {0.0, 0.001, 0.01, 0.05}) {
+    const BarInSquare bar(dx);
+    Vec2 f_ref;
+    double m_ref;
+    area_form(bar.cp, bar.tp, 1000, f_ref, m_ref, area_centroid(bar.ip).centroid);
+    for (Integration rule : {Integration::kPaperBisector, Integration::kExactEnvelope}) {
+      CAPTURE(dx, static_cast<int>(rule));
+      const NormalForce paper = bar.force(rule, LoadingPoint::kPaper);
+      const NormalForce bounded = bar.force(rule, LoadingPoint::kWithinIp);
+      REQUIRE(paper.valid);
+      REQUIRE(bounded.valid);
+      // Negative control: the paper's crossing leaves the 0.1 m thick bar
+      // (by 1 m and more: 5.2 m at dx = 1 cm, 4e14 m at dx = 0).
+      CHECK(locate_point(bar.ip, paper.point, bar.tol) == PointLocation::kOutside);
+      if (dx <= 0.01) CHECK(distance(paper.point, paper.ip_centroid) > 1.0);
+      CHECK(paper.couple == 0.0);
+      // The bounded point is in the IP (on its boundary: where the
+      // auxiliary line leaves it).
+      CHECK(locate_point(bar.ip, bounded.point, bar.tol) != PointLocation::kOutside);
+      // The same force, and the same moment about the IP centroid: the part
+      // the force at pg does not carry is the couple.
+      CHECK(bounded.force == paper.force);
+      CHECK(bounded.moment == paper.moment);
+      const double carried = cross(bounded.point - bounded.ip_centroid, bounded.force);
+      CHECK(carried + bounded.couple == Approx(paper.moment).epsilon(1e-12));
+      CHECK(std::fabs(bounded.couple) > 0.5 * std::fabs(paper.moment));
+      // And that moment is Eq. 10's (area quadrature, error ~ 1/N).
+      CHECK(paper.moment == Approx(m_ref).epsilon(5e-3));
+    }
+  }
+}
+
+TEST_CASE("a loading point inside the IP is the paper's, to the bit", "[contact]") {
+  const Polygon a = hexagon({0, 0}, 1.0, 0.1), b = hexagon({1.5, 0.3}, 0.8, 0.5);
+  const PotentialSide sa{&a, 1e7, 0.05}, sb{&b, 1e7, 0.05};
+  const Polygon ip = intersection_polygon(a, b);
+  for (Integration rule : {Integration::kPaperBisector, Integration::kExactEnvelope}) {
+    const NormalForce paper = normal_contact_force(sa, sb, ip, rule, pair_tolerance(a, b), nullptr, LoadingPoint::kPaper);
+    const NormalForce bounded = normal_contact_force(sa, sb, ip, rule, pair_tolerance(a, b), nullptr, LoadingPoint::kWithinIp);
+    REQUIRE(locate_point(ip, paper.point, 0.0) == PointLocation::kInside);
+    CHECK(bounded.point == paper.point);
+    CHECK(bounded.force == paper.force);
+    CHECK(bounded.couple == 0.0);
+  }
+}
+
 TEST_CASE("contact energy is the potential of the force: -dE/dx = f", "[contact]") {
   const Polygon tp = rect(0, 0, 3, 1), cp0 = hexagon({1.2, 1.3}, 0.6, 0.2);
   const PotentialSide st{&tp, 1e7, 0.0};

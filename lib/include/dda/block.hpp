@@ -25,6 +25,23 @@ inline Vec2 point_displacement(Vec2 centroid, Vec2 p, const Vec6& d) {
 // same bits; returns the largest squared displacement, m^2.
 double displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d);
 
+// RotationUpdate::kExact: moves every vertex p of poly to
+// c + u0 + R(r0) (I + E) (p - c), c = centroid, (u0, v0, r0) = d[0..2],
+// E = [[ex, gxy/2], [gxy/2, ey]] = d[3..5]: the strain increment in the
+// step's start configuration, then the rigid rotation by r0 exactly. With
+// E = 0 the polygon moves rigidly (its area and moments stay to round-off);
+// to first order in d it is displace_vertices. Returns the largest squared
+// displacement, m^2.
+double rotate_and_displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d);
+
+// The stress (sx, sy, txy) of a material turned by angle rad: R sigma R^T.
+inline Vec3 rotated_stress(const Vec3& s, double angle) {
+  const double c = std::cos(angle), sn = std::sin(angle);
+  const double cc = c * c, ss = sn * sn, cs = c * sn;
+  return {cc * s[0] + ss * s[1] - 2.0 * cs * s[2], ss * s[0] + cc * s[1] + 2.0 * cs * s[2],
+          cs * (s[0] - s[1]) + (cc - ss) * s[2]};
+}
+
 // T(p)^T f: the generalized force of a point force f at p (Eqs. 22-23).
 inline Vec6 point_load(Vec2 centroid, Vec2 p, Vec2 f) {
   const double xt = p.x - centroid.x, yt = p.y - centroid.y;

@@ -102,6 +102,13 @@ struct StabilityGuards {
   // candidates): beyond it a vertex can pass through a thin block between
   // two contact checks (flip-through).
   double max_step_motion = 0.25;
+  // Largest error of the energy budget (Energy::balance_error: kinetic +
+  // gravity + strain + contact + friction springs + dissipated work against
+  // the initial energy), relative to the largest mechanical energy seen so
+  // far; checked with the energy growth below. 0 switches it off. Measured
+  // on the paper's scenes at their dt (4.1-4.3, 5.1-5.3; 6.1 and 6.2 over
+  // their first 0.5 s): at most 5e-3 (4.2, dt = 1e-3 s), mostly 1e-5 to 4e-4.
+  double max_balance_error = 0.1;
   // Largest growth of the total energy above its initial value, relative to
   // the largest mechanical (kinetic + strain + contact) energy seen so far.
   // Without damping an explicit run conserves energy to O(dt^2); friction
@@ -126,6 +133,59 @@ struct StabilityGuards {
   double max_approach_energy = 1.0;
 };
 
+// How a step's displacement increment Delta d (Eq. 8) moves a block's
+// vertices. Eqs. 1 and 3 are linear in the rotation r0 = omega h: a vertex
+// moves by (-yt, xt) r0, perpendicular to its radius, so a freely spinning
+// block grows by sqrt(1 + r0^2) per step (area and moment of inertia by
+// 1 + r0^2), and its kinetic energy and angular momentum drift at first
+// order in h.
+enum class RotationUpdate {
+  // Paper A as written (the default): p' = p + T(p) Delta d (Eqs. 1, 3).
+  kPaperLinear,
+  // NOT the paper's rule: the rigid part turned exactly, the strain part a
+  // separate small increment before it, p' = c + u0 + R(r0) (I + E) (p - c)
+  // with E = [[ex, gxy/2], [gxy/2, ey]]: a rigid rotation stays rigid to
+  // round-off, and the stress turns with the material (sigma' = R sigma R^T).
+  // Chosen over a second-order correction of the displacement function
+  // (cos r0 ~ 1 - r0^2/2, sin r0 ~ r0: the block still grows, by
+  // 1 + O(r0^4) a step) because it is exact at one sine per block and step
+  // and changes only the drift's geometry: M, the kick and the centroid
+  // motion u0 stay the paper's. With it, rigid blocks (strains = false)
+  // conserve angular momentum to round-off and energy to O(h^2). What it
+  // leaves: the friction history's Delta d at pg is still T(pg) Delta d
+  // (Sect. 3.2.6; O(r0^2) off a rigid motion), and with strain DOFs the
+  // equation of motion (Eq. 4, M taken constant over the step) leaves out
+  // the rate of M, so a spinning block that vibrates changes its energy and
+  // angular momentum by ~1e-5 relative, independently of h.
+  kExact,
+};
+
+// Eq. 5c damping, C = a M + b K, in the kicks of velocity Verlet (see
+// Simulation::kick_block). Off by default (a = b = 0: the paper's Eq. 6
+// leaves C d' out). K is the block's elastic stiffness (Eq. 5b) together
+// with its contact springs (the stiffness matrix of the global equation).
+struct Damping {
+  double mass = 0.0;       // a, 1/s: the decay rate of every mode grows by a/2
+  double stiffness = 0.0;  // b, s: the decay rate of a mode of frequency omega grows by b omega^2 / 2
+  // Settle-then-load (dynamic relaxation): if > 0 the constructor first
+  // runs this long (s) from rest with the damping above (the blocks'
+  // initial velocities held back), then switches the damping off and
+  // starts the clock at t = 0 from the settled configuration at rest (the
+  // velocity the settling left is dropped; stresses and contact springs
+  // stay pre-loaded) with the blocks' initial velocities. 0: the damping
+  // acts during the whole run.
+  double settle_time = 0.0;
+  // Friction start-up (with settle_time > 0 and friction): while settling
+  // every contact sticks (no friction limit), so its tangential spring
+  // loads to the static shear it carries; at t = 0 the friction angles
+  // apply, and a contact whose shear exceeds its limit starts sliding at
+  // the limit (Eq. 25) instead of from an unloaded spring that lets the
+  // block gain a head start while it loads (Sect. 4.3: 7 % on Eq. 30 at
+  // kt = 1e7 N/m). false: the friction angles apply while settling too.
+  bool settle_sticking = false;
+  bool on() const { return mass > 0.0 || stiffness > 0.0; }
+};
+
 struct Scene {
   std::string name;
   std::vector<Material> materials = std::vector<Material>(1);  // one default material
@@ -145,6 +205,8 @@ struct Scene {
   double dt_fraction = 0.0;
   double duration = 1.0;        // s
   StabilityGuards guards;
+  RotationUpdate rotation_update = RotationUpdate::kPaperLinear;
+  Damping damping;
 };
 
 }  // namespace dda

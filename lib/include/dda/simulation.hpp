@@ -35,12 +35,28 @@ struct SimulationError : std::runtime_error {
 // Throws SceneError for the first problem found in the scene.
 void check_scene(const Scene& scene);
 
+// The energy of the state and its budget, J/m: initial = total() +
+// dissipated, up to the time integration's error: O(dt^2) for rigid blocks
+// in translation without friction (test_energy.cpp); a spinning block adds
+// an O(dt) drift (the linearised rotation of Eq. 1 grows it a little each
+// step), deformable blocks a small floor.
 struct Energy {
   double kinetic = 0.0;
   double gravity = 0.0;  // -sum m g.x_c, relative to the origin
   double strain = 0.0;
   double contact = 0.0;  // penalty energy stored in overlaps
-  double total() const { return kinetic + gravity + strain + contact; }
+  // Elastic energy of the friction springs of the pairs in contact:
+  // 1/2 kt |d_tan|^2 of each sticking pair (and of a pair sliding under the
+  // return mapping, its d_tan returned onto the limit); none in a pair
+  // sliding under the paper's rule, which keeps no shear (energy.cpp).
+  double friction_spring = 0.0;
+  // Work that friction took out of the blocks since t = 0 and no spring
+  // holds (sliding, shear dropped by a restart or a separation). The solver
+  // has no damping.
+  double dissipated = 0.0;
+  double initial = 0.0;  // total() at t = 0
+  double total() const { return kinetic + gravity + strain + contact + friction_spring; }
+  double balance_error() const { return total() + dissipated - initial; }
 };
 
 // A contact as seen in the last force evaluation.
@@ -49,6 +65,7 @@ struct ContactInfo {
   Vec2 normal_force{};   // on CP, N
   Vec2 tangential_force{};
   Vec2 point{};          // loading point pg
+  double couple = 0.0;   // pure moment on CP besides the forces at pg (pg kept in the IP), N m/m
   double ip_area = 0.0;
   double ip_length = 0.0;  // half the IP perimeter: the contact length, m
   bool sliding = false;
@@ -161,6 +178,14 @@ class Simulation {
   void gather_contact_forces(int i);
   void kick_block(int i);
   void kick();
+  // Eq. 5c damping (Scene::damping): the kick with C = a M + b K, switching
+  // it on or off (a^n recomputed), and the constructor's settling run.
+  Vec6 force_acceleration(int i, const Vec6& f) const;
+  void damped_kick_block(int i);
+  void start_damping(bool on);
+  void settle();
+  void start_energy_guard();
+  void check_stiffness_damping() const;
   void prefetch_block(int i) const;
   void prefetch_gather(int i) const;
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
@@ -186,6 +211,8 @@ class Simulation {
   [[noreturn]] void stop_pair(int a, int b, const std::string& what) const;
   // energy.cpp
   Energy block_energy() const;
+  void add_friction_energy(Energy& e) const;
+  void bank_friction_work(const std::vector<NearPair>& kept);
   // critical_step.cpp
   void predict_critical_step();
   double block_strain_omega2(int i) const;
@@ -204,6 +231,10 @@ class Simulation {
   int scene_blocks_ = 0;
   bool strains_ = true;
   bool friction_ = false;
+  bool exact_rotation_ = false;  // RotationUpdate::kExact
+  bool damped_ = false;          // Eq. 5c damping acts now (off after a settle)
+  double damp_a_ = 0.0, damp_b_ = 0.0;  // a (1/s) and b (s) of Eq. 5c while damped_
+  std::vector<Vec6> force_prev_;        // F^n of the last kick, for b K d' (only with b > 0)
 
   // Hot state, one entry per block.
   std::vector<Polygon> poly_;
@@ -227,6 +258,7 @@ class Simulation {
   std::vector<double> radius_, reach_radius_;  // inscribed radii at t = 0; per-step reach
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
+  double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m
 
   // Contacts. The broad phase's near pairs (i < j, sorted) each own a
   // result slot (pair_results_, pair_loads_) that lives as long as the pair

@@ -559,6 +559,18 @@ std::string generated_note(const std::string& message, const std::vector<Generat
   return note.empty() ? "" : note + ")";
 }
 
+// Eq. 5c damping; every key optional (the kernel checks the ranges).
+Damping read_damping(const Reader& r, const json& v, const std::string& path) {
+  r.object(v, path, {"mass", "stiffness", "settle_time", "settle_sticking"});
+  Damping d;
+  if (const json* x = Reader::find(v, "mass")) d.mass = r.number(*x, join_path(path, "mass"));
+  if (const json* x = Reader::find(v, "stiffness")) d.stiffness = r.number(*x, join_path(path, "stiffness"));
+  if (const json* x = Reader::find(v, "settle_time")) d.settle_time = r.number(*x, join_path(path, "settle_time"));
+  if (const json* x = Reader::find(v, "settle_sticking"))
+    d.settle_sticking = r.boolean(*x, join_path(path, "settle_sticking"));
+  return d;
+}
+
 }  // namespace
 
 SceneFile parse_scene(const std::string& json_text, const std::string& file_label) {
@@ -567,7 +579,8 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
            {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
-            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "guards", "output"});
+            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "guards", "rotation_update", "damping",
+            "output"});
 
   SceneFile f;
   Scene& s = f.scene;
@@ -625,6 +638,10 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   }
   s.duration = r.number(r.need(root, "", "duration"), "duration");
   if (const json* x = Reader::find(root, "guards")) s.guards = read_guards(r, *x, "guards");
+  if (const json* x = Reader::find(root, "rotation_update"))
+    s.rotation_update = r.choice<RotationUpdate>(
+        *x, "rotation_update", {{"paper_linear", RotationUpdate::kPaperLinear}, {"exact", RotationUpdate::kExact}});
+  if (const json* x = Reader::find(root, "damping")) s.damping = read_damping(r, *x, "damping");
 
   // The kernel's semantic checks (polygons, ranges, overlaps at t = 0).
   try {
@@ -751,6 +768,11 @@ std::string write_scene(const SceneFile& file) {
                     {"energy_check_every", s.guards.energy_check_every},
                     {"max_penetration", s.guards.max_penetration},
                     {"max_approach_energy", s.guards.max_approach_energy}};
+  root["rotation_update"] = s.rotation_update == RotationUpdate::kExact ? "exact" : "paper_linear";
+  root["damping"] = {{"mass", s.damping.mass},
+                     {"stiffness", s.damping.stiffness},
+                     {"settle_time", s.damping.settle_time},
+                     {"settle_sticking", s.damping.settle_sticking}};
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
                     {"tracked_blocks", file.output.tracked_blocks}};

@@ -94,6 +94,7 @@ void Simulation::rebuild_near_pairs() {
   // A pair on both lists keeps its slot's state (witness, contact, history):
   // one merge pass over the two sorted lists. A pair in contact now is on
   // both (its boxes overlap, so its grown boxes do).
+  if (friction_) bank_friction_work(pairs);  // energy.cpp: the leaving pairs' friction work
   std::vector<PairResult> results(pairs.size());
   std::vector<PairLoad> loads(pairs.size());
   std::size_t h = 0;

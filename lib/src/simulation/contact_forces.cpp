@@ -35,8 +35,10 @@ constexpr long kWorkOther = 1;
                                                           const IpEdge* source, double tol, bool& pair_fault) {
   const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
   const ContactParams& c = scene_.contact;
+  // Eqs. 11-20; pg kept within the IP where Eq. 20's crossing leaves it
+  // (segment forces that nearly cancel), the rest of the moment a couple.
   const NormalForce nf =
-      normal_contact_force(sides_[cp].side, sides_[tp].side, ip, c.integration, tol, source);  // Eqs. 11-20
+      normal_contact_force(sides_[cp].side, sides_[tp].side, ip, c.integration, tol, source, LoadingPoint::kWithinIp);
   if (!nf.valid) return false;
   PairResult& r = pair_results_[static_cast<std::size_t>(k)];
   ContactInfo& info = r.info;
@@ -45,6 +47,7 @@ constexpr long kWorkOther = 1;
   info.normal_force = nf.force;
   info.tangential_force = Vec2{};
   info.point = nf.point;
+  info.couple = nf.couple;
   info.ip_area = nf.ip_area;
   info.ip_length = 0.5 * nf.ip_perimeter;
   info.sliding = false;
@@ -77,6 +80,7 @@ constexpr long kWorkOther = 1;
   load.active = true;
   load.force = info.normal_force + info.tangential_force;
   load.point = info.point;
+  load.couple = nf.couple;
   return true;
 }
 

@@ -1,5 +1,6 @@
 // Energy and momentum of the state: kinetic, gravity and strain energy of
-// the free blocks, and the penalty energy stored in the contacts' overlaps.
+// the free blocks, the penalty energy stored in the contacts' overlaps, the
+// friction springs' energy and the work friction dissipated (the budget).
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -20,7 +21,51 @@ Energy Simulation::energy() const {
     const Polygon ip = intersection_polygon(a, b, tol);
     e.contact += contact_energy(sides_[ci.cp].side, sides_[ci.tp].side, ip, tol);
   }
+  add_friction_energy(e);
+  e.initial = energy0_;
   return e;
+}
+
+void Simulation::add_friction_energy(Energy& e) const {
+  // The friction terms of the energy budget (Paper A Eqs. 24-26).
+  // Stored: a sticking pair's force is the spring's, f_t = -kt d_tan
+  // (Eq. 25), so it holds 1/2 kt |d_tan|^2 = |f_t|^2 / (2 kt). A sliding
+  // pair under the return mapping keeps d_tan on the limit (d_tan = -f_t /
+  // kt): the same |f_t|^2 / (2 kt). A pair sliding under the paper's rule
+  // restarts d from the step's Delta d on the next step (Sect. 3.2.6): it
+  // keeps no shear, its spring holds nothing (f_t = -|f_n| tan(phi) s is
+  // no spring force).
+  // Dissipated: the friction work W = -sum over steps of 1/2 (f_t^n +
+  // f_t^{n+1}) . Delta d^n (friction.cpp, accumulated per pair) is what
+  // friction took out of the blocks; what the springs do not hold of it is
+  // gone: dissipated = W - stored. In a sticking step the trapezoid equals
+  // the spring's energy change (f_t linear in d), so only sliding (the
+  // work of the limit force on the slip), a restart that drops the shear
+  // (kPaper: stick to slide, slide to stick) and a separation (the spring
+  // vanishes with its pair) dissipate.
+  if (!friction_) return;
+  const bool restarts = scene_.contact.friction_update == FrictionUpdate::kPaper;
+  const double half_compliance = 0.5 / scene_.contact.kt;
+  double work = dropped_friction_work_;
+  for (std::size_t k = 0; k < pair_results_.size(); ++k) {
+    const PairResult& r = pair_results_[k];
+    work += r.friction_work;
+    if (!pair_loads_[k].active || (restarts && r.history.sliding)) continue;
+    e.friction_spring += half_compliance * length_squared(r.info.tangential_force);
+  }
+  e.dissipated = work - e.friction_spring;
+}
+
+void Simulation::bank_friction_work(const std::vector<NearPair>& kept) {
+  // Before a rebuild replaces the near list by `kept` (both sorted by
+  // (i, j)): the friction work of the pairs that leave it, in pair order.
+  auto before = [](const NearPair& x, const NearPair& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); };
+  std::size_t k = 0;
+  for (std::size_t h = 0; h < near_pairs_.size(); ++h) {
+    while (k < kept.size() && before(kept[k], near_pairs_[h])) ++k;
+    const bool stays = k < kept.size() && !before(near_pairs_[h], kept[k]);
+    if (!stays) dropped_friction_work_ += pair_results_[h].friction_work;
+  }
 }
 
 Energy Simulation::block_energy() const {

@@ -16,6 +16,7 @@ void Simulation::pair_friction(PairResult& r, bool was_active, const NormalForce
   const ContactParams& c = scene_.contact;
   ContactInfo& info = r.info;
   PairHistory& hist = r.history;
+  Vec2 step_d{};  // this step's Delta d (none for a fresh contact)
   if (was_active) {
     // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at the last pg;
     // a sticking pair accumulates it, a sliding pair restarts from it
@@ -29,6 +30,7 @@ void Simulation::pair_friction(PairResult& r, bool was_active, const NormalForce
                        : detail::point_displacement_lanes(detail::lanes(start_centroid_[b]), pg, step_disp_[b]);
     };
     const Lanes dd = du(cp) - du(tp);
+    step_d = detail::vec2(dd);
     const bool restart = c.friction_update == FrictionUpdate::kPaper;
     hist.d = detail::vec2(hist.sliding && restart ? dd : detail::lanes(hist.d) + dd);
   } else {
@@ -73,6 +75,12 @@ void Simulation::pair_friction(PairResult& r, bool was_active, const NormalForce
   }
   if (hist.sliding && lt > 0.0) hist.slide_dir = s;
   hist.point = nf.point;
+  // The friction work of the step (the energy budget, energy.cpp): ft on
+  // CP and -ft on TP do ft . Delta d on the blocks, taken by the trapezoid
+  // rule, as velocity Verlet's kinetic energy takes the work of every force
+  // (it changes by 1/2 (F^n + F^{n+1}) . Delta x per step, up to O(h^3)).
+  r.friction_work -= 0.5 * dot(hist.ft + ft, step_d);
+  hist.ft = ft;
   info.tangential_force = ft;
   info.sliding = hist.sliding;
 }

@@ -3,7 +3,7 @@
 // and dt/dt_crit. Per block (flagged in the kick loop): a non-finite state,
 // a collapsed area, a vertex moving too far in one step; per pair (flagged
 // in the pair loop): the penetration guard (penetration_guard.cpp); every
-// energy_check_every steps: the total energy's growth.
+// energy_check_every steps: the total energy's growth and the energy budget.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -129,8 +129,9 @@ void Simulation::check_state(bool energy_due) {
     for (std::size_t k = 0; k < pair_loads_.size(); ++k)
       if (pair_loads_[k].active) e.contact += pair_results_[k].energy;
     energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
-    const double growth = (e.total() - energy0_) / std::max(energy_scale_, DBL_MIN);
-    if (growth > scene_.guards.max_energy_growth) {
+    const double scale = std::max(energy_scale_, DBL_MIN);
+    // The block reported: the one with the largest translational kinetic energy.
+    auto fastest = [this] {
       int worst = 0;
       double kmax = -1.0;
       for (int i = 0; i < block_count(); ++i) {
@@ -141,10 +142,30 @@ void Simulation::check_state(bool energy_due) {
           worst = i;
         }
       }
+      return worst;
+    };
+    const double growth = (e.total() - energy0_) / scale;
+    if (growth > scene_.guards.max_energy_growth) {
       std::ostringstream s;
       s << "total energy grew by " << growth << " of the largest mechanical energy (" << energy_scale_
         << " J), more than " << scene_.guards.max_energy_growth;
-      stop(worst, s.str());
+      stop(fastest(), s.str());
+    }
+    // The energy budget (energy.cpp): what the state holds plus what
+    // friction dissipated must stay the initial energy.
+    const double max_error = scene_.guards.max_balance_error;
+    if (max_error > 0.0) {
+      add_friction_energy(e);
+      e.initial = energy0_;
+      const double error = e.balance_error() / scale;
+      if (std::fabs(error) > max_error) {
+        std::ostringstream s;
+        s << "energy budget off by " << error << " of the largest mechanical energy (" << energy_scale_
+          << " J): kinetic + gravity + strain + contact + friction springs " << e.total() << " + dissipated "
+          << e.dissipated << " against " << e.initial << " at t = 0, more than guards.max_balance_error = "
+          << max_error << "; reduce dt (the integration error falls with it) or raise the bound (0 switches it off)";
+        stop(fastest(), s.str());
+      }
     }
   }
 }

@@ -41,8 +41,16 @@ void Simulation::move_blocks() {
     disp_[i] += dd;
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
-    step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
-    if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+    if (exact_rotation_) {
+      // RotationUpdate::kExact (see there and rotate_and_displace_vertices):
+      // the rigid part turned by r0 exactly, and the stress (this step's
+      // increment on the start configuration) turned with the material.
+      step_motion2_[i] = rotate_and_displace_vertices(poly_[i], c, dd);
+      if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic_[i] * dd.tail<3>(), dd[2]);
+    } else {
+      step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
+      if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+    }
     update_block_geometry(i);
     body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
@@ -134,7 +142,12 @@ void Simulation::gather_contact_forces(int i) {
     if (!load.candidate) continue;
     reach = std::min(reach, radius[bp.other]);
     if (!load.active || !free_block) continue;
-    const detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
+    detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
+    // A pair whose pg was kept within its IP carries the rest of Eq. 20's
+    // moment as a couple on the rotation DOF (+ on the first block, - on
+    // the second, as the force): only then, so that every other sum keeps
+    // its bits.
+    if (load.couple != 0.0) g.g23[0] += load.couple;
     if (bp.first) {
       sum.g01 += g.g01;
       sum.g23 += g.g23;
@@ -170,17 +183,29 @@ void Simulation::gather_and_kick() {
   team_barrier();
 }
 
-void Simulation::kick_block(int i) {
+Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
+  // M^-1 f (Eq. 5a).
   const AreaMoments& m = moments_[i];
   const double mass = density_[i] * m.area;
-  acc_[i][0] = force_[i][0] / mass;
-  acc_[i][1] = force_[i][1] / mass;
+  Vec6 a;
+  a[0] = f[0] / mass;
+  a[1] = f[1] / mass;
   if (strains_) {
     // Rotation and strains couple through the 4x4 lower block of M (Eq. 5a).
-    acc_[i].tail<4>() = rotation_strain_acceleration(m, density_[i], force_[i].tail<4>());
+    a.tail<4>() = rotation_strain_acceleration(m, density_[i], f.tail<4>());
   } else {
-    acc_[i][2] = force_[i][2] / (density_[i] * (m.sxx + m.syy));
+    a.tail<4>().setZero();
+    a[2] = f[2] / (density_[i] * (m.sxx + m.syy));
   }
+  return a;
+}
+
+void Simulation::kick_block(int i) {
+  if (damped_) {
+    damped_kick_block(i);  // Eq. 5c (damping.cpp)
+    return;
+  }
+  acc_[i] = force_acceleration(i, force_[i]);
   vel_[i] += 0.5 * dt_ * acc_[i];
 }
 

@@ -43,6 +43,7 @@ struct Simulation::PairHistory {
   Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
   Vec2 slide_dir{};       // sliding direction s of the last sliding step
   Vec2 point{};           // pg of the last force evaluation
+  Vec2 ft{};              // tangential force on CP of the last evaluation (the friction work's trapezoid)
   bool sliding = false;
 };
 
@@ -60,6 +61,9 @@ struct Simulation::PairResult {
   double depth = 0.0;
   double depth_bound = 0.0;
   double approach_energy = 0.0;
+  // Work friction took out of the two blocks while this pair was near
+  // (outlives the history's restarts), J/m; only with friction.
+  double friction_work = 0.0;
   PairHistory history;
 };
 
@@ -74,6 +78,7 @@ struct Simulation::NearPair {
 struct Simulation::PairLoad {
   Vec2 force{};            // normal + tangential force on the pair's first block, N/m
   Vec2 point{};            // loading point pg
+  double couple = 0.0;     // pure moment on the first block besides force at point (NormalForce::couple), N m/m
   bool candidate = false;  // the two boxes overlap at this step
   bool active = false;     // in contact: force, point and the PairResult are this step's
 };

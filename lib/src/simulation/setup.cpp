@@ -1,6 +1,7 @@
 // Setting up a simulation: the scene checks, the blocks (polygons, masses,
 // elastic matrices, friction table), H of Eq. 12, the broad phase's skin;
-// the constructor computes the forces at t = 0 and the first half kick.
+// the constructor computes the forces at t = 0 and the first half kick (or,
+// with Eq. 5c damping, settles: damping.cpp).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -57,10 +58,22 @@ void check_scene(const Scene& scene) {
     fail("guards.max_penetration", "must be >= 0 (0 switches the penetration check off)");
   if (!(std::isfinite(scene.guards.max_approach_energy) && scene.guards.max_approach_energy >= 0.0))
     fail("guards.max_approach_energy", "must be >= 0 (0 switches the approach-energy check off)");
+  if (!(std::isfinite(scene.guards.max_balance_error) && scene.guards.max_balance_error >= 0.0))
+    fail("guards.max_balance_error", "must be >= 0 (0 switches the energy budget check off)");
   if (!(std::isfinite(scene.initial_overlap) && scene.initial_overlap >= 0.0))
     fail("initial_overlap", "must be finite and >= 0");
   if (!(std::isfinite(scene.duration) && scene.duration >= 0.0)) fail("duration", "must be finite and >= 0");
   if (!is_finite(scene.gravity)) fail("gravity", "must be finite");
+  const Damping& dmp = scene.damping;
+  if (!(std::isfinite(dmp.mass) && dmp.mass >= 0.0)) fail("damping.mass", "must be finite and >= 0 (a of Eq. 5c, 1/s)");
+  if (!(std::isfinite(dmp.stiffness) && dmp.stiffness >= 0.0))
+    fail("damping.stiffness", "must be finite and >= 0 (b of Eq. 5c, s)");
+  if (!(std::isfinite(dmp.settle_time) && dmp.settle_time >= 0.0))
+    fail("damping.settle_time", "must be finite and >= 0");
+  if (dmp.settle_time > 0.0 && !dmp.on())
+    fail("damping.settle_time", "settling needs damping: set damping.mass or damping.stiffness > 0");
+  if (dmp.settle_sticking && !(dmp.settle_time > 0.0 && scene.contact.friction()))
+    fail("damping.settle_sticking", "needs damping.settle_time > 0 and friction (contact.kt > 0)");
   if (scene.materials.empty()) fail("materials", "at least one material is needed");
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
@@ -153,15 +166,25 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   dt_ = scene_.dt;
   strains_ = scene_.strains;
   friction_ = scene_.contact.friction();
+  exact_rotation_ = scene_.rotation_update == RotationUpdate::kExact;
   build_blocks();
   choose_potential_length();
   update_geometry();
   predict_critical_step();
   choose_broad_phase_skin();
   if (scene_.dt_fraction > 0.0) dt_ = scene_.dt_fraction * dt_crit_prior_;
+  check_stiffness_damping();
   compute_forces();
+  if (scene_.damping.on()) {
+    settle();  // Eq. 5c damping from the start (damping.cpp)
+    return;
+  }
   kick();  // the first half kick uses a^0; v^0 is restored below
   for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] -= 0.5 * dt_ * acc_[i];
+  start_energy_guard();
+}
+
+void Simulation::start_energy_guard() {
   const Energy e = energy();
   energy0_ = e.total();
   energy_scale_ = e.kinetic + e.strain + e.contact;
