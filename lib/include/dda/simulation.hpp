@@ -213,6 +213,7 @@ class Simulation {
   Energy block_energy() const;
   void add_friction_energy(Energy& e) const;
   void bank_friction_work(const std::vector<NearPair>& kept);
+  void add_budget_terms(Energy& e) const;  // friction (add_friction_energy) and damping work
   // critical_step.cpp
   void predict_critical_step();
   double block_strain_omega2(int i) const;
@@ -235,6 +236,8 @@ class Simulation {
   bool damped_ = false;          // Eq. 5c damping acts now (off after a settle)
   double damp_a_ = 0.0, damp_b_ = 0.0;  // a (1/s) and b (s) of Eq. 5c while damped_
   std::vector<Vec6> force_prev_;        // F^n of the last kick, for b K d' (only with b > 0)
+  std::vector<Vec6> damp_force_;        // the damping force -a M v - b K v of the last kick (only damped)
+  std::vector<double> damping_work_;    // per block: work of the damping forces so far, J/m (<= 0)
 
   // Hot state, one entry per block.
   std::vector<Polygon> poly_;

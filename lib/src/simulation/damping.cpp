@@ -26,14 +26,22 @@ void Simulation::damped_kick_block(int i) {
   //   / (1 + a h/2), and a^{n+1} = M^-1 F - a v^{n+1} for the next first
   //   half kick, so a full step multiplies v by (1 - a h/2) / (1 + a h/2):
   //   second order, and stable for any a >= 0.
+  // The work of the damping force over the step's drift Delta d^n, by the
+  // trapezoid of its values at t^n and t^{n+1} (as the friction work), goes
+  // to the energy budget's dissipated term (energy.cpp).
   Vec6 f = force_[i];
+  Vec6 damp = Vec6::Zero();
   if (damp_b_ > 0.0) {
-    f += (damp_b_ / dt_) * (force_[i] - force_prev_[i]);
+    damp = (damp_b_ / dt_) * (force_[i] - force_prev_[i]);
+    f += damp;
     force_prev_[i] = force_[i];
   }
   const Vec6 af = force_acceleration(i, f);
   vel_[i] = (vel_[i] + 0.5 * dt_ * af) / (1.0 + 0.5 * damp_a_ * dt_);
   acc_[i] = af - damp_a_ * vel_[i];
+  if (damp_a_ > 0.0) damp -= damp_a_ * (mass_matrix(moments_[i], density_[i]) * vel_[i]);
+  damping_work_[i] += 0.5 * (damp_force_[i] + damp).dot(step_disp_[i]);
+  damp_force_[i] = damp;
 }
 
 void Simulation::start_damping(bool on) {
@@ -43,8 +51,13 @@ void Simulation::start_damping(bool on) {
   damp_a_ = damped_ ? scene_.damping.mass : 0.0;
   damp_b_ = damped_ ? scene_.damping.stiffness : 0.0;
   if (damp_b_ > 0.0) force_prev_ = force_;
-  for (int i = 0; i < block_count(); ++i)
-    if (!fixed_[i]) acc_[i] = force_acceleration(i, force_[i]) - damp_a_ * vel_[i];
+  damping_work_.resize(static_cast<std::size_t>(block_count()), 0.0);
+  damp_force_.assign(static_cast<std::size_t>(block_count()), Vec6::Zero());
+  for (int i = 0; i < block_count(); ++i) {
+    if (fixed_[i]) continue;
+    acc_[i] = force_acceleration(i, force_[i]) - damp_a_ * vel_[i];
+    if (damped_) damp_force_[i] = -damp_a_ * (mass_matrix(moments_[i], density_[i]) * vel_[i]);
+  }
 }
 
 void Simulation::settle() {

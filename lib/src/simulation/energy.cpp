@@ -21,9 +21,17 @@ Energy Simulation::energy() const {
     const Polygon ip = intersection_polygon(a, b, tol);
     e.contact += contact_energy(sides_[ci.cp].side, sides_[ci.tp].side, ip, tol);
   }
-  add_friction_energy(e);
+  add_budget_terms(e);
   e.initial = energy0_;
   return e;
+}
+
+void Simulation::add_budget_terms(Energy& e) const {
+  add_friction_energy(e);
+  // Eq. 5c damping (damping.cpp): the work its forces did, accumulated per
+  // block, is dissipated; summed in block order (the same bits for any
+  // thread count).
+  for (double w : damping_work_) e.dissipated -= w;
 }
 
 void Simulation::add_friction_energy(Energy& e) const {

@@ -152,10 +152,10 @@ void Simulation::check_state(bool energy_due) {
       stop(fastest(), s.str());
     }
     // The energy budget (energy.cpp): what the state holds plus what
-    // friction dissipated must stay the initial energy.
+    // friction and damping dissipated must stay the initial energy.
     const double max_error = scene_.guards.max_balance_error;
     if (max_error > 0.0) {
-      add_friction_energy(e);
+      add_budget_terms(e);
       e.initial = energy0_;
       const double error = e.balance_error() / scale;
       if (std::fabs(error) > max_error) {

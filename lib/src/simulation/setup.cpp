@@ -185,8 +185,10 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
 }
 
 void Simulation::start_energy_guard() {
+  // What is held plus what was dissipated so far (after a settle the
+  // budget restarts from the settled state).
   const Energy e = energy();
-  energy0_ = e.total();
+  energy0_ = e.total() + e.dissipated;
   energy_scale_ = e.kinetic + e.strain + e.contact;
 }
 
