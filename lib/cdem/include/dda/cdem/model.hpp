@@ -296,11 +296,16 @@ class Model {
   std::vector<int> clone_component(int ci) const;
   double project_component(int ci);
   void kick_patch(double h);
+  void kick_coarse_first_half();
+  void forces_and_second_half_kick();
+  void refresh_forces_after_patch_change(double t);
   bool locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const;
   // contact
   std::vector<Touch> find_touches(bool coarse_level, double t_start, const std::vector<Vec2>& p0,
                                   const std::vector<Vec2>& p1) const;
+  std::vector<Touch> coarse_touches(double t0) const;
   bool process_touch(const Touch& touch, bool fine_level, double t, double t0, double t1);
+  void refine_contact_zone(int main_node, Vec2 point, int& ea, int& eb, double& xi, TouchRecord& rec);
   bool dissolve_free_patches();
   double tributary_length(int node) const;
   Vec2 vertex_normal(int node) const;
