@@ -9,6 +9,10 @@
 
 namespace dda::cdem::detail {
 
+// A touch within this fraction of an edge's length from an end node is a
+// touch of that node (a node-to-node clone).
+inline constexpr double kNodeTieXi = 1e-6;
+
 // Shape-function derivatives of a constant-strain triangle (CCW x0, x1, x2):
 // dN_i/dx = b_i / (2A), dN_i/dy = c_i / (2A).
 struct Cst {

@@ -20,7 +20,7 @@ void Model::literal_two_stage(const std::vector<Touch>& touches, double t0) {
   std::vector<double> tau(x_.size(), 0.0);
   std::vector<char> changed(x_.size(), 0);
   for (const Touch& T : touches) {
-    if (in_clone(T.node)) continue;
+    if (touch_blocked(T.node)) continue;
     std::vector<int> set{T.node, T.ea, T.eb};
     for (std::size_t head = 0; head < set.size(); ++head)
       for (const Clone& c : clones_) {
@@ -50,6 +50,7 @@ void Model::literal_two_stage(const std::vector<Touch>& touches, double t0) {
 void Model::step() {
   const double t0 = time_, t1 = t0 + dt_;
   step_t0_ = t0;
+  step_touch_count_.clear();
   // Sect. 2, Eq. 1: first half-kick of the coarse nodes.
   kick_coarse_first_half();
   // Sects. 2-3: touches on the collision path of the step, with their time

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "geometry.hpp"
 
@@ -13,6 +14,27 @@ namespace dda::cdem {
 using namespace detail;
 
 bool Model::in_clone(int node) const { return clone_count_[node] > 0; }
+
+// A node cannot start a new touch while it is a clone's main node or is tied
+// node-to-node; a node tied as an end of a touched edge (weight < 1) can, so
+// that a corner of a face in contact still finds the other block.
+bool Model::touch_blocked(int node) const {
+  for (const Clone& c : clones_)
+    if (c.main == node || (c.t[0] == node && c.t[1] < 0)) return true;
+  return false;
+}
+
+// Nodes tied with `node` by some clone (a touch between them is that clone).
+std::vector<int> Model::tied_partners(int node) const {
+  std::vector<int> out;
+  for (const Clone& c : clones_) {
+    const bool has = c.main == node || c.t[0] == node || c.t[1] == node;
+    if (!has) continue;
+    for (int a : {c.main, c.t[0], c.t[1]})
+      if (a >= 0 && a != node) out.push_back(a);
+  }
+  return out;
+}
 
 std::vector<int> Model::clone_component(int ci) const {
   std::vector<int> comp{ci};
@@ -77,6 +99,10 @@ double Model::project_component(int ci) {
           w += cl.w[q] * cl.w[q] * inv_m_[cl.t[q]];
         }
       if (!(w > 0.0)) continue;
+      if (cl.sliding) {  // only the normal velocity is tied (Eq. 10)
+        const Vec2 n = clone_normal(cl);
+        r = dot(r, n) * n;
+      }
       worst = std::max(worst, length(r));
       const Vec2 j = -(1.0 / w) * r;
       v_[cl.main] += inv_m_[cl.main] * j;
@@ -90,9 +116,26 @@ double Model::project_component(int ci) {
 
 bool Model::process_touch(const Touch& touch, bool fine_level, double t, double t0, double t1) {
   const int m = touch.node;
-  if (in_clone(m) || kind_[m] == NodeKind::kDead || kind_[m] == NodeKind::kHanging) return false;
+  if (touch_blocked(m) || kind_[m] == NodeKind::kDead || kind_[m] == NodeKind::kHanging) return false;
+  {
+    const std::vector<int> partners = tied_partners(m);
+    auto tied = [&](int a) { return std::find(partners.begin(), partners.end(), a) != partners.end(); };
+    if ((touch.xi <= kNodeTieXi && tied(touch.ea)) || (touch.xi >= 1.0 - kNodeTieXi && tied(touch.eb))) return false;
+  }
   int ea = touch.ea, eb = touch.eb;
   const int bm = node_block_[m], bt = node_block_[ea];
+  // A node that touches again and again within one coarse step chatters
+  // (each touch separates at once): the contact is not resolved.
+  constexpr int kMaxTouchesPerStep = 1000;
+  if (++step_touch_count_[m] > kMaxTouchesPerStep) {
+    const Vec2 e = x_[eb] - x_[ea];
+    const double depth = std::max(0.0, -cross(x_[m] - x_[ea], e) / length(e));
+    std::ostringstream s;
+    s << "cdem: node " << m << " of block " << bm << " touched block " << bt << " " << kMaxTouchesPerStep
+      << " times within step " << steps_ + 1 << " (t = " << t << " s, depth " << depth
+      << " m): each clone separates at once and the contact is not resolved; try a smaller dt";
+    throw ContactError(s.str(), m, bm, bt, steps_ + 1, t, depth);
+  }
   double xi = touch.xi;
   {
     const Vec2 e = x_[eb] - x_[ea];
@@ -118,10 +161,10 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
   c.ea = ea;
   c.eb = eb;
   const double len = distance(x_[ea], x_[eb]);
-  if (xi * len <= 1e-6 * len) {
+  if (xi * len <= kNodeTieXi * len) {
     c.t = {ea, -1};
     c.w = {1.0, 0.0};
-  } else if ((1.0 - xi) * len <= 1e-6 * len) {
+  } else if ((1.0 - xi) * len <= kNodeTieXi * len) {
     c.t = {eb, -1};
     c.w = {1.0, 0.0};
   } else {

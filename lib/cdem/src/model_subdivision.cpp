@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <sstream>
 
 #include "dda/cdem/mesh.hpp"
 #include "geometry.hpp"
@@ -444,7 +445,15 @@ void Model::patch_loop(double t0, double t1, std::vector<Touch> coarse_touches) 
   if (!patch_eval_.empty()) compute_patch_forces(t);
   std::vector<Touch> pending;
   std::vector<Vec2> p0, p1;
+  // Zero-length patch steps allowed in one coarse step: touches found at
+  // s = 0 are processed together, so a few suffice; more means a touch that
+  // does not let the step advance.
+  constexpr long kMaxStalls = 1000;
   long stalls = 0;
+  auto signed_gap = [&](const Touch& T) {
+    const Vec2 e = x_[T.eb] - x_[T.ea];
+    return cross(x_[T.node] - x_[T.ea], e) / length(e);
+  };
   while (true) {
     bool changed = false;
     while (next < coarse_touches.size() && event_time(next) <= t + eps_t) {
@@ -480,7 +489,16 @@ void Model::patch_loop(double t0, double t1, std::vector<Touch> coarse_touches) 
         kick_patch(-0.5 * (h - hn));
         h = hn;
         if (h <= eps_t) {
-          if (++stalls > 1000000) throw SimulationError("cdem: patch loop stalled on repeated touches");
+          if (++stalls > kMaxStalls) {
+            const Touch& T = pending.front();
+            std::ostringstream msg;
+            msg << "cdem: patch step stalled at t = " << t << " s (step " << steps_ + 1 << "): node " << T.node
+                << " of block " << node_block_[T.node] << " touches block " << node_block_[T.ea] << " again at once "
+                << kMaxStalls << " times (depth " << std::max(0.0, -signed_gap(T)) << " m); "
+                << "the contact cannot be resolved: try a smaller dt or friction > 0";
+            throw ContactError(msg.str(), T.node, node_block_[T.node], node_block_[T.ea], steps_ + 1, t,
+                               std::max(0.0, -signed_gap(T)));
+          }
           continue;
         }
       }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "geometry.hpp"
 
@@ -95,16 +96,14 @@ std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start,
   std::vector<Touch> out;
   for (int n : bnodes_) {
     const NodeKind kn = kind_[n];
-    if (kn == NodeKind::kDead || kn == NodeKind::kHanging || in_clone(n)) continue;
-    // A node whose clone was removed moves free for the rest of the coarse
-    // step before it can touch again: a re-touch within dt is not resolved
-    // by the step anyway, and without this wait a shear release re-forms at
-    // once and a vibrating face chatters through ever shorter patch steps.
-    // The penetration meanwhile (< dt |v|) is far below d_tol and is found
-    // at s = 0 in the next step.
-    if (released_at_[n] >= std::min(t_start, step_t0_)) continue;
+    if (kn == NodeKind::kDead || kn == NodeKind::kHanging || touch_blocked(n)) continue;
+    // A node whose clone was removed may touch again within the same coarse
+    // or patch step (a sliding clone keeps a pressed node tied, so a release
+    // is a separation or a slide past the target's corner).
     if (coarse_level && kn != NodeKind::kCoarse) continue;
     const bool node_fine = kn == NodeKind::kFine;
+    const std::vector<int> partners = in_clone(n) ? tied_partners(n) : std::vector<int>{};
+    auto tied = [&](int a) { return std::find(partners.begin(), partners.end(), a) != partners.end(); };
     const int bn = node_block_[n];
     Aabb nb;
     grow(nb, p0[n]);
@@ -114,24 +113,72 @@ std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start,
     for (std::size_t ob = 0; ob < blocks_.size(); ++ob) {
       if (static_cast<int>(ob) == bn || (blocks_[bn].fixed && blocks_[ob].fixed) || !aabb_overlap(nb, box[ob]))
         continue;
+      bool found = false;
       for (int ei : block_bedges_[ob]) {
         const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
         const bool any_fine = node_fine || kind_[e.a] == NodeKind::kFine || kind_[e.b] == NodeKind::kFine;
         if (coarse_level == any_fine) continue;  // coarse step: all-coarse pairs; patch steps: the rest
         double s = 0.0, xi = 0.0;
-        if (swept_touch(p0[n], p1[n], p0[e.a], p1[e.a], p0[e.b], p1[e.b], tol, s, xi) && s < best.s) {
-          best.s = s;
-          best.node = n;
-          best.ea = e.a;
-          best.eb = e.b;
-          best.xi = xi;
+        if (swept_touch(p0[n], p1[n], p0[e.a], p1[e.a], p0[e.b], p1[e.b], tol, s, xi)) {
+          found = true;
+          // at a node it is already tied with: that clone itself
+          if ((xi <= kNodeTieXi && tied(e.a)) || (xi >= 1.0 - kNodeTieXi && tied(e.b))) continue;
+          // A touch is a node moving into the block: near a corner a node
+          // may cross one edge's line (or approach it from behind) while it
+          // stays outside the other edge, and a clone formed there separates
+          // at once and re-forms, without end.
+          if (s < 1.0 && !(depth_inside(static_cast<int>(ob), p1[n], p1) > 0.0)) continue;
+          // A node released at the start of this interval touches again in
+          // the next patch step (a coarse step: later in this one): touching
+          // at once, its clone re-forms and separates again and again within
+          // ever shorter steps (seen after tension releases next to sliding
+          // clones). Its motion meanwhile, |v| dt/n, is found at s = 0 next.
+          constexpr double kStartFraction = 1e-9;  // of the interval: the patch loop's grouping of simultaneous touches
+          if (released_at_[n] >= t_start && (!coarse_level || s <= kStartFraction)) continue;
+          if (s < best.s) {
+            best.s = s;
+            best.node = n;
+            best.ea = e.a;
+            best.eb = e.b;
+            best.xi = xi;
+          }
         }
       }
+      // A node that starts the interval inside the other block at any depth
+      // is never skipped: within d_tol of its boundary and approaching it
+      // touches at s = 0 (above); deeper, its time of impact lies in an
+      // earlier step, and the run stops.
+      if (!found) check_not_inside(n, static_cast<int>(ob), p0, t_start);
     }
     if (best.node >= 0) out.push_back(best);
   }
   std::sort(out.begin(), out.end(), [](const Touch& a, const Touch& b) { return a.s < b.s; });
   return out;
+}
+
+// Depth of p inside block b (positions pos): the distance to the block's
+// boundary if p lies inside its boundary loop (crossing number), else 0.
+double Model::depth_inside(int b, Vec2 p, const std::vector<Vec2>& pos) const {
+  bool inside = false;
+  double depth = std::numeric_limits<double>::infinity();
+  for (int ei : block_bedges_[static_cast<std::size_t>(b)]) {
+    const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
+    const Vec2 a = pos[e.a], c = pos[e.b];
+    if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) / (c.y - a.y) * (c.x - a.x)) inside = !inside;
+    depth = std::min(depth, point_segment_distance(p, a, c));
+  }
+  return inside ? depth : 0.0;
+}
+
+void Model::check_not_inside(int node, int other, const std::vector<Vec2>& pos, double t) const {
+  const double depth = depth_inside(other, pos[node], pos);
+  if (!(depth > opt_.tolerance)) return;
+  std::ostringstream s;
+  s << "cdem: node " << node << " of block " << node_block_[node] << " is " << depth << " m inside block " << other
+    << " at t = " << t << " s (step " << steps_ + 1 << "), deeper than the contact tolerance d_tol = "
+    << opt_.tolerance << " m: its time of impact lies in an earlier step and the contact cannot be resolved; "
+    << "use a smaller dt or check that the blocks do not overlap at the start";
+  throw ContactError(s.str(), node, node_block_[node], other, steps_ + 1, t, depth);
 }
 
 bool Model::locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const {
