@@ -200,6 +200,7 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
   rec.energy_loss = project_component(static_cast<int>(clones_.size()) - 1);
   rec.v_clone = v_[m];
   impact_loss_ += rec.energy_loss;
+  touch_loss_eq5_ += rec.energy_loss_eq5;
   if (opt_.capture_touch_snapshots) {
     rec.snapshot.push_back(snapshot());
     rec.snapshot.back().time = t;

@@ -123,4 +123,20 @@ Snapshot Model::snapshot() const {
   return s;
 }
 
+CdemEnergyAccount Model::energy_account() const {
+  CdemEnergyAccount a;
+  const CdemEnergy e = energy();
+  a.time = time_;
+  a.initial = initial_energy_;
+  a.kinetic = e.kinetic;
+  a.strain = e.strain;
+  a.gravity = e.gravity;
+  a.touch_loss = impact_loss_;
+  a.touch_loss_eq5 = touch_loss_eq5_;
+  a.refine_loss = refine_loss_;
+  a.deletion_loss = deletion_loss_;
+  a.other = a.initial - e.total() - a.touch_loss - a.refine_loss - a.deletion_loss;
+  return a;
+}
+
 }  // namespace dda::cdem

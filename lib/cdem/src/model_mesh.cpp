@@ -173,6 +173,7 @@ void Model::build(const CdemScene& scene) {
     scene_fail("dt", s.str());
   }
   compute_coarse_forces();
+  initial_energy_ = energy().total();
 }
 
 std::uint64_t Model::edge_key(int a, int b) const {

@@ -40,6 +40,7 @@ void Model::refine(const std::vector<int>& list_in) {
     if (elem(e).active && elem(e).level == 0 && std::find(list.begin(), list.end(), e) == list.end()) list.push_back(e);
   if (list.empty()) return;
   const double energy_before = kinetic_energy() + energy().strain;
+  const double total_before = energy().total();
   const int k = k_;
   std::vector<double> mm = m_;
   std::vector<Vec2> p(x_.size());
@@ -216,6 +217,7 @@ void Model::refine(const std::vector<int>& list_in) {
     v_[h] = lerp(v_[hang_a_[h]], v_[hang_b_[h]], hang_w_[h]);
   }
   remap_change_ += kinetic_energy() + energy().strain - energy_before;
+  refine_loss_ += total_before - energy().total();
 }
 
 // Deletes the subdivided elements of refined coarse elements: every child
@@ -225,6 +227,7 @@ void Model::refine(const std::vector<int>& list_in) {
 void Model::unrefine(const std::vector<int>& parents) {
   if (parents.empty()) return;
   const double energy_before = kinetic_energy() + energy().strain;
+  const double total_before = energy().total();
   std::vector<double> mm(x_.size(), 0.0);
   std::vector<Vec2> p(x_.size());
   for (std::size_t i = 0; i < x_.size(); ++i)
@@ -331,6 +334,7 @@ void Model::unrefine(const std::vector<int>& parents) {
     v_[h] = lerp(v_[hang_a_[h]], v_[hang_b_[h]], hang_w_[h]);
   }
   remap_change_ += kinetic_energy() + energy().strain - energy_before;
+  deletion_loss_ += total_before - energy().total();
 }
 
 // At a touch (Sect. 5): the coarse elements of both blocks within c dt2 of

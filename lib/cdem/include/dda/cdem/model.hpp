@@ -207,6 +207,25 @@ struct CdemEnergy {
   double total() const { return kinetic + strain + gravity; }
 };
 
+// Where the energy of a run went, J per unit thickness, at the model's
+// current time (one time-series row):
+//   initial = kinetic + strain + gravity + touch_loss + refine_loss
+//             + deletion_loss + other.
+// touch_loss is measured (the kinetic-energy drop of each touch's Eq. 4
+// projection; touch_loss_eq5 is Eq. 5 with the clone's masses, for
+// comparison); refine_loss and deletion_loss are the total-energy drops of
+// refining elements and of deleting patches (Sect. 5); other is what is left:
+// time integration, work of friction at sliding clones, mass damping, and
+// the clone constraint's drift.
+struct CdemEnergyAccount {
+  double time = 0.0;
+  double initial = 0.0;
+  double kinetic = 0.0, strain = 0.0, gravity = 0.0;
+  double touch_loss = 0.0, touch_loss_eq5 = 0.0;
+  double refine_loss = 0.0, deletion_loss = 0.0;
+  double other = 0.0;
+};
+
 class Model {
  public:
   explicit Model(const CdemScene& scene);
@@ -238,6 +257,7 @@ class Model {
   CdemEnergy energy() const;
   double impact_energy_loss() const { return impact_loss_; }    // sum over touches, measured
   double remap_energy_change() const { return remap_change_; }  // refine + delete patches
+  CdemEnergyAccount energy_account() const;
 
   const std::vector<TouchRecord>& touches() const { return touches_; }
   const std::vector<SeparationRecord>& separations() const { return separations_; }
@@ -410,6 +430,7 @@ class Model {
   int k_ = 0;         // subdivision level of this run (0 until the first refinement)
   int substeps_ = 1;  // n of dt/n in patches
   double impact_loss_ = 0.0, remap_change_ = 0.0;
+  double refine_loss_ = 0.0, deletion_loss_ = 0.0, touch_loss_eq5_ = 0.0, initial_energy_ = 0.0;
 };
 
 }  // namespace dda::cdem
