@@ -28,6 +28,20 @@ void Model::update_substeps() {
   substeps_ = std::max(1, static_cast<int>(std::ceil(dt_ / h - 1e-9)));
 }
 
+// After refining or deleting patches (masses m_ already set): inverse
+// masses, element and node lists, boundary, substep count, hanging nodes.
+void Model::finish_mesh_change() {
+  for (std::size_t i = 0; i < x_.size(); ++i)
+    inv_m_[i] = (blocks_[node_block_[i]].fixed || !(m_[i] > 0.0) || kind_[i] == NodeKind::kHanging) ? 0.0 : 1.0 / m_[i];
+  rebuild_lists();
+  rebuild_boundary();
+  update_substeps();
+  for (int h : hanging_) {
+    x_[h] = lerp(x_[hang_a_[h]], x_[hang_b_[h]], hang_w_[h]);
+    v_[h] = lerp(v_[hang_a_[h]], v_[hang_b_[h]], hang_w_[h]);
+  }
+}
+
 // Refines coarse elements k_ x k_ at the current (synchronised) state. Mass
 // and momentum move with 'parcels' (an element's lumped share at a node):
 // the parent's corner parcels leave with the corner velocities, the
@@ -124,21 +138,8 @@ void Model::refine(const std::vector<int>& list_in) {
     };
     for (int j = 0; j <= k; ++j)
       for (int i = 0; i + j <= k; ++i) {
-        int id;
-        if (i == 0 && j == 0)
-          id = c[0];
-        else if (i == k)
-          id = c[1];
-        else if (j == k)
-          id = c[2];
-        else if (j == 0)
-          id = e01[static_cast<std::size_t>(i - 1)];
-        else if (i == 0)
-          id = e02[static_cast<std::size_t>(j - 1)];
-        else if (i + j == k)
-          id = e12[static_cast<std::size_t>(j - 1)];
-        else
-          id = new_node(interp(xc, i, j), interp(vc, i, j), block);
+        int id = lattice_boundary_node(i, j, k, c, e01, e12, e02);
+        if (id < 0) id = new_node(interp(xc, i, j), interp(vc, i, j), block);
         lat.nodes[static_cast<std::size_t>(lattice_index(i, j, k))] = id;
       }
     // lattice (i, j) of each lattice slot, for the parcel velocities
@@ -207,15 +208,7 @@ void Model::refine(const std::vector<int>& list_in) {
       throw SimulationError("cdem refine: mass bookkeeping broke at node " + std::to_string(i));
     if (!blocks_[node_block_[i]].fixed && m_[i] > 0.0) v_[i] = p[i] / m_[i];
   }
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    inv_m_[i] = (blocks_[node_block_[i]].fixed || !(m_[i] > 0.0) || kind_[i] == NodeKind::kHanging) ? 0.0 : 1.0 / m_[i];
-  rebuild_lists();
-  rebuild_boundary();
-  update_substeps();
-  for (int h : hanging_) {
-    x_[h] = lerp(x_[hang_a_[h]], x_[hang_b_[h]], hang_w_[h]);
-    v_[h] = lerp(v_[hang_a_[h]], v_[hang_b_[h]], hang_w_[h]);
-  }
+  finish_mesh_change();
   remap_change_ += kinetic_energy() + energy().strain - energy_before;
   refine_loss_ += total_before - energy().total();
 }
@@ -324,15 +317,7 @@ void Model::unrefine(const std::vector<int>& parents) {
     }
     if (!blocks_[node_block_[i]].fixed && m_[i] > 0.0) v_[i] = p[i] / m_[i];
   }
-  for (std::size_t i = 0; i < x_.size(); ++i)
-    inv_m_[i] = (blocks_[node_block_[i]].fixed || !(m_[i] > 0.0) || kind_[i] == NodeKind::kHanging) ? 0.0 : 1.0 / m_[i];
-  rebuild_lists();
-  rebuild_boundary();
-  update_substeps();
-  for (int h : hanging_) {
-    x_[h] = lerp(x_[hang_a_[h]], x_[hang_b_[h]], hang_w_[h]);
-    v_[h] = lerp(v_[hang_a_[h]], v_[hang_b_[h]], hang_w_[h]);
-  }
+  finish_mesh_change();
   remap_change_ += kinetic_energy() + energy().strain - energy_before;
   deletion_loss_ += total_before - energy().total();
 }

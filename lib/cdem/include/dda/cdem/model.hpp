@@ -343,6 +343,7 @@ class Model {
   void refine(const std::vector<int>& elems);
   void unrefine(const std::vector<int>& parents);
   void update_substeps();
+  void finish_mesh_change();
   double element_omega_max(const Elem& e) const;
   // kinematics and forces
   void sync_positions(double t);
