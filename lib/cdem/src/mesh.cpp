@@ -63,20 +63,8 @@ TriMesh mesh_convex_polygon(const std::vector<Vec2>& outline, int divisions) {
     std::vector<int> lat(static_cast<std::size_t>(lattice_count(k)));
     for (int j = 0; j <= k; ++j)
       for (int i = 0; i + j <= k; ++i) {
-        int id;
-        if (i == 0 && j == 0)
-          id = tri[0];
-        else if (i == k)
-          id = tri[1];
-        else if (j == k)
-          id = tri[2];
-        else if (j == 0)
-          id = e01[static_cast<std::size_t>(i - 1)];
-        else if (i == 0)
-          id = e02[static_cast<std::size_t>(j - 1)];
-        else if (i + j == k)
-          id = e12[static_cast<std::size_t>(j - 1)];
-        else {
+        int id = lattice_boundary_node(i, j, k, tri, e01, e12, e02);
+        if (id < 0) {
           id = static_cast<int>(mesh.nodes.size());
           mesh.nodes.push_back(v0 + (static_cast<double>(i) / k) * (v1 - v0) +
                                (static_cast<double>(j) / k) * (v2 - v0));

@@ -20,6 +20,21 @@ struct TriMesh {
 inline constexpr int lattice_count(int k) { return (k + 1) * (k + 2) / 2; }
 inline constexpr int lattice_index(int i, int j, int k) { return j * (k + 1) - j * (j - 1) / 2 + i; }
 
+// The node at lattice point (i, j) of a triangle split k times when it lies
+// on the triangle's boundary: a corner c[q] or a node of the edge lists
+// e01, e12, e02 (k - 1 nodes each, ordered from the first to the second
+// named corner); -1 for an interior point.
+inline int lattice_boundary_node(int i, int j, int k, const std::array<int, 3>& c, const std::vector<int>& e01,
+                                 const std::vector<int>& e12, const std::vector<int>& e02) {
+  if (i == 0 && j == 0) return c[0];
+  if (i == k) return c[1];
+  if (j == k) return c[2];
+  if (j == 0) return e01[static_cast<std::size_t>(i - 1)];
+  if (i == 0) return e02[static_cast<std::size_t>(j - 1)];
+  if (i + j == k) return e12[static_cast<std::size_t>(j - 1)];
+  return -1;
+}
+
 // The k^2 sub-triangles of that lattice as lattice indices, each with the
 // orientation of the parent: for every (i, j) the 'up' triangle
 // (i,j),(i+1,j),(i,j+1) and, where it fits, the 'down' triangle

@@ -38,15 +38,24 @@
 //
 // Approximations relative to Paper B (which gives no algorithm tables):
 // the tie is node-to-node or node-to-edge-point (the point shares its mass
-// and force with the edge's nodes by their linear weights); a clone released
-// in shear is removed (as Sect. 4.2 says) and the node may touch again one
-// step later, so sliding is a sequence of stick, release and re-touch; touches
-// inside a patch step split that step for all patch nodes (the coarse step
-// is split for the touching nodes only, as in Sect. 3); one k per run.
+// and force with the edge's nodes by their linear weights); a clone whose
+// shear reaches the limit slides (Eq. 10: normal velocity tied, shear force
+// at the limit against the sliding, the tied point following the node along
+// the target's face) instead of being removed as Sect. 4.2's last sentence
+// says: removed, the pressed node touches again at once, and each re-touch's
+// inelastic impact takes the tangential velocity (a frictionless face stuck
+// or, with the re-touch delayed, was passed through); a released node may
+// touch again from the next patch step (coarse level: later in the same
+// step); every boundary node is checked at each interval's start against
+// the other blocks at any depth; touches inside a patch step split that step
+// for all patch nodes (the coarse step is split for the touching nodes only,
+// as in Sect. 3); one k per run.
 //
 // The library does no I/O. Errors: dda::SceneError for a bad scene (also
 // when dt exceeds the mesh's critical step), dda::SimulationError for a run
-// that goes wrong (inverted element, non-finite state).
+// that goes wrong (inverted element, non-finite state), and its subclass
+// ContactError for a contact that cannot be resolved (a node deeper than
+// d_tol inside another block, a touch that does not let the step advance).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -115,7 +124,30 @@ enum class NodeKind : std::uint8_t {
   kDead,     // removed with its patch
 };
 
-enum class SeparationCriterion : std::uint8_t { kTension, kShear };
+// kTension: Eq. 6, the clone is removed. kShear: Eqs. 7-9, the shear limit
+// is reached and the clone starts sliding (Eq. 10; listed in slips(), not a
+// separation). kSlidOff: a sliding clone's node left the target's boundary
+// (past a corner) or reached an edge integrated on the other level; the
+// clone is removed and the node is free to touch again.
+enum class SeparationCriterion : std::uint8_t { kTension, kShear, kSlidOff };
+
+// A run stopped because a contact cannot be resolved: a node found inside
+// another block deeper than the contact tolerance (its time of impact lies
+// in an earlier step), or a touch that does not let the step advance.
+struct ContactError : SimulationError {
+  ContactError(const std::string& what, int node_, int block_, int other_block_, std::int64_t step_, double time_,
+               double depth_)
+      : SimulationError(what),
+        node(node_),
+        block(block_),
+        other_block(other_block_),
+        step(step_),
+        time(time_),
+        depth(depth_) {}
+  int node, block, other_block;
+  std::int64_t step;
+  double time, depth;  // s; m behind the other block's boundary
+};
 
 struct Snapshot {
   struct Tri {
@@ -175,6 +207,25 @@ struct CdemEnergy {
   double total() const { return kinetic + strain + gravity; }
 };
 
+// Where the energy of a run went, J per unit thickness, at the model's
+// current time (one time-series row):
+//   initial = kinetic + strain + gravity + touch_loss + refine_loss
+//             + deletion_loss + other.
+// touch_loss is measured (the kinetic-energy drop of each touch's Eq. 4
+// projection; touch_loss_eq5 is Eq. 5 with the clone's masses, for
+// comparison); refine_loss and deletion_loss are the total-energy drops of
+// refining elements and of deleting patches (Sect. 5); other is what is left:
+// time integration, work of friction at sliding clones, mass damping, and
+// the clone constraint's drift.
+struct CdemEnergyAccount {
+  double time = 0.0;
+  double initial = 0.0;
+  double kinetic = 0.0, strain = 0.0, gravity = 0.0;
+  double touch_loss = 0.0, touch_loss_eq5 = 0.0;
+  double refine_loss = 0.0, deletion_loss = 0.0;
+  double other = 0.0;
+};
+
 class Model {
  public:
   explicit Model(const CdemScene& scene);
@@ -206,9 +257,11 @@ class Model {
   CdemEnergy energy() const;
   double impact_energy_loss() const { return impact_loss_; }    // sum over touches, measured
   double remap_energy_change() const { return remap_change_; }  // refine + delete patches
+  CdemEnergyAccount energy_account() const;
 
   const std::vector<TouchRecord>& touches() const { return touches_; }
   const std::vector<SeparationRecord>& separations() const { return separations_; }
+  const std::vector<SeparationRecord>& slips() const { return slips_; }  // clones that started sliding
   std::vector<CloneView> clones() const;
   int subdivision_level() const { return k_; }
   int patch_substeps() const { return substeps_; }
@@ -257,7 +310,12 @@ class Model {
     int ea = -1, eb = -1;  // the touched edge (for the normal)
     double area = 0.0;     // A_c
     bool fine = false;
-    bool release = false;  // shear-limited: removed after this force evaluation
+    // Sliding (Eq. 10): the shear limit was reached; from then on only the
+    // normal velocity is tied, the shear force is the limit with the sign
+    // slip_sign, and the tied point follows the node along the target's
+    // boundary.
+    bool sliding = false;
+    double slip_sign = 0.0;
     Vec2 lambda{};
   };
   struct Touch {     // a detected touch, not yet processed
@@ -285,6 +343,7 @@ class Model {
   void refine(const std::vector<int>& elems);
   void unrefine(const std::vector<int>& parents);
   void update_substeps();
+  void finish_mesh_change();
   double element_omega_max(const Elem& e) const;
   // kinematics and forces
   void sync_positions(double t);
@@ -296,16 +355,27 @@ class Model {
   std::vector<int> clone_component(int ci) const;
   double project_component(int ci);
   void kick_patch(double h);
+  void kick_coarse_first_half();
+  void forces_and_second_half_kick();
+  void refresh_forces_after_patch_change(double t);
   bool locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const;
   // contact
   std::vector<Touch> find_touches(bool coarse_level, double t_start, const std::vector<Vec2>& p0,
                                   const std::vector<Vec2>& p1) const;
+  std::vector<Touch> coarse_touches(double t0) const;
+  double depth_inside(int block, Vec2 p, const std::vector<Vec2>& pos) const;
+  void check_not_inside(int node, int other_block, const std::vector<Vec2>& pos, double t) const;
+  bool follow_sliding_target(Clone& c);
+  void release_clone(const Clone& c, double t);
   bool process_touch(const Touch& touch, bool fine_level, double t, double t0, double t1);
+  void refine_contact_zone(int main_node, Vec2 point, int& ea, int& eb, double& xi, TouchRecord& rec);
   bool dissolve_free_patches();
   double tributary_length(int node) const;
   Vec2 vertex_normal(int node) const;
   Vec2 clone_normal(const Clone& c) const;
   bool in_clone(int node) const;
+  bool touch_blocked(int node) const;
+  std::vector<int> tied_partners(int node) const;
   // stepping
   void literal_two_stage(const std::vector<Touch>& touches, double t0);
   void patch_loop(double t0, double t1, std::vector<Touch> coarse_touches);
@@ -356,9 +426,12 @@ class Model {
   std::vector<Clone> clones_;
   std::vector<TouchRecord> touches_;
   std::vector<SeparationRecord> separations_;
+  std::vector<SeparationRecord> slips_;
+  std::unordered_map<int, int> step_touch_count_;  // touches per node in the current coarse step
   int k_ = 0;         // subdivision level of this run (0 until the first refinement)
   int substeps_ = 1;  // n of dt/n in patches
   double impact_loss_ = 0.0, remap_change_ = 0.0;
+  double refine_loss_ = 0.0, deletion_loss_ = 0.0, touch_loss_eq5_ = 0.0, initial_energy_ = 0.0;
 };
 
 }  // namespace dda::cdem

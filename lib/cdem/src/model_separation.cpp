@@ -1,0 +1,203 @@
+// Paper B Sect. 4.2: the interaction force of each clone node (Eq. 11) and
+// the separation criteria, tension (Eq. 6) and Mohr-Coulomb shear
+// (Eqs. 7-10).
+#include "dda/cdem/model.hpp"
+
+#include <cmath>
+
+namespace dda::cdem {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+// A sliding clone's tied point follows its main node along the target
+// block's face: the nearest boundary edge and the foot of the node on it.
+// Returns false when the node slid past the face (past a corner) or onto an
+// edge integrated on the other level; the caller removes the clone then.
+bool Model::follow_sliding_target(Clone& c) {
+  int a = -1, b = -1;
+  double xi = 0.0;
+  if (!locate_edge(node_block_[c.ea], x_[c.main], a, b, xi)) return false;
+  // The tie moves only along the face: to the touched edge itself or to a
+  // neighbour sharing a node with it and turned by less than this angle (the
+  // sub-edges of a refined face); a corner ends the slide.
+  constexpr double kMaxFaceTurnCos = 0.8660254037844387;  // cos 30 deg
+  if (!((a == c.ea && b == c.eb) ||
+        ((a == c.ea || a == c.eb || b == c.ea || b == c.eb) &&
+         dot(normalized(x_[b] - x_[a]), normalized(x_[c.eb] - x_[c.ea])) > kMaxFaceTurnCos)))
+    return false;
+  const Vec2 e = x_[b] - x_[a];
+  const double xi_raw = dot(x_[c.main] - x_[a], e) / length_squared(e);
+  constexpr double kFootSlack = 1e-9;  // relative to the edge length: round-off of the foot at a corner
+  if (xi_raw < -kFootSlack || xi_raw > 1.0 + kFootSlack) return false;
+  for (int q : {a, b}) {
+    if (kind_[q] != NodeKind::kCoarse && kind_[q] != NodeKind::kFine) return false;
+    if (!blocks_[node_block_[q]].fixed && (kind_[q] == NodeKind::kFine) != c.fine) return false;
+  }
+  for (int q = 0; q < 2; ++q)
+    if (c.t[q] >= 0) clone_count_[c.t[q]] -= 1;
+  c.t = {a, b};
+  c.w = {1.0 - xi, xi};
+  c.ea = a;
+  c.eb = b;
+  clone_count_[a] += 1;
+  clone_count_[b] += 1;
+  return true;
+}
+
+void Model::release_clone(const Clone& c, double t) {
+  clone_count_[c.main] -= 1;
+  released_at_[c.main] = t;
+  for (int q = 0; q < 2; ++q)
+    if (c.t[q] >= 0) {
+      clone_count_[c.t[q]] -= 1;
+      released_at_[c.t[q]] = t;
+    }
+}
+
+// Interaction forces of the clone nodes (Eq. 11) at the current forces f_:
+// the force on each main node that gives it the acceleration of the point
+// it is tied to, solved by Gauss-Seidel over coupled clones. Then the
+// separation criteria: tension beyond sigma_t A_c (Eq. 6) removes the clone
+// and its forces; shear beyond F_n tan(phi) + c A_c (Eqs. 7-9) limits the
+// shear force to that value (Eq. 10) and the clone slides from then on: its
+// normal velocity stays tied (the normal part of Eq. 11), its shear force is
+// the limit against the relative sliding, and its tied point follows the
+// node along the target's boundary; a sliding clone separates by Eq. 6 or
+// when its node slides off the target. (Paper B's text removes the clone at
+// Eq. 9 as well; the node, still pressed on the face, then touches again at
+// once, and each re-touch's inelastic impact (Eq. 4) kills the tangential
+// relative velocity: a frictionless face sticks or, with the re-touch
+// delayed, is passed through.) The resulting forces are added to f_.
+void Model::solve_clones(bool fine, double t) {
+  std::vector<int> ids;
+  for (int i = 0; i < static_cast<int>(clones_.size()); ++i)
+    if (clones_[static_cast<std::size_t>(i)].fine == fine) ids.push_back(i);
+  if (ids.empty()) return;
+  std::vector<char> removed(clones_.size(), 0);
+  const double tan_phi = std::tan(opt_.strength.friction_deg * kPi / 180.0);
+  auto record = [&](const Clone& c, SeparationCriterion why, double limit) {
+    const Vec2 n = clone_normal(c);
+    SeparationRecord rec;
+    rec.time = t;
+    rec.main_node = c.main;
+    rec.main_block = node_block_[c.main];
+    rec.target_block = node_block_[c.ea];
+    rec.criterion = why;
+    rec.normal_force = dot(c.lambda, n);
+    rec.shear_force = dot(c.lambda, perp_left(n));
+    rec.limit = limit;
+    rec.contact_area = c.area;
+    rec.fine = c.fine;
+    return rec;
+  };
+  for (int i : ids) {
+    Clone& c = clones_[static_cast<std::size_t>(i)];
+    if (!c.sliding) continue;
+    if (!follow_sliding_target(c)) {
+      removed[i] = 1;
+      c.lambda = Vec2{};
+      separations_.push_back(record(c, SeparationCriterion::kSlidOff, 0.0));
+      continue;
+    }
+    // Friction opposes the relative sliding velocity of the main node.
+    Vec2 vrel = v_[c.main];
+    for (int q = 0; q < 2; ++q)
+      if (c.t[q] >= 0) vrel -= c.w[q] * v_[c.t[q]];
+    const double vs = dot(vrel, perp_left(clone_normal(c)));
+    if (vs != 0.0) c.slip_sign = vs > 0.0 ? -1.0 : 1.0;
+  }
+  for (std::size_t pass = 0; pass <= ids.size(); ++pass) {
+    for (int i : ids) {
+      const Clone& c = clones_[static_cast<std::size_t>(i)];
+      scratch_[c.main] = inv_m_[c.main] * f_[c.main];
+      for (int q = 0; q < 2; ++q)
+        if (c.t[q] >= 0) scratch_[c.t[q]] = inv_m_[c.t[q]] * f_[c.t[q]];
+    }
+    for (int i : ids) clones_[static_cast<std::size_t>(i)].lambda = Vec2{};
+    for (int it = 0; it < 500; ++it) {
+      double worst = 0.0, scale = 0.0;
+      for (int i : ids) {
+        if (removed[i]) continue;
+        Clone& c = clones_[static_cast<std::size_t>(i)];
+        Vec2 r = scratch_[c.main];
+        double w = inv_m_[c.main];
+        for (int q = 0; q < 2; ++q)
+          if (c.t[q] >= 0) {
+            r -= c.w[q] * scratch_[c.t[q]];
+            w += c.w[q] * c.w[q] * inv_m_[c.t[q]];
+          }
+        if (!(w > 0.0)) continue;
+        Vec2 dl = -(1.0 / w) * r;
+        if (c.sliding) {
+          const Vec2 n = clone_normal(c), u = perp_left(n);
+          const double fn = dot(c.lambda, n) + dot(dl, n);
+          const double fs = c.slip_sign * (std::max(fn, 0.0) * tan_phi + opt_.strength.cohesion * c.area);
+          dl = fn * n + fs * u - c.lambda;
+        }
+        c.lambda += dl;
+        scratch_[c.main] += inv_m_[c.main] * dl;
+        for (int q = 0; q < 2; ++q)
+          if (c.t[q] >= 0) scratch_[c.t[q]] -= (c.w[q] * inv_m_[c.t[q]]) * dl;
+        worst = std::max(worst, length(dl));
+        scale = std::max(scale, length(c.lambda));
+      }
+      if (worst <= 1e-13 * scale || worst == 0.0) break;
+    }
+    bool changed = false;
+    for (int i : ids) {
+      if (removed[i]) continue;
+      Clone& c = clones_[static_cast<std::size_t>(i)];
+      const Vec2 n = clone_normal(c);
+      const Vec2 u = perp_left(n);
+      const double fn = dot(c.lambda, n), fs = dot(c.lambda, u);
+      // Round-off guard: forces below 1e-12 E A_c are zero (a fresh clone
+      // carries only round-off).
+      const double noise =
+          1e-12 * scene_.materials[static_cast<std::size_t>(blocks_[node_block_[c.main]].material)].young * c.area;
+      if (fn < 0.0 && -fn > opt_.strength.tensile * c.area + noise) {
+        separations_.push_back(record(c, SeparationCriterion::kTension, opt_.strength.tensile * c.area));
+        removed[i] = 1;
+        c.lambda = Vec2{};
+        changed = true;
+        continue;
+      }
+      if (c.sliding) continue;
+      const double fs_max = std::max(fn, 0.0) * tan_phi + opt_.strength.cohesion * c.area;
+      if (std::fabs(fs) > fs_max + noise) {
+        slips_.push_back(record(c, SeparationCriterion::kShear, fs_max));
+        c.sliding = true;
+        c.slip_sign = fs > 0.0 ? 1.0 : -1.0;
+        // the tie becomes edge-to-node (the edge's normal) for a node-to-node clone
+        if (c.t[1] < 0 && !follow_sliding_target(c)) {
+          removed[i] = 1;
+          c.lambda = Vec2{};
+          separations_.push_back(record(c, SeparationCriterion::kSlidOff, 0.0));
+        }
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  for (int i : ids) {
+    if (removed[i]) continue;
+    const Clone& c = clones_[static_cast<std::size_t>(i)];
+    f_[c.main] += c.lambda;
+    for (int q = 0; q < 2; ++q)
+      if (c.t[q] >= 0) f_[c.t[q]] -= c.w[q] * c.lambda;
+  }
+  std::vector<Clone> keep;
+  for (std::size_t i = 0; i < clones_.size(); ++i) {
+    if (removed[i]) {
+      release_clone(clones_[i], t);
+      continue;
+    }
+    keep.push_back(clones_[i]);
+  }
+  clones_.swap(keep);
+}
+
+}  // namespace dda::cdem

@@ -1,0 +1,209 @@
+// Paper B Sects. 2-3: contact detection (boundary nodes against boundary
+// edges of other blocks) and the time of impact on the collision path, which
+// splits a step into its two time stages dt1 and dt2.
+#include "dda/cdem/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "geometry.hpp"
+
+namespace dda::cdem {
+
+using namespace detail;
+
+namespace {
+
+// Touch of a node moving p0 -> p1 with the edge a0 -> a1, b0 -> b1 over one
+// interval (all motions linear in s in [0, 1]): the collision path of
+// Paper B Sect. 3. G(s) = cross(p - a, b - a) is the signed gap times the
+// edge length (positive on the outer side of a CCW boundary edge) and is
+// quadratic in s. A candidate ends the interval closer than tol; the touch
+// is the first s where G = 0 with the foot of the node inside the edge.
+// A node that starts on or up to tol behind the edge and approaches touches
+// at s = 0.
+bool swept_touch(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double tol, double& s_out, double& xi_out) {
+  const Vec2 w0 = p0 - a0, dw = (p1 - a1) - w0;
+  const Vec2 e0 = b0 - a0, de = (b1 - a1) - e0;
+  const double c0 = cross(w0, e0);
+  const double c1 = cross(w0, de) + cross(dw, e0);
+  const double c2 = cross(dw, de);
+  const double l0 = length(e0), l1 = length(e0 + de);
+  if (!(l0 > 0.0) || !(l1 > 0.0)) return false;
+  const double gap0 = c0 / l0;
+  const double gap1 = (c0 + c1 + c2) / l1;
+  if (gap1 >= tol) return false;  // not within the contact tolerance at the end
+  auto foot = [&](double s) {
+    const Vec2 w = w0 + s * dw, e = e0 + s * de;
+    return dot(w, e) / length_squared(e);
+  };
+  constexpr double kFootSlack = 1e-9;
+  auto on_edge = [&](double xi) { return xi >= -kFootSlack && xi <= 1.0 + kFootSlack; };
+  double s = -1.0;
+  if (gap0 <= 0.0) {
+    if (gap0 < -tol) return false;                 // behind the edge: not this edge's node
+    if (!(c1 < 0.0 || gap1 < gap0)) return false;  // not approaching
+    s = 0.0;
+  } else {
+    // smallest root of c0 + c1 s + c2 s^2 in (0, 1]
+    const double scale = std::fabs(c0) + std::fabs(c1) + std::fabs(c2);
+    if (std::fabs(c2) <= 1e-12 * scale) {
+      if (!(c1 < 0.0)) return false;
+      s = -c0 / c1;
+    } else {
+      const double disc = c1 * c1 - 4.0 * c2 * c0;
+      if (disc < 0.0) return false;
+      const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+      double r1 = q / c2, r2 = q != 0.0 ? c0 / q : 2.0;
+      if (r1 > r2) std::swap(r1, r2);
+      if (r1 > 0.0 && r1 <= 1.0)
+        s = r1;
+      else if (r2 > 0.0 && r2 <= 1.0)
+        s = r2;
+      else
+        return false;
+    }
+    if (!(s > 0.0 && s <= 1.0 + 1e-12)) return false;
+    s = std::min(s, 1.0);
+  }
+  const double xi = foot(s);
+  if (!on_edge(xi)) return false;
+  s_out = s;
+  xi_out = std::clamp(xi, 0.0, 1.0);
+  return true;
+}
+
+}  // namespace
+
+std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start, const std::vector<Vec2>& p0,
+                                              const std::vector<Vec2>& p1) const {
+  const double tol = opt_.tolerance;
+  std::vector<Aabb> box(blocks_.size());
+  auto grow = [](Aabb& b, Vec2 p) {
+    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)};
+    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)};
+  };
+  for (int n : bnodes_) {
+    grow(box[node_block_[n]], p0[n]);
+    grow(box[node_block_[n]], p1[n]);
+  }
+  for (Aabb& b : box) {
+    b.lo = b.lo - Vec2{tol, tol};
+    b.hi = b.hi + Vec2{tol, tol};
+  }
+  std::vector<Touch> out;
+  for (int n : bnodes_) {
+    const NodeKind kn = kind_[n];
+    if (kn == NodeKind::kDead || kn == NodeKind::kHanging || touch_blocked(n)) continue;
+    // A node whose clone was removed may touch again within the same coarse
+    // or patch step (a sliding clone keeps a pressed node tied, so a release
+    // is a separation or a slide past the target's corner).
+    if (coarse_level && kn != NodeKind::kCoarse) continue;
+    const bool node_fine = kn == NodeKind::kFine;
+    const std::vector<int> partners = in_clone(n) ? tied_partners(n) : std::vector<int>{};
+    auto tied = [&](int a) { return std::find(partners.begin(), partners.end(), a) != partners.end(); };
+    const int bn = node_block_[n];
+    Aabb nb;
+    grow(nb, p0[n]);
+    grow(nb, p1[n]);
+    Touch best;
+    best.s = 2.0;
+    for (std::size_t ob = 0; ob < blocks_.size(); ++ob) {
+      if (static_cast<int>(ob) == bn || (blocks_[bn].fixed && blocks_[ob].fixed) || !aabb_overlap(nb, box[ob]))
+        continue;
+      bool found = false;
+      for (int ei : block_bedges_[ob]) {
+        const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
+        const bool any_fine = node_fine || kind_[e.a] == NodeKind::kFine || kind_[e.b] == NodeKind::kFine;
+        if (coarse_level == any_fine) continue;  // coarse step: all-coarse pairs; patch steps: the rest
+        double s = 0.0, xi = 0.0;
+        if (swept_touch(p0[n], p1[n], p0[e.a], p1[e.a], p0[e.b], p1[e.b], tol, s, xi)) {
+          found = true;
+          // at a node it is already tied with: that clone itself
+          if ((xi <= kNodeTieXi && tied(e.a)) || (xi >= 1.0 - kNodeTieXi && tied(e.b))) continue;
+          // A touch is a node moving into the block: near a corner a node
+          // may cross one edge's line (or approach it from behind) while it
+          // stays outside the other edge, and a clone formed there separates
+          // at once and re-forms, without end.
+          if (s < 1.0 && !(depth_inside(static_cast<int>(ob), p1[n], p1) > 0.0)) continue;
+          // A node released at the start of this interval touches again in
+          // the next patch step (a coarse step: later in this one): touching
+          // at once, its clone re-forms and separates again and again within
+          // ever shorter steps (seen after tension releases next to sliding
+          // clones). Its motion meanwhile, |v| dt/n, is found at s = 0 next.
+          constexpr double kStartFraction = 1e-9;  // of the interval: the patch loop's grouping of simultaneous touches
+          if (released_at_[n] >= t_start && (!coarse_level || s <= kStartFraction)) continue;
+          if (s < best.s) {
+            best.s = s;
+            best.node = n;
+            best.ea = e.a;
+            best.eb = e.b;
+            best.xi = xi;
+          }
+        }
+      }
+      // A node that starts the interval inside the other block at any depth
+      // is never skipped: within d_tol of its boundary and approaching it
+      // touches at s = 0 (above); deeper, its time of impact lies in an
+      // earlier step, and the run stops.
+      if (!found) check_not_inside(n, static_cast<int>(ob), p0, t_start);
+    }
+    if (best.node >= 0) out.push_back(best);
+  }
+  std::sort(out.begin(), out.end(), [](const Touch& a, const Touch& b) { return a.s < b.s; });
+  return out;
+}
+
+// Depth of p inside block b (positions pos): the distance to the block's
+// boundary if p lies inside its boundary loop (crossing number), else 0.
+double Model::depth_inside(int b, Vec2 p, const std::vector<Vec2>& pos) const {
+  bool inside = false;
+  double depth = std::numeric_limits<double>::infinity();
+  for (int ei : block_bedges_[static_cast<std::size_t>(b)]) {
+    const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
+    const Vec2 a = pos[e.a], c = pos[e.b];
+    if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) / (c.y - a.y) * (c.x - a.x)) inside = !inside;
+    depth = std::min(depth, point_segment_distance(p, a, c));
+  }
+  return inside ? depth : 0.0;
+}
+
+void Model::check_not_inside(int node, int other, const std::vector<Vec2>& pos, double t) const {
+  const double depth = depth_inside(other, pos[node], pos);
+  if (!(depth > opt_.tolerance)) return;
+  std::ostringstream s;
+  s << "cdem: node " << node << " of block " << node_block_[node] << " is " << depth << " m inside block " << other
+    << " at t = " << t << " s (step " << steps_ + 1 << "), deeper than the contact tolerance d_tol = "
+    << opt_.tolerance << " m: its time of impact lies in an earlier step and the contact cannot be resolved; "
+    << "use a smaller dt or check that the blocks do not overlap at the start";
+  throw ContactError(s.str(), node, node_block_[node], other, steps_ + 1, t, depth);
+}
+
+bool Model::locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (const BEdge& e : bedges_) {
+    if (e.block != block) continue;
+    const double d = point_segment_distance(p, x_[e.a], x_[e.b]);
+    if (d < best) {
+      best = d;
+      a = e.a;
+      b = e.b;
+    }
+  }
+  if (!std::isfinite(best)) return false;
+  const Vec2 e = x_[b] - x_[a];
+  xi = std::clamp(dot(p - x_[a], e) / length_squared(e), 0.0, 1.0);
+  return true;
+}
+
+// The coarse step's candidates: every coarse node moving linearly with its
+// half-kicked velocity over [t0, t0 + dt].
+std::vector<Model::Touch> Model::coarse_touches(double t0) const {
+  std::vector<Vec2> p0 = x_, p1 = x_;
+  for (int n : coarse_dofs_) p1[n] = x_[n] + dt_ * v_[n];
+  return find_touches(true, t0, p0, p1);
+}
+
+}  // namespace dda::cdem
