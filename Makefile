@@ -57,8 +57,14 @@ sanitize: deps
 	  ctest --output-on-failure -j $(JOBS) -R '$(SANITIZE_TESTS)'
 
 # Property tests with random seeds and FUZZ_CASES cases per property.
+# Then the scene-file mutation fuzzer: SCENE_FUZZ_CASES mutated scene files
+# read in-process, SCENE_FUZZ_CLI_RUNS of them also through `dda check` and
+# `dda run` (random seed; the seed is printed for replay).
+SCENE_FUZZ_CASES    ?= 200000
+SCENE_FUZZ_CLI_RUNS ?= 500
 fuzz: build
 	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
+	$(BIN)/io_scene_fuzz --cases $(SCENE_FUZZ_CASES) --cli-runs $(SCENE_FUZZ_CLI_RUNS) --seed random
 
 # Geometry kernel per polygon pair (Google Benchmark), then the Sect. 6.1
 # collapse's steps per second and the block-count scaling table (1-2 min).

@@ -301,3 +301,21 @@ TEST_CASE("guards.max_balance_error is read, checked and written", "[io][scene][
   j["guards"]["max_balance_error"] = -1;
   check_rejected(error_of(j), "guards.max_balance_error", "must be >= 0");
 }
+
+TEST_CASE("friction group numbers are bounded (the friction table is groups^2)", "[io][scene][hostile]") {
+  // Before: a group of 1e6 made the simulation fill a table of (1e6)^2 (int
+  // overflow) doubles; a negative boundary group indexed it out of bounds.
+  json j = base();
+  j["blocks"][0]["group"] = 1000000;
+  check_rejected(error_of(j), "blocks[0].group", "must lie in [0, 1024)");
+  j = base();
+  j["boundaries"] = {{{"a", {-5, -1}}, {"b", {5, -1}}, {"group", -1}}};
+  check_rejected(error_of(j), "boundaries[0].group", "must lie in [0, 1024)");
+  j = base();
+  j["contact"]["kt"] = 1e7;
+  j["contact"]["friction_rules"] = {{{"groups", {0, 5000}}, {"friction_deg", 10}}};
+  check_rejected(error_of(j), "contact.friction_rules[0]", "groups must lie in [0, 1024)");
+  j = base();
+  j["blocks"][0]["group"] = 1023;
+  CHECK(error_of(j).empty());
+}
