@@ -351,6 +351,10 @@ int main(int argc, char** argv) {
     } else {
       for (int e = 0; e < edits; ++e) mutate_text(text, rng);
     }
+    if (verbose) {
+      std::printf("case %ld (seed file %s):\n%s\n", k, s.name.c_str(), text.c_str());
+      std::fflush(stdout);
+    }
     alarm(static_cast<unsigned>(case_seconds));
     std::string failure;
     Verdict v;
@@ -367,9 +371,7 @@ int main(int argc, char** argv) {
     alarm(0);
     accepted += v.accepted;
     runnable += v.runnable;
-    if (verbose)
-      std::printf("case %ld (seed file %s): %s\n%s\n", k, s.name.c_str(),
-                  v.accepted ? "accepted" : v.message.c_str(), text.c_str());
+    if (verbose) std::printf("case %ld: %s\n", k, v.accepted ? "accepted" : v.message.c_str());
     if (!failure.empty()) {
       ++failures;
       std::printf("io_scene_fuzz: FAILED case %ld (seed file %s): %s\n--- case text ---\n%s\n---\n", k, s.name.c_str(),

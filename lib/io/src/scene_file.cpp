@@ -600,6 +600,13 @@ GeneratedRegion read_generated(const Reader& r, const json& v, const std::string
       lo = std::min(lo, d);
       hi = std::max(hi, d);
     }
+    // The generator counts lines k = lo / spacing ... hi / spacing in a
+    // double: beyond 2^52, k + 1 == k and it would never finish (fuzzer
+    // finding: an origin at 9.2e18 m).
+    constexpr double kMaxLineIndex = 4503599627370496.0;  // 2^52
+    if (!(std::max(std::fabs(lo), std::fabs(hi)) / j.spacing < kMaxLineIndex))
+      r.fail(join_path(index_path(jp, k), "origin"),
+             "too far from the region for the spacing (the region lies more than 2^52 spacings from the origin)");
     const double lines = (hi - lo) / j.spacing + 1.0;
     pieces *= lines + 1.0;
     if (!(pieces <= static_cast<double>(kMaxBlocks)))

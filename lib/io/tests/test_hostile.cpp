@@ -153,6 +153,12 @@ TEST_CASE("array lengths are limited while reading", "[io][scene][hostile][limit
   j["generated"] = {{"region", {{10, 0}, {20, 0}, {20, 10}, {10, 10}}},
                     {"joint_sets", {{{"dip_deg", 30}, {"spacing", 1e-9}}}}};
   check_rejected(error_of(j), "generated.joint_sets[0].spacing", "more than 100000 (the reader's limit on blocks)");
+  // An origin so far away that the generator's line counter k + 1 == k
+  // (before: an endless loop; found by io_scene_fuzz, seed 777 case 154).
+  j = base();
+  j["generated"] = {{"region", {{10, 0}, {20, 0}, {20, 10}, {10, 10}}},
+                    {"joint_sets", {{{"dip_deg", 75}, {"spacing", 3}, {"origin", {9.223372036854776e18, 0}}}}}};
+  check_rejected(error_of(j), "generated.joint_sets[0].origin", "too far from the region");
 }
 
 TEST_CASE("file size is limited before reading", "[io][scene][hostile][limits]") {
