@@ -15,7 +15,7 @@ DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
 
 BIN := $(BUILD)/bin
 
-.PHONY: all deps configure build test repro fuzz bench clean figures report
+.PHONY: all deps configure build test sanitize repro fuzz bench clean figures report
 
 all: build
 
@@ -39,10 +39,32 @@ build: configure
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@$(MAKE) --no-print-directory sanitize
+
+# The unit, scene-file (io), CDEM and property tests once more, built with
+# AddressSanitizer + UndefinedBehaviorSanitizer (DDA_SANITIZE, no recovery:
+# any report fails the test) in a separate build tree; property tests with
+# SANITIZE_PROPERTY_CASES cases each. No repro drivers, no benchmarks.
+SANITIZE_BUILD          ?= $(BUILD)-asan
+SANITIZE_PROPERTY_CASES ?= 2000
+SANITIZE_TARGETS        := unit_tests io_tests io_scene_fuzz dda_cli cdem_tests property_tests
+SANITIZE_TESTS          := ^(unit_tests|io_tests|io_scene_fuzz|cdem_tests|property_.*)$$
+sanitize: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DDDA_SANITIZE=ON -DDDA_BUILD_BENCH=OFF \
+	  -DDDA_PROPERTY_CASES=$(SANITIZE_PROPERTY_CASES) > /dev/null
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target $(SANITIZE_TARGETS)
+	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) -R '$(SANITIZE_TESTS)'
 
 # Property tests with random seeds and FUZZ_CASES cases per property.
+# Then the scene-file mutation fuzzer: SCENE_FUZZ_CASES mutated scene files
+# read in-process, SCENE_FUZZ_CLI_RUNS of them also through `dda check` and
+# `dda run` (random seed; the seed is printed for replay).
+SCENE_FUZZ_CASES    ?= 200000
+SCENE_FUZZ_CLI_RUNS ?= 500
 fuzz: build
 	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
+	$(BIN)/io_scene_fuzz --cases $(SCENE_FUZZ_CASES) --cli-runs $(SCENE_FUZZ_CLI_RUNS) --seed random
 
 # Geometry kernel per polygon pair (Google Benchmark), then the Sect. 6.1
 # collapse's steps per second and the block-count scaling table (1-2 min).

@@ -1,6 +1,7 @@
 // dda: run or check a scene file (schema: lib/io/SCHEMA.md).
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -22,13 +23,15 @@ constexpr int kInterrupted = 130;
 
 const char* const kUsage =
     "Usage:\n"
-    "  dda run SCENE.json --out DIR [--quiet]\n"
+    "  dda run SCENE.json --out DIR [--quiet] [--max-steps N]\n"
     "      Simulate the scene to its duration and write DIR/timeseries.csv,\n"
     "      DIR/snapshots.csv and DIR/run.json (each via a .tmp file renamed\n"
     "      into place when complete). Progress goes to stderr about once a\n"
     "      second for runs longer than a second (--quiet: none).\n"
-    "  dda check SCENE.json [SCENE.json ...]\n"
-    "      Validate scene files only; print one line per file.\n"
+    "      A run of more than max_steps steps (duration / dt; the scene's\n"
+    "      \"max_steps\", default 10000000) is refused; --max-steps N allows N.\n"
+    "  dda check SCENE.json [SCENE.json ...] [--max-steps N]\n"
+    "      Validate scene files only (as dda run would); one line per file.\n"
     "  dda --help\n"
     "\n"
     "Exit codes:\n"
@@ -49,15 +52,48 @@ int usage_error(const std::string& message) {
   return kBadInput;
 }
 
-int cmd_check(const std::vector<std::string>& args) {
-  if (args.empty()) return usage_error("check: no scene file given");
-  int rc = kOk;
-  for (const std::string& a : args) {
-    if (a.rfind("--", 0) == 0) return usage_error("check: unknown option " + a);
+// "--max-steps N" / "--max-steps=N" at args[i]: N > 0, or 0 on a bad value.
+// Returns the number of arguments used (0: not this option).
+std::size_t max_steps_option(const std::vector<std::string>& args, std::size_t i, std::int64_t& n) {
+  const std::string& a = args[i];
+  std::string value;
+  std::size_t used = 0;
+  if (a == "--max-steps") {
+    if (i + 1 >= args.size()) return n = 0, 1;
+    value = args[i + 1], used = 2;
+  } else if (a.rfind("--max-steps=", 0) == 0) {
+    value = a.substr(12), used = 1;
+  } else {
+    return 0;
   }
-  for (const std::string& path : args) {
+  try {
+    std::size_t end = 0;
+    const long long v = std::stoll(value, &end);
+    n = end == value.size() && v > 0 ? v : 0;
+  } catch (const std::exception&) {
+    n = 0;
+  }
+  return used;
+}
+
+int cmd_check(const std::vector<std::string>& args) {
+  std::vector<std::string> files;
+  dda::io::ReadOptions read;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (const std::size_t used = max_steps_option(args, i, read.max_steps)) {
+      if (read.max_steps <= 0) return usage_error("check: --max-steps needs a positive integer");
+      i += used - 1;
+    } else if (args[i].rfind("--", 0) == 0) {
+      return usage_error("check: unknown option " + args[i]);
+    } else {
+      files.push_back(args[i]);
+    }
+  }
+  if (files.empty()) return usage_error("check: no scene file given");
+  int rc = kOk;
+  for (const std::string& path : files) {
     try {
-      const dda::io::SceneFile f = dda::io::load_scene_file(path);
+      const dda::io::SceneFile f = dda::io::load_scene_file(path, read);
       // With dt_fraction > 0 the step is only known once the simulation is
       // built (a fraction of its predicted critical step).
       double dt = f.scene.dt, dt_crit = 0.0;
@@ -66,6 +102,11 @@ int cmd_check(const std::vector<std::string>& args) {
           const dda::Simulation sim(f.scene);
           dt = sim.dt();
           dt_crit = sim.predicted_critical_step();
+          dda::io::check_step_count(f, dt, path);
+        } catch (const dda::io::SceneFileError& e) {
+          std::cerr << e.what() << "\n";
+          rc = kBadInput;
+          continue;
         } catch (const std::exception& e) {
           std::cerr << path << ": " << e.what() << "\n";
           rc = kBadInput;
@@ -94,9 +135,13 @@ int cmd_check(const std::vector<std::string>& args) {
 int cmd_run(const std::vector<std::string>& args) {
   std::string scene_path, out_dir;
   bool quiet = false;
+  dda::io::ReadOptions read;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--out") {
+    if (const std::size_t used = max_steps_option(args, i, read.max_steps)) {
+      if (read.max_steps <= 0) return usage_error("run: --max-steps needs a positive integer");
+      i += used - 1;
+    } else if (a == "--out") {
       if (i + 1 >= args.size()) return usage_error("run: --out needs a directory");
       out_dir = args[++i];
     } else if (a.rfind("--out=", 0) == 0) {
@@ -116,7 +161,7 @@ int cmd_run(const std::vector<std::string>& args) {
 
   dda::io::SceneFile file;
   try {
-    file = dda::io::load_scene_file(scene_path);
+    file = dda::io::load_scene_file(scene_path, read);
   } catch (const dda::io::SceneFileError& e) {
     std::cerr << e.what() << "\n";
     return kBadInput;
@@ -150,6 +195,9 @@ int cmd_run(const std::vector<std::string>& args) {
   } catch (const dda::io::OutputError& e) {
     std::cerr << "dda: output error: " << e.what() << "\n";
     return kOutputFailed;
+  } catch (const dda::io::SceneFileError& e) {  // the step limit with the simulation's dt
+    std::cerr << e.what() << "\n";
+    return kBadInput;
   } catch (const dda::SceneError& e) {  // not expected after load_scene_file
     std::cerr << scene_path << ": " << e.what() << "\n";
     return kBadInput;

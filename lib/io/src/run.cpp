@@ -107,11 +107,14 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   const Scene& scene = file.scene;
   const std::vector<int> tracked = tracked_blocks(file);
   const fs::path out(opt.out_dir.empty() ? "." : opt.out_dir);
+  // The simulation first: the step count is known once its dt is (with
+  // dt_fraction > 0); a run that would be too long writes nothing.
+  Simulation sim(scene);
+  check_step_count(file, sim.dt(), opt.scene_label);
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw OutputError("cannot create directory " + out.string() + ": " + ec.message());
 
-  Simulation sim(scene);
   nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
   for (int i = 0; i < sim.block_count(); ++i) {
     const bool boundary = i >= sim.scene_block_count();

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -65,13 +67,21 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 // ---------------------------------------------------------------------------
 // Reading with field paths
 
+// "file:line:col" of `path` in the file (re-reading it), or "file" if the
+// path is not in the file (defined below).
+std::string locate(const std::string& file, const std::string* text, const std::string& path);
+
 class Reader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  explicit Reader(std::string file, const std::string* text = nullptr) : file_(std::move(file)), text_(text) {}
 
+  // "<file>:<line>:<col>: <path>: <why>", the position that of `path` in the
+  // file (found by reading it again, only on this error path).
   [[noreturn]] void fail(const std::string& path, const std::string& why) const {
-    throw SceneFileError(file_ + ": " + (path.empty() ? std::string() : path + ": ") + why);
+    throw SceneFileError(where(path) + ": " + (path.empty() ? std::string() : path + ": ") + why);
   }
+
+  std::string where(const std::string& path) const { return locate(file_, text_, path); }
 
   // Checks v is an object whose keys are all in `allowed`.
   void object(const json& v, const std::string& path, std::initializer_list<const char*> allowed) const {
@@ -164,17 +174,96 @@ class Reader {
     fail(path, "unknown value \"" + s + "\"; expected one of " + list);
   }
 
+  std::int64_t int64(const json& v, const std::string& path) const {
+    if (v.is_number_unsigned()) {
+      if (v.get<unsigned long long>() > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
+        fail(path, "integer out of range");
+      return static_cast<std::int64_t>(v.get<unsigned long long>());
+    }
+    if (v.is_number_integer()) return v.get<std::int64_t>();
+    if (v.is_number_float()) {
+      const double x = v.get<double>();
+      // 2^63 is exact in a double; the range is [-2^63, 2^63).
+      constexpr double kTwo63 = 9223372036854775808.0;
+      if (x == std::floor(x) && x >= -kTwo63 && x < kTwo63) return static_cast<std::int64_t>(x);
+    }
+    fail(path, "expected an integer, got " + describe_value(v));
+  }
+
   const std::string& file() const { return file_; }
 
  private:
   std::string file_;
+  const std::string* text_;
 };
 
 // ---------------------------------------------------------------------------
 // Parsing: JSON syntax, duplicate keys, and where an overflowing number was.
 
+// Where the lexer is: an iterator over the text that records how far it was
+// read, so that an event of the parser callback knows its byte position.
+class CountingIterator {
+ public:
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+  CountingIterator(const char* p, const char** reached) : p_(p), reached_(reached) {}
+  reference operator*() const { return *p_; }
+  CountingIterator& operator++() {
+    *reached_ = ++p_;
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const CountingIterator& o) const { return p_ == o.p_; }
+  bool operator!=(const CountingIterator& o) const { return p_ != o.p_; }
+
+ private:
+  const char* p_;
+  const char** reached_;
+};
+
+// 1-based line and column of the 0-based byte offset `pos` in `text`.
+std::pair<std::size_t, std::size_t> line_column0(const std::string& text, std::size_t pos) {
+  pos = std::min(pos, text.size());
+  std::size_t line = 1, line_start = 0;
+  for (std::size_t i = 0; i < pos; ++i)
+    if (text[i] == '\n') ++line, line_start = i + 1;
+  return {line, pos - line_start + 1};
+}
+
+std::string file_line_column(const std::string& file, const std::string& text, std::size_t pos) {
+  const auto [line, col] = line_column0(text, pos);
+  return file + ":" + std::to_string(line) + ":" + std::to_string(col);
+}
+
+// The most elements an array at `key` may have (kMaxArrayLength unless the
+// schema gives the key a tighter limit).
+std::size_t array_limit(const std::string& key) {
+  if (key == "blocks") return kMaxBlocks;
+  if (key == "vertices" || key == "region") return kMaxPolygonVertices;
+  return kMaxArrayLength;
+}
+
+// Follows the parser's events: the field path of the element being read,
+// duplicate keys, and the limits on nesting depth and array/object sizes,
+// all checked as the text is read (before a too-big document is built).
+// With a target path it instead stops (throws Found) where that path starts.
 class PathTracker {
  public:
+  struct Found {
+    std::size_t offset;
+  };
+  // `reached`: how far the lexer has read (CountingIterator).
+  PathTracker(const std::string& text, const char* const* reached, const std::string& file,
+              const std::string* target = nullptr)
+      : text_(text), reached_(reached), file_(file), target_(target) {}
+
   // The path of the element being parsed now (the last key of the innermost
   // object, or the next index of the innermost array).
   std::string current() const {
@@ -183,24 +272,43 @@ class PathTracker {
     return f.array ? index_path(f.path, f.index) : join_path(f.path, f.key);
   }
 
-  void event(json::parse_event_t ev, const json& parsed, const Reader& reader) {
+  // Byte offset of the last character the lexer read (0-based).
+  std::size_t offset() const {
+    const std::size_t n = static_cast<std::size_t>(*reached_ - text_.data());
+    return n > 0 ? n - 1 : 0;
+  }
+
+  void event(json::parse_event_t ev, const json& parsed) {
     switch (ev) {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start: {
+        if (!stack_.empty()) element_started();
+        if (stack_.size() >= kMaxNestingDepth)
+          fail(current(), "nested deeper than " + std::to_string(kMaxNestingDepth) +
+                              " objects/arrays (the reader's limit; a scene needs at most 5)");
         Frame f;
         f.array = ev == json::parse_event_t::array_start;
         f.path = current();
+        f.limit = f.array ? array_limit(stack_.empty() ? std::string() : stack_.back().key) : kMaxArrayLength;
         stack_.push_back(std::move(f));
         break;
       }
       case json::parse_event_t::key: {
         Frame& f = stack_.back();
         f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second) reader.fail(current(), "duplicate key");
+        if (target_ && current() == *target_) throw Found{offset()};
+        if (!target_) {
+          if (!f.keys.insert(f.key).second) fail(current(), "duplicate key");
+          if (f.keys.size() > f.limit)
+            fail(f.path, "more than " + std::to_string(f.limit) + " keys (the reader's limit)");
+        }
         break;
       }
       case json::parse_event_t::value:
-        if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+        if (!stack_.empty() && stack_.back().array) {
+          element_started();
+          ++stack_.back().index;
+        }
         break;
       case json::parse_event_t::object_end:
       case json::parse_event_t::array_end:
@@ -215,45 +323,127 @@ class PathTracker {
     bool array = false;
     std::string path;
     std::size_t index = 0;
+    std::size_t limit = kMaxArrayLength;
     std::string key;
     std::set<std::string> keys;
   };
+
+  // A new element of the innermost array starts (or ended, for a scalar).
+  void element_started() {
+    const Frame& f = stack_.back();
+    if (!f.array) return;
+    if (target_ && current() == *target_) throw Found{offset()};
+    if (!target_ && f.index >= f.limit)
+      fail(f.path, "more than " + std::to_string(f.limit) + " elements (the reader's limit" +
+                       (f.limit == kMaxPolygonVertices ? " on vertices per polygon" :
+                        f.limit == kMaxBlocks && f.limit != kMaxArrayLength ? " on blocks" : "") + ")");
+  }
+
+  [[noreturn]] void fail(const std::string& path, const std::string& why) const {
+    throw SceneFileError(file_line_column(file_, text_, offset()) + ": " + (path.empty() ? "" : path + ": ") + why);
+  }
+
+  const std::string& text_;
+  const char* const* reached_;
+  const std::string& file_;
+  const std::string* target_;
   std::vector<Frame> stack_;
 };
 
-// 1-based line and column of the 1-based byte position `byte` in `text`.
-std::pair<std::size_t, std::size_t> line_column(const std::string& text, std::size_t byte) {
-  const std::size_t pos = std::min(byte > 0 ? byte - 1 : 0, text.size());  // 0-based
-  std::size_t line = 1, line_start = 0;
-  for (std::size_t i = 0; i < pos; ++i)
-    if (text[i] == '\n') ++line, line_start = i + 1;
-  return {line, pos - line_start + 1};
-}
+// The parser's events as SAX calls: each goes to the tracker (path, limits)
+// first, then, when reading, to nlohmann's DOM builder. (Not json::parse
+// with a callback: its DOM builder searches the enclosing array for a
+// discarded value after every object, quadratic in the array's length.)
+class TrackingSax {
+ public:
+  using Dom = nlohmann::detail::json_sax_dom_parser<json>;
+  TrackingSax(PathTracker& tracker, Dom* dom) : t_(tracker), dom_(dom) {}
+  bool null() { return value() && (!dom_ || dom_->null()); }
+  bool boolean(bool v) { return value() && (!dom_ || dom_->boolean(v)); }
+  bool number_integer(json::number_integer_t v) { return value() && (!dom_ || dom_->number_integer(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return value() && (!dom_ || dom_->number_unsigned(v)); }
+  bool number_float(json::number_float_t v, const std::string& s) {
+    return value() && (!dom_ || dom_->number_float(v, s));
+  }
+  bool string(std::string& v) { return value() && (!dom_ || dom_->string(v)); }
+  bool binary(json::binary_t& v) { return value() && (!dom_ || dom_->binary(v)); }
+  bool start_object(std::size_t n) {
+    return on(json::parse_event_t::object_start) && (!dom_ || dom_->start_object(n));
+  }
+  bool end_object() { return on(json::parse_event_t::object_end) && (!dom_ || dom_->end_object()); }
+  bool start_array(std::size_t n) { return on(json::parse_event_t::array_start) && (!dom_ || dom_->start_array(n)); }
+  bool end_array() { return on(json::parse_event_t::array_end) && (!dom_ || dom_->end_array()); }
+  bool key(std::string& k) {
+    t_.event(json::parse_event_t::key, json(k));
+    return !dom_ || dom_->key(k);
+  }
+  // With a DOM builder: throws the parse error (json::parse_error, or
+  // json::out_of_range for a number beyond the double range).
+  // (A template: the builder throws the exception's own type.)
+  template <typename Exception>
+  bool parse_error(std::size_t pos, const std::string& token, const Exception& ex) {
+    return dom_ ? dom_->parse_error(pos, token, ex) : false;
+  }
+
+ private:
+  bool value() { return on(json::parse_event_t::value); }
+  bool on(json::parse_event_t ev) {
+    t_.event(ev, none_);
+    return true;
+  }
+  PathTracker& t_;
+  Dom* dom_;
+  const json none_;
+};
 
 json parse_json(const std::string& text, const Reader& reader) {
-  PathTracker tracker;
+  // The lexer takes a NUL byte for the end of the input, and would accept
+  // whatever follows it: a JSON text has no raw NUL (not even in a string).
+  if (const void* nul = std::memchr(text.data(), '\0', text.size()))
+    throw SceneFileError(
+        file_line_column(reader.file(), text, static_cast<std::size_t>(static_cast<const char*>(nul) - text.data())) +
+        ": a NUL byte (a JSON text has none: a binary or padded file?)");
+  const char* reached = text.data();
+  PathTracker tracker(text, &reached, reader.file());
+  const CountingIterator first(text.data(), &reached), last(text.data() + text.size(), &reached);
   try {
-    return json::parse(text, [&](int, json::parse_event_t ev, json& parsed) {
-      tracker.event(ev, parsed, reader);
-      return true;
-    });
+    json root;
+    TrackingSax::Dom dom(root, /*allow_exceptions=*/true);
+    TrackingSax sax(tracker, &dom);
+    json::sax_parse(first, last, &sax);
+    return root;
   } catch (const json::parse_error& e) {
     // e.what(): "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error while ..."
     std::string detail = e.what();
     const std::size_t colon = detail.find(": ");
     if (colon != std::string::npos) detail = detail.substr(colon + 2);
     if (detail.rfind("syntax error", 0) == 0) detail = "JSON " + detail;
-    const auto [line, col] = line_column(text, e.byte);
     const std::string where = tracker.current();
-    throw SceneFileError(reader.file() + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " +
+    throw SceneFileError(file_line_column(reader.file(), text, e.byte > 0 ? e.byte - 1 : 0) + ": " +
                          (where.empty() ? "" : "near " + where + ": ") + detail);
   } catch (const json::out_of_range& e) {
     // A number beyond the double range ("1e400"): JSON has no infinity/NaN.
     std::string detail = e.what();
     const std::size_t b = detail.find("] ");
     if (b != std::string::npos) detail = detail.substr(b + 2);
-    reader.fail(tracker.current(), detail + " (not representable as a finite double)");
+    throw SceneFileError(file_line_column(reader.file(), text, tracker.offset()) + ": " + tracker.current() + ": " +
+                         detail + " (not representable as a finite double)");
   }
+}
+
+std::string locate(const std::string& file, const std::string* text, const std::string& path) {
+  if (!text || path.empty()) return file;
+  const char* reached = text->data();
+  PathTracker tracker(*text, &reached, file, &path);
+  TrackingSax sax(tracker, nullptr);
+  const CountingIterator first(text->data(), &reached), last(text->data() + text->size(), &reached);
+  try {
+    json::sax_parse(first, last, &sax);
+  } catch (const PathTracker::Found& found) {
+    return file_line_column(file, *text, found.offset);
+  } catch (const std::exception&) {
+  }
+  return file;
 }
 
 // ---------------------------------------------------------------------------
@@ -262,6 +452,26 @@ json parse_json(const std::string& text, const Reader& reader) {
 struct Names {
   std::vector<std::string> materials;  // optional material names
 };
+
+// Finite coordinates whose products are not: |x|, |y| beyond ~1e154 make a
+// polygon's area or an edge's squared length overflow a double, which the
+// kernel would misreport (as a duplicate vertex, say). Refused with the
+// reason. Also catches a vertex that became infinite (x0 + w, a rotation).
+void check_magnitude(const Reader& r, const std::vector<Vec2>& pts, const std::string& path) {
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (!is_finite(pts[i]))
+      r.fail(path, "vertex " + std::to_string(i) + ": coordinate overflows (beyond the double range)");
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Vec2 p = pts[i], q = pts[(i + 1) % pts.size()];
+    const Vec2 d = q - p;
+    if (!std::isfinite(d.x * d.x + d.y * d.y))
+      r.fail(path, "coordinates too large: an edge's squared length overflows a double (keep |x|, |y| below 1e150 m)");
+    twice_area += p.x * q.y - q.x * p.y;
+  }
+  if (!std::isfinite(twice_area))
+    r.fail(path, "coordinates too large: the polygon's area overflows a double (keep |x|, |y| below 1e150 m)");
+}
 
 std::vector<Vec2> rect_vertices(const Reader& r, const json& v, const std::string& path) {
   if (!v.is_array() || v.size() != 4)
@@ -311,6 +521,7 @@ BlockSpec read_block(const Reader& r, const json& v, const std::string& path, co
   } else {
     b.vertices = rect_vertices(r, *rect, join_path(path, "rect"));
   }
+  check_magnitude(r, b.vertices, join_path(path, verts ? "vertices" : "rect"));
   const json* rot = Reader::find(v, "rotate_deg");
   const json* about = Reader::find(v, "about");
   if (about && !rot) r.fail(join_path(path, "about"), "only used with 'rotate_deg'");
@@ -325,6 +536,7 @@ BlockSpec read_block(const Reader& r, const json& v, const std::string& path, co
     }
     const double a = deg * kPi / 180.0;
     for (Vec2& p : b.vertices) p = pivot + rotate(p - pivot, a);
+    check_magnitude(r, b.vertices, join_path(path, "rotate_deg"));
   }
   if (const json* x = Reader::find(v, "name")) b.name = r.string(*x, join_path(path, "name"));
   if (const json* x = Reader::find(v, "velocity")) b.velocity = r.vec2(*x, join_path(path, "velocity"));
@@ -343,6 +555,8 @@ BoundarySegment read_boundary(const Reader& r, const json& v, const std::string&
   BoundarySegment s;
   s.a = r.vec2(r.need(v, path, "a"), join_path(path, "a"));
   s.b = r.vec2(r.need(v, path, "b"), join_path(path, "b"));
+  if (!std::isfinite((s.b.x - s.a.x) * (s.b.x - s.a.x) + (s.b.y - s.a.y) * (s.b.y - s.a.y)))
+    r.fail(path, "coordinates too large: the segment's squared length overflows a double (keep |x|, |y| below 1e150 m)");
   if (const json* x = Reader::find(v, "depth")) s.depth = r.number(*x, join_path(path, "depth"));
   if (const json* x = Reader::find(v, "group")) s.group = r.integer(*x, join_path(path, "group"));
   return s;
@@ -357,6 +571,7 @@ GeneratedRegion read_generated(const Reader& r, const json& v, const std::string
   const json& reg = r.array(r.need(v, path, "region"), rp, " of [x, y] points");
   std::vector<Vec2> region;
   for (std::size_t i = 0; i < reg.size(); ++i) region.push_back(r.vec2(reg[i], index_path(rp, i)));
+  check_magnitude(r, region, rp);
   const std::string jp = join_path(path, "joint_sets");
   const json& js = r.array(r.need(v, path, "joint_sets"), jp, " of {\"dip_deg\", \"spacing\", \"origin\"}");
   std::vector<JointSet> sets;
@@ -368,6 +583,36 @@ GeneratedRegion read_generated(const Reader& r, const json& v, const std::string
     j.spacing = r.number(r.need(js[i], ep, "spacing"), join_path(ep, "spacing"));
     if (const json* x = Reader::find(js[i], "origin")) j.origin = r.vec2(*x, join_path(ep, "origin"));
     sets.push_back(j);
+  }
+  // The generator cuts the region with every line of every set: refuse a
+  // spacing that would make more than kMaxBlocks pieces before it runs (a
+  // tiny spacing would otherwise take forever). Parallel families of n_k
+  // lines cut a convex part into at most prod (n_k + 1) pieces.
+  double pieces = std::max<double>(1.0, static_cast<double>(region.size()));  // convex parts <= vertices
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const JointSet& j = sets[k];
+    if (!(j.spacing > 0.0) || !(j.dip_deg > 0.0 && j.dip_deg < 180.0)) continue;  // the generator says why
+    const double a = j.dip_deg * kPi / 180.0;
+    const Vec2 nrm{std::sin(a), std::cos(a)};
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (const Vec2& p : region) {
+      const double d = dot(nrm, p - j.origin);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+    // The generator counts lines k = lo / spacing ... hi / spacing in a
+    // double: beyond 2^52, k + 1 == k and it would never finish (fuzzer
+    // finding: an origin at 9.2e18 m).
+    constexpr double kMaxLineIndex = 4503599627370496.0;  // 2^52
+    if (!(std::max(std::fabs(lo), std::fabs(hi)) / j.spacing < kMaxLineIndex))
+      r.fail(join_path(index_path(jp, k), "origin"),
+             "too far from the region for the spacing (the region lies more than 2^52 spacings from the origin)");
+    const double lines = (hi - lo) / j.spacing + 1.0;
+    pieces *= lines + 1.0;
+    if (!(pieces <= static_cast<double>(kMaxBlocks)))
+      r.fail(join_path(index_path(jp, k), "spacing"),
+             "the joint sets would cut the region into up to " + format_number(pieces) + " blocks, more than " +
+                 std::to_string(kMaxBlocks) + " (the reader's limit on blocks)");
   }
   double min_area = 0.0;
   if (const json* x = Reader::find(v, "min_area")) {
@@ -458,10 +703,13 @@ ContactParams read_contact(const Reader& r, const json& v, const std::string& pa
 // ranges, with the same field names: guards.max_step_motion, ...).
 StabilityGuards read_guards(const Reader& r, const json& v, const std::string& path) {
   r.object(v, path,
-           {"max_step_motion", "max_energy_growth", "energy_check_every", "max_penetration", "max_approach_energy"});
+           {"max_step_motion", "max_balance_error", "max_energy_growth", "energy_check_every", "max_penetration",
+            "max_approach_energy"});
   StabilityGuards g;
   if (const json* x = Reader::find(v, "max_step_motion"))
     g.max_step_motion = r.number(*x, join_path(path, "max_step_motion"));
+  if (const json* x = Reader::find(v, "max_balance_error"))
+    g.max_balance_error = r.number(*x, join_path(path, "max_balance_error"));
   if (const json* x = Reader::find(v, "max_energy_growth"))
     g.max_energy_growth = r.number(*x, join_path(path, "max_energy_growth"));
   if (const json* x = Reader::find(v, "energy_check_every"))
@@ -571,16 +819,54 @@ Damping read_damping(const Reader& r, const json& v, const std::string& path) {
   return d;
 }
 
+// Names identify blocks (output.tracked_blocks) and materials: two with one
+// name would make a reference ambiguous. Empty names (unnamed) may repeat.
+void check_block_names(const Reader& r, const std::vector<BlockSpec>& blocks,
+                       const std::vector<GeneratedRegion>& generated, const std::vector<std::string>& generated_paths) {
+  // The file path of block i's name: "blocks[i].name" or "generated[g].name".
+  auto name_path = [&](std::size_t i) {
+    for (std::size_t g = 0; g < generated.size(); ++g)
+      if (static_cast<int>(i) >= generated[g].first_block &&
+          static_cast<int>(i) < generated[g].first_block + generated[g].count)
+        return join_path(generated_paths[g], "name");
+    return join_path(index_path("blocks", i), "name");
+  };
+  std::map<std::string, std::size_t> seen;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const std::string& name = blocks[i].name;
+    if (name.empty()) continue;
+    const auto [it, fresh] = seen.emplace(name, i);
+    if (fresh) continue;
+    r.fail(name_path(i), "duplicate block name \"" + name + "\" (blocks[" + std::to_string(it->second) + "] and blocks[" +
+                             std::to_string(i) + "] have it; names must be unique)");
+  }
+}
+
 }  // namespace
 
-SceneFile parse_scene(const std::string& json_text, const std::string& file_label) {
-  const Reader r(file_label);
+void check_step_count(const SceneFile& file, double dt, const std::string& label) {
+  const Scene& s = file.scene;
+  if (!(dt > 0.0) || !(s.duration > 0.0)) return;  // check_scene's business
+  const double steps = s.duration / dt;
+  if (steps <= static_cast<double>(file.max_steps)) return;
+  throw SceneFileError(label + ": duration: " + format_number(s.duration) + " s at dt = " + format_number(dt) +
+                       " s is " + format_number(std::ceil(steps)) + " steps, more than max_steps = " +
+                       std::to_string(file.max_steps) +
+                       " (a typo in duration or dt?); to allow a run this long, set \"max_steps\" in the scene file "
+                       "or give dda run --max-steps N");
+}
+
+SceneFile parse_scene(const std::string& json_text, const std::string& file_label, const ReadOptions& options) {
+  const Reader r(file_label, &json_text);
+  if (json_text.size() > kMaxSceneFileBytes)
+    throw SceneFileError(file_label + ": " + std::to_string(json_text.size()) + " bytes, more than " +
+                         std::to_string(kMaxSceneFileBytes) + " (the reader's limit on scene files)");
   const json root = parse_json(json_text, r);
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
            {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
-            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "guards", "rotation_update", "damping",
-            "output"});
+            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "max_steps", "guards", "rotation_update",
+            "damping", "output"});
 
   SceneFile f;
   Scene& s = f.scene;
@@ -593,6 +879,11 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   for (std::size_t i = 0; i < mats.size(); ++i) {
     names.materials.emplace_back();
     s.materials.push_back(read_material(r, mats[i], index_path("materials", i), names.materials.back()));
+    const std::string& name = names.materials.back();
+    for (std::size_t k = 0; !name.empty() && k < i; ++k)
+      if (names.materials[k] == name)
+        r.fail(join_path(index_path("materials", i), "name"),
+               "duplicate material name \"" + name + "\" (also materials[" + std::to_string(k) + "].name)");
   }
   const json& blocks = r.array(r.need(root, "", "blocks"), "blocks", " of blocks");
   for (std::size_t i = 0; i < blocks.size(); ++i)
@@ -610,6 +901,11 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
       f.generated.push_back(
           read_generated(r, x->is_object() ? *x : (*x)[i], generated_paths[i], names, s.blocks));
   }
+  if (s.blocks.size() > kMaxBlocks)
+    r.fail(f.generated.empty() ? "blocks" : "generated",
+           std::to_string(s.blocks.size()) + " blocks, more than " + std::to_string(kMaxBlocks) +
+               " (the reader's limit on blocks)");
+  check_block_names(r, s.blocks, f.generated, generated_paths);
   if (const json* x = Reader::find(root, "boundaries")) {
     r.array(*x, "boundaries", " of segments");
     for (std::size_t i = 0; i < x->size(); ++i)
@@ -637,6 +933,12 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
     s.dt = r.number(r.need(root, "", "dt"), "dt");
   }
   s.duration = r.number(r.need(root, "", "duration"), "duration");
+  f.max_steps = kDefaultMaxSteps;
+  if (const json* x = Reader::find(root, "max_steps")) {
+    f.max_steps = r.int64(*x, "max_steps");
+    if (f.max_steps < 1) r.fail("max_steps", "must be >= 1 (the most steps a run may take)");
+  }
+  if (options.max_steps > 0) f.max_steps = options.max_steps;
   if (const json* x = Reader::find(root, "guards")) s.guards = read_guards(r, *x, "guards");
   if (const json* x = Reader::find(root, "rotation_update"))
     s.rotation_update = r.choice<RotationUpdate>(
@@ -647,8 +949,13 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   try {
     check_scene(s);
   } catch (const SceneError& e) {
-    throw SceneFileError(file_label + ": " + e.what() + generated_note(e.what(), f.generated, generated_paths));
+    // The kernel's message starts with the field ("blocks[1].vertices: ...").
+    const std::string m = e.what();
+    const std::size_t colon = m.find(": ");
+    throw SceneFileError(r.where(colon == std::string::npos ? "" : m.substr(0, colon)) + ": " + m +
+                         generated_note(m, f.generated, generated_paths));
   }
+  if (s.dt_fraction == 0.0) check_step_count(f, s.dt, file_label);
   // Consistency that only matters for a file: a friction angle or update rule
   // that would be silently ignored.
   if (!s.contact.friction()) {
@@ -663,16 +970,29 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   return f;
 }
 
-SceneFile load_scene_file(const std::string& path) {
+SceneFile load_scene_file(const std::string& path, const ReadOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a scene file");
+  const std::string too_big =
+      path + ": more than " + std::to_string(kMaxSceneFileBytes) + " bytes (the reader's limit on scene files)";
+  // The size first (a regular file), then at most one byte more than the
+  // limit is read (a pipe or device has no size).
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > kMaxSceneFileBytes) throw SceneFileError(too_big);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneFileError(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
+  constexpr std::size_t kChunk = std::size_t{64} << 10;  // bytes per read
+  std::string text;
+  if (!ec) text.reserve(static_cast<std::size_t>(size));
+  std::vector<char> chunk(kChunk);
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneFileBytes) throw SceneFileError(too_big);
+  }
   if (in.bad()) throw SceneFileError(path + ": read error");
-  return parse_scene(text.str(), path);
+  return parse_scene(text, path, options);
 }
 
 namespace {
@@ -763,7 +1083,9 @@ std::string write_scene(const SceneFile& file) {
     root["dt_fraction"] = s.dt_fraction;
   }
   root["duration"] = s.duration;
+  if (file.max_steps != kDefaultMaxSteps) root["max_steps"] = file.max_steps;
   root["guards"] = {{"max_step_motion", s.guards.max_step_motion},
+                    {"max_balance_error", s.guards.max_balance_error},
                     {"max_energy_growth", s.guards.max_energy_growth},
                     {"energy_check_every", s.guards.energy_check_every},
                     {"max_penetration", s.guards.max_penetration},

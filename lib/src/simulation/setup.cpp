@@ -28,6 +28,14 @@ std::string field(const char* name, std::size_t i) {
 
 bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
 
+// Friction groups index a group_count x group_count table of friction
+// tangents (build_blocks): 1024 groups make it 8 MiB. A bigger group number
+// would make it huge, and beyond 46,340 overflow group_count^2 (an int);
+// found by the scene-file fuzzer (a group of 1e6 filled gigabytes).
+constexpr int kMaxFrictionGroups = 1024;
+bool valid_group(int g) { return g >= 0 && g < kMaxFrictionGroups; }
+const std::string kGroupRange = "must lie in [0, " + std::to_string(kMaxFrictionGroups) + ")";
+
 // The virtual polygon behind a boundary segment: a rectangle on the
 // segment's right side (the solid side).
 std::vector<Vec2> segment_polygon(const BoundarySegment& s) {
@@ -92,8 +100,8 @@ void check_scene(const Scene& scene) {
   check_angle(c.friction_deg, "contact.friction_deg");
   for (std::size_t i = 0; i < c.friction_rules.size(); ++i) {
     check_angle(c.friction_rules[i].friction_deg, field("contact.friction_rules", i) + ".friction_deg");
-    if (c.friction_rules[i].group_a < 0 || c.friction_rules[i].group_b < 0)
-      fail(field("contact.friction_rules", i), "groups must be >= 0");
+    if (!valid_group(c.friction_rules[i].group_a) || !valid_group(c.friction_rules[i].group_b))
+      fail(field("contact.friction_rules", i), "groups " + kGroupRange);
   }
   if (c.h_rule == HRule::kGiven && !positive_finite(c.h)) fail("contact.h", "must be positive when H is given");
   if (!(std::isfinite(c.small_edge_fraction) && c.small_edge_fraction >= 0.0))
@@ -110,7 +118,7 @@ void check_scene(const Scene& scene) {
     }
     if (b.material < 0 || static_cast<std::size_t>(b.material) >= scene.materials.size())
       fail(f + ".material", "no such material");
-    if (b.group < 0) fail(f + ".group", "must be >= 0");
+    if (!valid_group(b.group)) fail(f + ".group", kGroupRange);
     if (!is_finite(b.velocity) || !std::isfinite(b.spin)) fail(f + ".velocity", "must be finite");
     polys[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
   }
@@ -119,6 +127,7 @@ void check_scene(const Scene& scene) {
     if (!is_finite(s.a) || !is_finite(s.b) || !(length(s.b - s.a) > 0.0))
       fail(field("boundaries", i), "segment end points must be finite and distinct");
     if (!(std::isfinite(s.depth) && s.depth >= 0.0)) fail(field("boundaries", i) + ".depth", "must be >= 0");
+    if (!valid_group(s.group)) fail(field("boundaries", i) + ".group", kGroupRange);
   }
   // Blocks overlapping at t = 0, each other or a boundary's virtual polygon
   // (sort and sweep on x).

@@ -44,8 +44,10 @@ std::vector<std::string> timeseries_header(const std::vector<int>& tracked);
 // The time-series row of the current state, matching timeseries_header.
 std::vector<CsvValue> timeseries_row(const Simulation& sim, const std::vector<int>& tracked);
 
-// Throws OutputError if the output cannot be written; dda::SceneError cannot
-// happen for a SceneFile from parse_scene.
+// Throws OutputError if the output cannot be written; SceneFileError (before
+// anything is written) if the run would take more than file.max_steps steps
+// (check_step_count with the simulation's dt); dda::SceneError cannot happen
+// for a SceneFile from parse_scene.
 RunResult run_scene(const SceneFile& file, const RunOptions& options);
 
 }  // namespace dda::io

@@ -5,6 +5,8 @@
 //   "scene.json: materials[0].densty: unknown key (did you mean 'density'?)"
 //   "scene.json:7:12: JSON syntax error while parsing object - ..."
 #pragma once
+#include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,6 +14,20 @@
 #include "dda/scene.hpp"
 
 namespace dda::io {
+
+// Limits of the reader, checked while the JSON text is read (before a
+// document bigger than these is built in memory), so that the reader's memory
+// stays within a small multiple of the file size (SCHEMA.md, "Limits").
+// Each is far above what a scene needs and far below what exhausts memory.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{16} << 20;  // bytes; 16 MiB ~ 100,000 four-vertex blocks
+inline constexpr std::size_t kMaxNestingDepth = 16;      // objects/arrays inside each other; the schema needs 5
+inline constexpr std::size_t kMaxArrayLength = 100000;   // elements of any array, members of any object
+inline constexpr std::size_t kMaxBlocks = 100000;        // scene blocks, listed plus generated
+inline constexpr std::size_t kMaxPolygonVertices = 256;  // `vertices` of a block, `region` of a generated region
+// Steps of a run (duration / dt) allowed unless the file's `max_steps` or
+// `dda run --max-steps` says more: a typo in duration or dt (1e11 s instead
+// of 1e1 s) is refused instead of starting a run of years.
+inline constexpr std::int64_t kDefaultMaxSteps = 10000000;
 
 // What `dda run` writes besides the scene's own state.
 struct OutputSpec {
@@ -34,21 +50,39 @@ struct SceneFile {
   dda::Scene scene;
   OutputSpec output;
   std::vector<GeneratedRegion> generated;  // empty if the file has no "generated" section
+  // Largest step count a run may take: ReadOptions::max_steps if > 0, else the
+  // file's `max_steps`, else kDefaultMaxSteps.
+  std::int64_t max_steps = kDefaultMaxSteps;
+};
+
+struct ReadOptions {
+  // > 0: overrides the file's `max_steps` (`dda run --max-steps N`).
+  std::int64_t max_steps = 0;
 };
 
 // Any problem with a scene file: unreadable, not JSON, not the schema, or a
-// scene dda::check_scene rejects. what() is "<file>: <field>: <reason>" (or
-// "<file>:<line>:<col>: ..." for syntax errors).
+// scene dda::check_scene rejects. what() is
+// "<file>:<line>:<col>: <field>: <reason>", where line and column (1-based,
+// in bytes) point at the field in the file; without them ("<file>: <field>:
+// <reason>") where the field is not in the file (a missing key, a generated
+// block); "<file>:<line>:<col>: near <field>: ..." for JSON syntax errors.
 struct SceneFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
 // Reads and validates a scene file; `path` labels the messages.
-SceneFile load_scene_file(const std::string& path);
+// Files bigger than kMaxSceneFileBytes are refused before they are read.
+SceneFile load_scene_file(const std::string& path, const ReadOptions& options = {});
 
 // Parses and validates JSON text; `file_label` prefixes every message.
 // Also runs dda::check_scene (its message gets the file label in front).
-SceneFile parse_scene(const std::string& json_text, const std::string& file_label);
+// With dt given, also refuses duration / dt > the step limit (max_steps).
+SceneFile parse_scene(const std::string& json_text, const std::string& file_label, const ReadOptions& options = {});
+
+// Refuses a run of more than file.max_steps steps of `dt` (the step the
+// simulation uses: with dt_fraction > 0 only known once it is built); the
+// message says how to allow it. `label` prefixes the message (the file).
+void check_step_count(const SceneFile& file, double dt, const std::string& label);
 
 // The JSON text of a scene file (vertices written out explicitly, numbers in
 // shortest round-trip form): parse_scene(write_scene(f), ...) gives back f's
