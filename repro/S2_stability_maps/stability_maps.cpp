@@ -9,7 +9,7 @@
 //    1e-9 rad/s so that every mode is excited (unstable: the
 //    mechanical energy grows 10-fold over 20000 steps, a resting contact
 //    opens, or a guard stops the run). Expected: empirical = linearised;
-//    the solver's values at or below it (a bound). The "old" column is the estimate before this issue
+//    the solver's values at or below it (a bound). The "old" column is a simpler per-block estimate
 //    (kn L 2 / H_i on k/m + k r^2/I, max with the strain modes).
 // 2. Stability maps: kn 1e6 .. 1e12 Pa (half decades) x dt 1e-6 .. 1e-2 s
 //    (quarter decades), Table 4/5 material (rho 2000, E 1 GPa, nu 0.25),
@@ -55,7 +55,7 @@ std::vector<Vec2> rect(double x0, double y0, double w, double h) {
   return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
 }
 
-// The solver's estimate before this issue, recomputed here for comparison:
+// A simpler per-block estimate, computed here for comparison:
 // per free block k = kn L_max 2 / H_i, omega^2 = max(k/m + k r^2 / I,
 // strain modes).
 double old_prior(const dda::Simulation& sim) {
@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
                           "predicted_over_linearized", "old_over_linearized"},
                          {"dt_crit (s) of a resting contact: linearised 2/omega_max (independent), empirical "
                           "(bisection, 14 halvings of the log interval, 20000 steps), solver's current and "
-                          "a-priori estimates, and the estimate before this issue"});
+                          "a-priori estimates, and the per-block estimate 2 kn L_max / H"});
     std::vector<RestCase> cases;
     for (double kn : {1e6, 1e7, 1e8, 1e9}) cases.push_back(resting(kn, false, false, false));
     for (double kn : {1e6, 1e7, 1e8, 1e9}) cases.push_back(resting(kn, true, false, false));
@@ -359,7 +359,7 @@ int main(int argc, char** argv) {
                       "a critical step must be safe",
                       "current / linearised in [" + format_short(best_cur, 3) + ", " + format_short(worst_cur, 3) +
                           "]; predicted / linearised <= " + format_short(worst_pred, 3) +
-                          "; the estimate before this issue reached " + format_short(worst_old, 3),
+                          "; the per-block estimate 2 kn L_max / H reached " + format_short(worst_old, 3),
                       "current and predicted <= 1.0", worst_cur <= 1.0 && worst_pred <= 1.0});
     progress("dt_crit check done");
   }
@@ -423,7 +423,7 @@ int main(int argc, char** argv) {
     claims.push_back({"S2 / map", m.title + ": no blow-up at dt <= the predicted dt_crit",
                       "the user: check stability on stiff cases against the predicted critical step",
                       summary + "; first blow-up at " + format_short(min_blowup_ratio, 3) + " to " +
-                          format_short(max_blowup_ratio, 3) + " x predicted over kn; estimate before this issue: " +
+                          format_short(max_blowup_ratio, 3) + " x predicted over kn; per-block estimate 2 kn L_max / H: " +
                           std::to_string(old_blowups_below) + " blow-ups at or below it",
                       "0 blow-ups at dt <= predicted", below[3] == 0});
     claims.push_back({"S2 / map", m.title + ": energy created by under-resolved impacts below the prediction",
