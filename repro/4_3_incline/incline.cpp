@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
                       "not discussed in the paper",
                       "stick phase t* = " + format_short(ts * 1e3, 3) + " ms, predicted rel. lead " +
                           format_short(predicted, 3),
-                      "information (no tolerance)", true});
+                      "information (no tolerance)", false, repro::Kind::kMeasurement});
   }
   {
     const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, true, 1.0), nullptr, 20.0, update);

@@ -135,12 +135,12 @@ int main(int argc, char** argv) try {
                     "Fig. 14: 'very similar block bouncing response'",
                     "max |dy_case1 - dy_case2| = " + format_short(diff_unified, 3) + " m (H = " +
                         format_short(runs[0].h_a) + " vs " + format_short(runs[1].h_a) + " m)",
-                    "information; compared with the inscribed-radius H in the next rows", true});
+                    "information; compared with the inscribed-radius H in the next rows", false, repro::Kind::kMeasurement});
   claims.push_back({"5.1", "inscribed-radius ('previous') H: A's bounce depends on B's height" + geo,
                     "Fig. 14: 'significantly different block bouncing response'",
                     "max |dy_case1 - dy_case2| = " + format_short(diff_inscribed, 3) + " m (H_B = " +
                         format_short(runs[2].h_b) + " vs " + format_short(runs[3].h_b) + " m)",
-                    "information; compared in the next row", true});
+                    "information; compared in the next row", false, repro::Kind::kMeasurement});
   // Criterion (set before the runs): "nearly equal" vs "significantly
   // different" read as the unified-H difference being at most half of the
   // inscribed-radius one.

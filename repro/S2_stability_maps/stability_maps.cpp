@@ -432,7 +432,7 @@ int main(int argc, char** argv) {
                           (flip_note.empty() ? std::string("")
                                              : "; flip-through at dt <= predicted (penetration deeper than half "
                                                "the thin block, not a time-step effect) for kn = " + flip_note + " Pa"),
-                      "information: an accuracy limit (few steps per contact), not a stability limit", true});
+                      "information: an accuracy limit (few steps per contact), not a stability limit", false, repro::Kind::kMeasurement});
     progress(m.title + ": " + summary);
   }
   repro::write_claims(repro::claims_path(out, "S2_stability_maps"), claims);
