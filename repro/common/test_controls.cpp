@@ -11,6 +11,7 @@
 
 #include "dda/paper_scenes.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
+#include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/4_3_incline/incline.hpp"
 #include "repro/5_1_bouncing_block/bouncing_block.hpp"
 #include "repro/common/claims.hpp"
@@ -63,6 +64,18 @@ TEST_CASE("4.1 energy: FAIL with mass damping", "[controls][4.1]") {
   const auto rows = two_squares::claims(two_squares::run(s, nullptr));
   CHECK_FALSE(row(rows, two_squares::kKeyEnergy).pass);
   names_control(row(rows, two_squares::kKeyEnergy), "4.1 energy: FAIL with mass damping");
+}
+
+// --- Sect. 4.2, symmetric stack --------------------------------------------------
+TEST_CASE("4.2 symmetry: FAIL when the impactor drifts sideways", "[controls][4.2]") {
+  dda::paper::SymmetricStack st = dda::paper::symmetric_stack();
+  // Symmetric at t = 0, but the impactor drifts sideways at 2.5 % of its
+  // 2 m/s fall: the asymmetry must come from the motion, not the start.
+  constexpr double kSideSpeed = 0.05;  // m/s
+  st.scene.blocks.back().velocity.x = kSideSpeed;
+  const repro::Claim c = symmetric_stack::row(symmetric_stack::run(st, nullptr, nullptr));
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == "repro_controls: 4.2 symmetry: FAIL when the impactor drifts sideways");
 }
 
 // --- Sect. 4.3, incline ----------------------------------------------------------
