@@ -55,7 +55,8 @@ DRIVERS := collapse toppling_slumping work_precision stability_maps extreme_case
 VERDICT_OUT ?= $(BUILD)/verdicts_out
 EXPECTED    := repro/expected_verdicts.csv
 
-verdict-run: build
+verdict-run: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target $(DRIVERS)
 	@rm -rf $(VERDICT_OUT) && mkdir -p $(VERDICT_OUT)/logs
 	@echo "== verdicts: running $(words $(DRIVERS)) drivers ($(JOBS) at a time) into $(VERDICT_OUT)"
 	@start=$$(date +%s); \

@@ -36,10 +36,10 @@ struct Claim {
   std::string tolerance;  // the acceptance criterion, in words/numbers
   bool pass = false;      // computed by the driver from `measured` (checks only)
   Kind kind = Kind::kCheck;
-  std::string key;         // short stable key of the row within its section; empty: derived from `claim`
+  std::string key{};       // short stable key of the row within its section; empty: derived from `claim`
   Cause cause = Cause::kNone;  // for a failing check: why (see Cause)
-  std::string cause_text;      // for a failing check: the argument or the issue note
-  std::string control;         // name of the ctest that is this check's negative control, if any
+  std::string cause_text{};    // for a failing check: the argument or the issue note
+  std::string control{};       // name of the ctest that is this check's negative control, if any
 };
 
 // A measurement row: a number with no verdict; `note` says what it shows.
