@@ -14,6 +14,8 @@
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/4_3_incline/incline.hpp"
 #include "repro/5_1_bouncing_block/bouncing_block.hpp"
+#include "repro/5_2_small_angles/small_angles.hpp"
+#include "repro/5_3_small_edges/small_edges.hpp"
 #include "repro/common/claims.hpp"
 
 namespace {
@@ -109,4 +111,50 @@ TEST_CASE("5.1 H comparison: FAIL with the H rules swapped", "[controls][5.1]") 
   const repro::Claim swapped = bouncing_block::comparison_row(diff_inscribed, diff_unified);
   CHECK_FALSE(swapped.pass);
   CHECK(swapped.control == "repro_controls: 5.1 H comparison: FAIL with the H rules swapped");
+}
+
+// --- Sect. 5.2, small angles ------------------------------------------------------
+TEST_CASE("5.2 point symmetry: FAIL when one triangle is 1 % faster", "[controls][5.2]") {
+  dda::paper::SmallAngleTriangles st = dda::paper::small_angle_triangles(5.0);
+  st.scene.blocks[0].velocity = st.scene.blocks[0].velocity * 1.01;  // no longer point images in velocity
+  const repro::Claim c = small_angles::symmetry_row(small_angles::run(st, nullptr, nullptr), "");
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == "repro_controls: 5.2 point symmetry: FAIL when one triangle is 1 % faster");
+}
+
+// --- Sect. 5.3, small edges -------------------------------------------------------
+namespace {
+// The rows of case 1 (on the small edge) for a modified scene.
+std::vector<repro::Claim> small_edge_rows(const dda::paper::SmallEdgeImpact& si) {
+  std::vector<repro::Claim> rows;
+  small_edges::add_claims(rows, "5.3", "control", small_edges::run(si, 1, nullptr, nullptr), true);
+  REQUIRE(rows.size() == 3);  // sane, energy, penetration
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("5.3 sane: FAIL when kn is 1000 times too soft and the guards are off", "[controls][5.3]") {
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  si.scene.contact.kn *= 1e-3;              // too soft to stop the square: it passes into the hexagon
+  si.scene.guards.max_penetration = 0.0;    // the solver's guards would stop such a run first
+  si.scene.guards.max_approach_energy = 0.0;
+  const auto rows = small_edge_rows(si);
+  CHECK_FALSE(rows[0].pass);
+  CHECK(rows[0].control == std::string("repro_controls: ") + small_edges::kControlFlip);
+}
+
+TEST_CASE("5.3 penetration: FAIL when kn is 100 times too soft", "[controls][5.3]") {
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  si.scene.contact.kn *= 1e-2;  // the depth grows as 1/sqrt(kn): about 10 times the paper's
+  const auto rows = small_edge_rows(si);
+  CHECK_FALSE(rows[2].pass);
+  CHECK(rows[2].control == std::string("repro_controls: ") + small_edges::kControlSoft);
+}
+
+TEST_CASE("5.3 energy: FAIL with mass damping", "[controls][5.3]") {
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  si.scene.damping.mass = 1.0;  // 1/s: about a fifth of the energy lost over the 0.2 s run
+  const auto rows = small_edge_rows(si);
+  CHECK_FALSE(rows[1].pass);
+  CHECK(rows[1].control == std::string("repro_controls: ") + small_edges::kControlDamped);
 }
