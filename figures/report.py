@@ -114,14 +114,16 @@ def row_class(r):
 
 
 def read_claims(path):
-    rows, problems = [], []
+    """(rows, problems, warnings): a problem is an unreadable file or row (counted as a failing check), a
+    warning a readable row with a defect (a FAIL without a cause), listed but not counted twice."""
+    rows, problems, warnings = [], [], []
     name = os.path.basename(path)
     try:
         with open(path, newline="", encoding="utf-8") as f:
             reader = csv.DictReader(f)
             missing = [c for c in COLUMNS if c not in (reader.fieldnames or [])]
             if missing:
-                return [], [f"`{name}`: missing column(s) {', '.join(missing)}"]
+                return [], [f"`{name}`: missing column(s) {', '.join(missing)}"], []
             for line, rec in enumerate(reader, start=2):
                 if None in rec or any(rec[c] is None for c in COLUMNS):
                     problems.append(f"`{name}` line {line}: wrong number of fields")
@@ -132,11 +134,11 @@ def read_claims(path):
                     problems.append(f"`{name}` line {line}: kind '{kind}' with status '{rec['status']}'")
                     continue
                 if kind == "check" and status == "FAIL" and rec["cause"] not in CAUSES:
-                    problems.append(f"`{name}` line {line}: FAIL without a cause ({rec['id']})")
+                    warnings.append(f"`{name}` line {line}: FAIL without a cause ({rec['id']})")
                 rows.append(dict(rec, kind=kind, status=status))
     except (OSError, UnicodeDecodeError, csv.Error) as e:
         problems.append(f"`{name}`: cannot read ({e})")
-    return rows, problems
+    return rows, problems, warnings
 
 
 def counts(rows):
@@ -186,9 +188,10 @@ def main(argv):
     json_path = argv[3] if len(argv) == 4 else os.path.join(os.path.dirname(os.path.abspath(out_path)),
                                                              "claims.json")
     files = sorted(glob.glob(os.path.join(claims_dir, "*.csv")))
-    by_driver, problems = {}, []
+    by_driver, problems, warnings = {}, [], []
     for path in files:
-        r, p = read_claims(path)
+        r, p, w = read_claims(path)
+        warnings += w
         driver = os.path.splitext(os.path.basename(path))[0]
         for rec in r:
             rec["driver"] = driver
@@ -227,7 +230,7 @@ def main(argv):
         for d in drivers:
             dc, dcause = counts(by_driver[d])
             times = [r["run_time_s"] for r in by_driver[d] if r["run_time_s"]]
-            title = DRIVERS.get(d, ("", d))[1].split(":")[0]
+            title = DRIVERS.get(d, ("", d))[1]
             lines.append(f"| [{cell(title)}](#{d.lower()}) | {dc['pass'] + dc['fail']} | {dc['pass']} | "
                          f"{dcause['paper_method']} | {dcause['missing_data']} | {dcause['implementation']} | "
                          f"{dc['measurement'] + dc['unverified']} ({dc['unverified']}) | "
@@ -256,9 +259,9 @@ def main(argv):
                                                                            "tolerance"))
                                  + f" | {cell(status_cell(r))} |")
                 lines.append("")
-        if problems:
-            lines += ["## Problems", ""] + [f"- {p}" for p in problems] + [""]
-            for p in problems:
+        if problems or warnings:
+            lines += ["## Problems", ""] + [f"- {p}" for p in problems + warnings] + [""]
+            for p in problems + warnings:
                 print(f"report.py: warning: {p}", file=sys.stderr)
 
     write_atomic(out_path, "\n".join(lines).rstrip("\n") + "\n")
