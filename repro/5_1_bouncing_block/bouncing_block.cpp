@@ -84,22 +84,7 @@ int main(int argc, char** argv) try {
                         format_short(runs[2].h_b) + " vs " + format_short(runs[3].h_b) + " m)",
                     "information; compared in the next row", false, repro::Kind::kMeasurement});
   claims.push_back(bouncing_block::comparison_row(diff_unified, diff_inscribed));
-  for (const Run& r : runs) {
-    // Sane: A never passes B's top by more than the peak overlap allows
-    // (no flip-through: its base stays above B's bottom), energy conserved
-    // to 1 % (frictionless, undamped), and the drop stays symmetric.
-    const bool no_flip = r.lowest_base > -r.b_height;
-    const bool ok = no_flip && r.stats.energy_error < 0.01 && r.max_mirror < 1e-9;
-    claims.push_back({"5.1", r.label + ": run stays sane", "(not stated; robustness)",
-                      "energy error " + format_short(r.stats.energy_error, 3) + "; peak overlap thickness " +
-                          format_short(r.stats.peak_thickness, 3) + " m; lowest point of A " +
-                          format_short(r.lowest_base, 3) + " m (B's top at 0, bottom at " +
-                          format_short(-r.b_height) + "); first rebound to dy = " + format_short(r.first_rebound, 4) +
-                          " m (A's vibration keeps " + format_short(r.strain_after, 3) +
-                          " J of strain energy after the first impact, of m g 0.5 m = 9810 J); mirror asymmetry " +
-                          format_short(r.max_mirror, 2) + " m",
-                      "energy error < 1 %, A's base above B's bottom, asymmetry < 1e-9 m", ok});
-  }
+  for (const Run& r : runs) claims.push_back(bouncing_block::sane_row(r));
   repro::write_claims(repro::claims_path(out, "5_1_bouncing_block"), claims);
   progress("done: max case difference, unified " + format_short(diff_unified, 3) + " m, inscribed " +
            format_short(diff_inscribed, 3) + " m");

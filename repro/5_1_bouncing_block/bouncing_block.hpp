@@ -30,9 +30,11 @@ struct Run {
   double seconds = 0.0;
 };
 
-inline Run run(double b_height, dda::HRule rule, const std::string& label) {
+// `tweak`, if given, changes the scene before the run (the negative controls).
+inline Run run(double b_height, dda::HRule rule, const std::string& label, void (*tweak)(dda::Scene&) = nullptr) {
   const repro::Progress clock(label);
-  const dda::paper::BouncingBlock bb = dda::paper::bouncing_block(b_height, rule);
+  dda::paper::BouncingBlock bb = dda::paper::bouncing_block(b_height, rule);
+  if (tweak) tweak(bb.scene);
   dda::Simulation sim(bb.scene);
   dda::paper::RunMonitor mon(sim, bb.fixed, bb.falling);
   Run r;
@@ -89,6 +91,31 @@ inline repro::Claim comparison_row(double diff_unified, double diff_inscribed) {
                  "difference ratio unified / inscribed = " + format_short(diff_unified / diff_inscribed, 3),
                  "<= " + format_short(kRatioMax), diff_unified <= kRatioMax * diff_inscribed};
   c.control = "repro_controls: 5.1 H comparison: FAIL with the H rules swapped";
+  return c;
+}
+
+// A sane run: energy conserved to 1 % (frictionless, undamped) and the drop
+// mirror symmetric to round-off (1e-9 m).
+constexpr double kEnergyTol = 0.01;
+constexpr double kMirrorTol = 1e-9;  // m
+inline const char* const kControlSane = "5.1 sane run: FAIL with mass damping";
+
+inline repro::Claim sane_row(const Run& r) {
+  // Sane: A never passes B's top by more than the peak overlap allows
+  // (no flip-through: its base stays above B's bottom), energy conserved
+  // to 1 % (frictionless, undamped), and the drop stays symmetric.
+  const bool no_flip = r.lowest_base > -r.b_height;
+  const bool ok = no_flip && r.stats.energy_error < kEnergyTol && r.max_mirror < kMirrorTol;
+  repro::Claim c{"5.1", r.label + ": run stays sane", "(not stated; robustness)",
+                  "energy error " + format_short(r.stats.energy_error, 3) + "; peak overlap thickness " +
+                      format_short(r.stats.peak_thickness, 3) + " m; lowest point of A " +
+                      format_short(r.lowest_base, 3) + " m (B's top at 0, bottom at " +
+                      format_short(-r.b_height) + "); first rebound to dy = " + format_short(r.first_rebound, 4) +
+                      " m (A's vibration keeps " + format_short(r.strain_after, 3) +
+                      " J of strain energy after the first impact, of m g 0.5 m = 9810 J); mirror asymmetry " +
+                      format_short(r.max_mirror, 2) + " m",
+                  "energy error < 1 %, A's base above B's bottom, asymmetry < 1e-9 m", ok};
+  c.control = std::string("repro_controls: ") + kControlSane;
   return c;
 }
 

@@ -113,6 +113,16 @@ TEST_CASE("5.1 H comparison: FAIL with the H rules swapped", "[controls][5.1]") 
   CHECK(swapped.control == "repro_controls: 5.1 H comparison: FAIL with the H rules swapped");
 }
 
+TEST_CASE("5.1 sane run: FAIL with mass damping", "[controls][5.1]") {
+  // 1/s: A loses energy in its fall and bounce, so the undamped run's energy
+  // criterion must fail (the criterion also checks flip-through and symmetry).
+  const bouncing_block::Run r = bouncing_block::run(0.1, dda::HRule::kMinMaxEdge, "damped",
+                                                    [](dda::Scene& s) { s.damping.mass = 1.0; });
+  const repro::Claim c = bouncing_block::sane_row(r);
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == std::string("repro_controls: ") + bouncing_block::kControlSane);
+}
+
 // --- Sect. 5.2, small angles ------------------------------------------------------
 namespace {
 // The 5.2 rows for a modified scene (the run stands in for the apex-to-apex variant too).
