@@ -54,6 +54,11 @@ int main(int argc, char** argv) {
                         "shrink the gap");
   }
   csv.commit();
+  {
+    const Run r = run(dda::paper::incline(incline::kRestPhi), nullptr, incline::kRestPhi, update);
+    claims.push_back(incline::rest_row(r));
+    progress("phi = " + format_short(incline::kRestPhi) + ": moved " + format_short(r.distance, 3) + " m");
+  }
   // Where the gap comes from. (1) With finite kt the pair starts in an
   // elastic stick phase: friction ramps up from zero until kt |d| reaches
   // fn tan(phi), so B gains speed that rigid Coulomb friction (Eq. 30) would

@@ -58,4 +58,23 @@ inline repro::Claim eq30_row(double phi_deg, const Run& r) {
   return c;
 }
 
+// A block on a slope gentler than its friction angle stays put (Sect. 4.3's
+// Coulomb law, Eq. 30 with tan(phi) > tan(theta)): it may only creep by the
+// elastic shear of its contact springs (m g sin(theta) / kt ~ 1 mm for the
+// paper's 1 m square and kt = 1e7 N/m); 1 cm in 1 s is ten times that.
+constexpr double kRestPhi = 35.0;        // deg: 5 deg above the 30 deg slope
+constexpr double kRestTolerance = 0.01;  // m
+inline const char* const kControlRest = "4.3 rest: FAIL with friction off";
+
+inline repro::Claim rest_row(const Run& r) {
+  using repro::format_short;
+  repro::Claim c{"4.3", "a block on a slope gentler than its friction angle stays put (phi = 35 deg on 30 deg)",
+                 "Sect. 4.3, Eq. 30: no sliding when tan(phi) > tan(theta)",
+                 "moved " + format_short(r.distance, 3) + " m down the slope in 1 s",
+                 "|l| < " + format_short(kRestTolerance) + " m", std::fabs(r.distance) < kRestTolerance};
+  c.key = "rest";
+  c.control = std::string("repro_controls: ") + kControlRest;
+  return c;
+}
+
 }  // namespace incline

@@ -99,6 +99,15 @@ TEST_CASE("4.3 Eq. 30 without friction: FAIL with friction on", "[controls][4.3]
   CHECK(c.control == "repro_controls: 4.3 Eq. 30 without friction: FAIL with friction on");
 }
 
+TEST_CASE("4.3 rest: FAIL with friction off", "[controls][4.3]") {
+  dda::paper::Incline in = dda::paper::incline(incline::kRestPhi);
+  in.scene.contact.kt = 0.0;  // friction off: the block slides down the 30 deg slope
+  const repro::Claim c =
+      incline::rest_row(incline::run(in, nullptr, incline::kRestPhi, dda::FrictionUpdate::kPaper));
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == std::string("repro_controls: ") + incline::kControlRest);
+}
+
 // --- Sect. 5.1, bouncing block ----------------------------------------------------
 TEST_CASE("5.1 H comparison: FAIL with the H rules swapped", "[controls][5.1]") {
   // The wrong H rule: the runs judged as 'unified H' use the inscribed radius
