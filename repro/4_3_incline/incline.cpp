@@ -57,6 +57,12 @@ int main(int argc, char** argv) {
   {
     const Run r = run(dda::paper::incline(incline::kRestPhi), nullptr, incline::kRestPhi, update);
     claims.push_back(incline::rest_row(r));
+    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                        "the paper's undamped explicit scheme loads the stick spring (Eq. 26, kt = 1e7 N/m) suddenly: "
+                        "the shear demand overshoots to twice its static value, 2 m g sin 30 = 1.0 m g, beyond the "
+                        "limit m g cos 30 tan 35 = 0.61 m g, so B slips in its stick oscillations (analytic); the "
+                        "return-mapping update (--return-mapping 1) still moves B 0.11 m, so it is not the re-stick "
+                        "ratchet");
     progress("phi = " + format_short(incline::kRestPhi) + ": moved " + format_short(r.distance, 3) + " m");
   }
   // Where the gap comes from. (1) With finite kt the pair starts in an
