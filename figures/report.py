@@ -89,6 +89,9 @@ DRIVERS = {
     "S2_stability_maps": ("Supplementary", "S2: stability maps and the critical time step",
                           "Not in the papers: the predicted critical step against the linearised and empirical limits.",
                           ["figS2_stability_maps.png"]),
+    "S3_penetration_map": ("Supplementary", "S3: penetration map",
+                           "Not in the papers: where two blocks would pass through each other, the penetration "
+                           "guard stops the run.", ["figS3_penetration_map.png"]),
     "S3_extreme_cases": ("Supplementary", "S3: extreme cases",
                          "Not in the papers: high speed, deep penetration, stiff contacts and the guards.", []),
 }

@@ -238,3 +238,14 @@ $(OUT)/data/extreme_cases/.done: $(BIN)/extreme_cases
 	@touch $@
 
 $(OUT)/report.md: $(OUT)/data/extreme_cases/.done
+
+# --- S3: penetration map (guard on and off over speed, kn and dt) ------------
+$(OUT)/data/penetration_map/.done: $(BIN)/penetration_map
+	$(BIN)/penetration_map --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/figS3_penetration_map.png: $(OUT)/data/penetration_map/.done figures/figS3_penetration_map.py figures/potential_common.py
+	$(PY) figures/figS3_penetration_map.py $(OUT)/data/penetration_map $@
+
+FIGS += $(OUT)/figures/figS3_penetration_map.png
+$(OUT)/report.md: $(OUT)/data/penetration_map/.done

@@ -50,9 +50,10 @@ struct Energy {
   // return mapping, its d_tan returned onto the limit); none in a pair
   // sliding under the paper's rule, which keeps no shear (energy.cpp).
   double friction_spring = 0.0;
-  // Work that friction took out of the blocks since t = 0 and no spring
-  // holds (sliding, shear dropped by a restart or a separation). The solver
-  // has no damping.
+  // Work taken out of the blocks since t = 0 (or since the end of a settle,
+  // Scene::damping.settle_time) that no spring holds: friction sliding,
+  // shear dropped by a restart or a separation, and the work of Eq. 5c's
+  // damping forces when Scene::damping is on.
   double dissipated = 0.0;
   double initial = 0.0;  // total() at t = 0
   double total() const { return kinetic + gravity + strain + contact + friction_spring; }

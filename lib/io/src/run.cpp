@@ -79,14 +79,16 @@ std::vector<std::string> timeseries_header(const std::vector<int>& tracked) {
     const std::string b = "b" + std::to_string(i) + "_";
     for (const char* c : {"x", "y", "vx", "vy", "rot", "spin"}) h.push_back(b + c);
   }
-  for (const char* c : {"E_kinetic", "E_gravity", "E_strain", "E_contact", "E_total", "px", "py", "contacts"})
+  // The energy budget (Energy::balance_error): E_total + E_dissipated - E_initial.
+  for (const char* c : {"E_kinetic", "E_gravity", "E_strain", "E_contact", "E_friction_spring", "E_total",
+                        "E_dissipated", "E_balance_error", "px", "py", "contacts"})
     h.emplace_back(c);
   return h;
 }
 
 std::vector<CsvValue> timeseries_row(const Simulation& sim, const std::vector<int>& tracked) {
   std::vector<CsvValue> row{sim.time(), static_cast<long long>(sim.step_count())};
-  row.reserve(2 + 6 * tracked.size() + 8);
+  row.reserve(2 + 6 * tracked.size() + 11);
   for (int i : tracked) {
     const Vec2 c = sim.centroid(i);
     const Vec6& v = sim.velocity(i);
@@ -94,7 +96,9 @@ std::vector<CsvValue> timeseries_row(const Simulation& sim, const std::vector<in
   }
   const Energy e = sim.energy();
   const Vec2 p = sim.momentum();
-  for (double x : {e.kinetic, e.gravity, e.strain, e.contact, e.total(), p.x, p.y}) row.emplace_back(x);
+  for (double x : {e.kinetic, e.gravity, e.strain, e.contact, e.friction_spring, e.total(), e.dissipated,
+                   e.balance_error(), p.x, p.y})
+    row.emplace_back(x);
   row.emplace_back(sim.contacts().size());
   return row;
 }
