@@ -63,8 +63,8 @@ int main(int argc, char** argv) {
     repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
                         "Table 4's finite kt = 1e7 N/m: B first sticks elastically and gains a lead that rigid "
                         "Coulomb friction (Eq. 30) does not have (predicted below), and the friction torque rocks B "
-                        "on the soft contact of the paper's H = 6.5 m; H = 1 m and a stiffer kt (rows below) "
-                        "shrink the gap");
+                        "on the soft contact of the paper's H = 6.5 m; the friction start-up option beyond the "
+                        "paper (next row: springs pre-loaded by settling) passes");
     // Beside it, the friction start-up option (not the paper's): settled
     // for 0.5 s with every contact sticking (mass damping a = 80 1/s, about
     // twice the contact's normal mode), so the springs carry the static
