@@ -15,7 +15,8 @@ DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
 
 BIN := $(BUILD)/bin
 
-.PHONY: all deps configure build test sanitize repro fuzz bench clean figures report
+.PHONY: all deps configure build test sanitize repro fuzz bench clean figures report verdicts verdict-run \
+        expected-verdicts
 
 all: build
 
@@ -39,6 +40,7 @@ build: configure
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@$(MAKE) --no-print-directory verdicts
 	@$(MAKE) --no-print-directory sanitize
 
 # The unit, scene-file (io), CDEM and property tests once more, built with
@@ -55,6 +57,36 @@ sanitize: deps
 	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target $(SANITIZE_TARGETS)
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j $(JOBS) -R '$(SANITIZE_TESTS)'
+
+# ---------------------------------------------------------------------------
+# Verdicts: every driver with its default arguments into $(VERDICT_OUT), then
+# each row's kind and verdict against repro/expected_verdicts.csv (fails
+# listing the rows that changed). 'make expected-verdicts' rewrites the list
+# from such a run: commit it on its own, saying why a verdict changed.
+# The longest drivers come first so that the $(JOBS) parallel runs end together.
+# ---------------------------------------------------------------------------
+DRIVERS := collapse toppling_slumping work_precision stability_maps extreme_cases \
+           segmentation B_7_contact_comparison extreme_geometry potential_fields \
+           previous_potential two_squares symmetric_stack incline bouncing_block \
+           small_angles small_edges B_6_two_prisms penetration_map
+VERDICT_OUT ?= $(BUILD)/verdicts_out
+EXPECTED    := repro/expected_verdicts.csv
+
+verdict-run: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target $(DRIVERS)
+	@rm -rf $(VERDICT_OUT) && mkdir -p $(VERDICT_OUT)/logs
+	@echo "== verdicts: running $(words $(DRIVERS)) drivers ($(JOBS) at a time) into $(VERDICT_OUT)"
+	@start=$$(date +%s); \
+	printf '%s\n' $(DRIVERS) | xargs -P $(JOBS) -I{} sh -c \
+	  '$(BIN)/{} --out $(VERDICT_OUT) > $(VERDICT_OUT)/logs/{}.log 2>&1 || { echo "driver {} failed: $(VERDICT_OUT)/logs/{}.log"; exit 1; }' \
+	  || exit 1; \
+	echo "== verdicts: drivers took $$(( $$(date +%s) - start )) s"
+
+verdicts: verdict-run
+	$(PY) repro/common/verdicts.py compare $(VERDICT_OUT)/claims $(EXPECTED)
+
+expected-verdicts: verdict-run
+	$(PY) repro/common/verdicts.py write $(VERDICT_OUT)/claims $(EXPECTED)
 
 # Property tests with random seeds and FUZZ_CASES cases per property.
 # Then the scene-file mutation fuzzer: SCENE_FUZZ_CASES mutated scene files
@@ -93,5 +125,5 @@ figures: $(FIGS)
 
 report: $(OUT)/report.md
 $(OUT)/report.md: figures/report.py $(wildcard $(OUT)/claims/*.csv) $(FIGS)
-	$(PY) figures/report.py $(OUT)/claims $@
+	$(PY) figures/report.py $(OUT)/claims $@ $(OUT)/claims.json
 	@echo "== report: $@"

@@ -60,7 +60,7 @@ def main(argv):
         ax.plot(kn, [f(b["linearized_at_peak"]) for b in bnd], "b--", lw=1.3,
                 label="linearised 2/omega at peak force", zorder=4)
         ax.plot(kn, [f(b["old_estimate"]) for b in bnd], ":", color="0.45", lw=1.5,
-                label="estimate before this issue", zorder=4)
+                label="per-block estimate 2 kn L_max / H", zorder=4)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("kn (Pa)")
@@ -74,7 +74,7 @@ def main(argv):
     for key, marker, color, label in [("empirical_over_linearized", "o", "tab:green", "empirical (bisection)"),
                                       ("current_over_linearized", "s", "k", "solver: critical_time_step()"),
                                       ("predicted_over_linearized", "^", "tab:blue", "solver: predicted"),
-                                      ("old_over_linearized", "x", "tab:red", "estimate before this issue")]:
+                                      ("old_over_linearized", "x", "tab:red", "per-block estimate 2 kn L_max / H")]:
         ax.scatter([f(r[key]) for r in check], y, marker=marker, c=color, label=label, zorder=3,
                    facecolors="none" if marker in "s^" else None)
     ax.axvline(1.0, color="0.3", lw=1)

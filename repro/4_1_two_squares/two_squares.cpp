@@ -7,11 +7,10 @@
 // the conservation of momentum": after the impact v_A ~ 0, v_B ~ 1 m/s.
 //
 // Output: data/two_squares/velocity.csv (Fig. 8), claims/4_1_two_squares.csv.
-#include <cmath>
 #include <vector>
 
 #include "dda/paper_scenes.hpp"
-#include "dda/simulation.hpp"
+#include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/common/common.hpp"
 
 int main(int argc, char** argv) {
@@ -19,50 +18,12 @@ int main(int argc, char** argv) {
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("4.1 two squares");
   const dda::Scene scene = dda::paper::two_squares();
-  dda::Simulation sim(scene);
-
   repro::CsvWriter csv(out + "/data/two_squares/velocity.csv",
                        {"time", "vx_A", "vx_B", "momentum_x", "kinetic", "strain", "contact", "total_energy"});
-  const double p0 = sim.momentum().x;
-  const double e0 = sim.energy().total();
-  double worst_momentum = 0.0, worst_energy = 0.0, t_first = -1.0, t_last = -1.0;
-  auto record = [&] {
-    const dda::Energy e = sim.energy();
-    csv.row({sim.time(), sim.velocity(0)[0], sim.velocity(1)[0], sim.momentum().x, e.kinetic, e.strain, e.contact,
-             e.total()});
-    worst_energy = std::max(worst_energy, std::fabs(e.total() - e0) / e0);
-  };
-  record();
-  while (sim.time() < scene.duration) {
-    sim.step();
-    worst_momentum = std::max(worst_momentum, std::fabs(sim.momentum().x - p0) / std::fabs(p0));
-    if (!sim.contacts().empty()) {
-      if (t_first < 0.0) t_first = sim.time();
-      t_last = sim.time();
-    }
-    if (sim.step_count() % 10 == 0) record();
-  }
+  const two_squares::Result r = two_squares::run(scene, &csv);
   csv.commit();
-  const double va = sim.velocity(0)[0], vb = sim.velocity(1)[0];
-  progress("done: v_A = " + repro::format_short(va) + ", v_B = " + repro::format_short(vb));
-
-  using repro::format_short;
-  // Tolerances: velocity exchange within 1 % of the impact speed (the blocks
-  // keep a small strain vibration after the impact); momentum to round-off
-  // (forces are applied equal and opposite at one point); energy within 1 %
-  // (velocity Verlet is symplectic: no drift, O(h^2) oscillation).
-  std::vector<repro::Claim> claims = {
-      {"4.1", "block A stops after the impact", "Fig. 8: v_A -> 0", "v_A(1 s) = " + format_short(va) + " m/s",
-       "|v_A| < 0.01 m/s", std::fabs(va) < 0.01},
-      {"4.1", "block B leaves with A's speed", "Fig. 8: v_B -> 1 m/s", "v_B(1 s) = " + format_short(vb) + " m/s",
-       "|v_B - 1| < 0.01 m/s", std::fabs(vb - 1.0) < 0.01},
-      {"4.1", "momentum is conserved", "'the results satisfy the conservation of momentum'",
-       "max |p - p0| / p0 = " + format_short(worst_momentum, 3), "< 1e-9", worst_momentum < 1e-9},
-      {"4.1", "energy is conserved through the collision (no damping)", "kinetic energy exchanged",
-       "max |E - E0| / E0 = " + format_short(worst_energy, 3) + "; contact from t = " + format_short(t_first) +
-           " to " + format_short(t_last) + " s",
-       "< 1e-2", worst_energy < 1e-2},
-  };
+  progress("done: v_A = " + repro::format_short(r.va) + ", v_B = " + repro::format_short(r.vb));
+  const std::vector<repro::Claim> claims = two_squares::claims(r);
   repro::write_claims(repro::claims_path(out, "4_1_two_squares"), claims);
   return 0;
 }

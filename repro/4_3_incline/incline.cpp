@@ -26,39 +26,15 @@
 
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "repro/4_3_incline/incline.hpp"
 #include "repro/common/common.hpp"
 #include "repro/common/options.hpp"
 
-namespace {
-constexpr double kG = 9.81;
-constexpr double kPi = 3.14159265358979323846;
-
-struct Run {
-  double distance = 0.0;  // final sliding distance, m
-  double analytic = 0.0;  // Eq. 30 at the same time, m
-  double rel_error() const { return (distance - analytic) / analytic; }
-};
-
-// Runs one case with the friction update `update`; appends (time, l,
-// l_analytic) rows for `column` if given.
-Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg, dda::FrictionUpdate update) {
-  in.scene.contact.friction_update = update;
-  dda::Simulation sim(in.scene);
-  const dda::Vec2 c0 = sim.centroid(1);
-  const double phi = phi_deg * kPi / 180.0;
-  Run r;
-  while (sim.time() < in.scene.duration - 0.5 * sim.dt()) {
-    sim.step();
-    if (csv && sim.step_count() % 500 == 0) {
-      const double l = dot(sim.centroid(1) - c0, in.downhill);
-      csv->row({phi_deg, sim.time(), l, dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time())});
-    }
-  }
-  r.distance = dot(sim.centroid(1) - c0, in.downhill);
-  r.analytic = dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time());
-  return r;
-}
-}  // namespace
+using incline::kG;
+using incline::kPi;
+using incline::kTol;
+using incline::Run;
+using incline::run;
 
 int main(int argc, char** argv) {
   repro::check_command_line(argc, argv, "Paper A Sect. 4.3 (Figs. 11-12, geometry reconstructed): a block sliding on a 30-degree incline.",
@@ -72,9 +48,6 @@ int main(int argc, char** argv) {
                        {"Paper A Sect. 4.3, geometry reconstructed (Fig. 11 lost): theta = 30 deg"});
   std::vector<repro::Claim> claims;
   using repro::format_short;
-  // Tolerance 1 % of the distance: "good agreement" read as within the line
-  // width of Fig. 12.
-  constexpr double kTol = 0.01;
   constexpr double kSettleDamping = 80.0;   // 1/s: ~2 x the contact's 39 rad/s normal mode, 20 decay times in 0.5 s
   constexpr double kSettleTime = 0.5;       // s
   constexpr double kCreepPhi = 30.0, kCreepTheta = 20.0;  // deg
@@ -86,11 +59,12 @@ int main(int argc, char** argv) {
     const Run r = run(dda::paper::incline(phi), &csv, phi, update);
     progress("phi = " + format_short(phi) + ": l = " + format_short(r.distance, 6) + " m, Eq. 30 " +
              format_short(r.analytic, 6) + " m");
-    claims.push_back({"4.3", "sliding distance at t = 1 s follows Eq. 30, phi = " + format_short(phi) + " deg",
-                      "Fig. 12: 'good agreements'",
-                      "l = " + format_short(r.distance, 5) + " m vs " + format_short(r.analytic, 5) +
-                          " m, rel. error " + format_short(r.rel_error(), 3),
-                      "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+    claims.push_back(incline::eq30_row(phi, r));
+    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                        "Table 4's finite kt = 1e7 N/m: B first sticks elastically and gains a lead that rigid "
+                        "Coulomb friction (Eq. 30) does not have (predicted below), and the friction torque rocks B "
+                        "on the soft contact of the paper's H = 6.5 m; the friction start-up option beyond the "
+                        "paper (next row: springs pre-loaded by settling) passes");
     // Beside it, the friction start-up option (not the paper's): settled
     // for 0.5 s with every contact sticking (mass damping a = 80 1/s, about
     // twice the contact's normal mode), so the springs carry the static
@@ -106,8 +80,21 @@ int main(int argc, char** argv) {
                       "Eq. 30", "l = " + format_short(s.distance, 5) + " m vs " + format_short(s.analytic, 5) +
                                     " m, rel. error " + format_short(s.rel_error(), 3),
                       "|rel. error| < 1 %", std::fabs(s.rel_error()) < kTol});
+    repro::explain_fail(claims.back(), repro::Cause::kImplementation,
+                        "the start-up option should remove the stick-phase lead; not explained, needs an issue note");
   }
   csv.commit();
+  {
+    const Run r = run(dda::paper::incline(incline::kRestPhi), nullptr, incline::kRestPhi, update);
+    claims.push_back(incline::rest_row(r));
+    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                        "the paper's undamped explicit scheme loads the stick spring (Eq. 26, kt = 1e7 N/m) suddenly: "
+                        "the shear demand overshoots to twice its static value, 2 m g sin 30 = 1.0 m g, beyond the "
+                        "limit m g cos 30 tan 35 = 0.61 m g, so B slips in its stick oscillations (analytic); the "
+                        "return-mapping update (--return-mapping 1) still moves B 0.11 m, so it is not the re-stick "
+                        "ratchet");
+    progress("phi = " + format_short(incline::kRestPhi) + ": moved " + format_short(r.distance, 3) + " m");
+  }
   // Creep: B launched downhill at 0.5 m/s on a 20 deg slope with phi = 30
   // deg decelerates at g (cos t tan phi - sin t) = 1.97 m/s^2 and stops
   // within 0.3 s; under Coulomb friction it then stays. H = 1 m (the
@@ -145,6 +132,9 @@ int main(int argc, char** argv) {
                                    "on the same run, next row, stays put)"
                                  : ""),
                       "|creep rate| < 1 mm/s", std::fabs(rate) < kCreepTolerance});
+    repro::explain_fail(claims.back(), paper ? repro::Cause::kPaperMethod : repro::Cause::kImplementation,
+                        paper ? "Eq. 26's friction update: the return mapping on the same run (next row) stays put"
+                              : "the return mapping should stop creep; not explained, needs an issue note");
   }
   // Where the gap comes from. (1) With finite kt the pair starts in an
   // elastic stick phase: friction ramps up from zero until kt |d| reaches
@@ -167,13 +157,15 @@ int main(int argc, char** argv) {
                       "not discussed in the paper",
                       "stick phase t* = " + format_short(ts * 1e3, 3) + " ms, predicted rel. lead " +
                           format_short(predicted, 3),
-                      "information (no tolerance)", true});
+                      "information (no tolerance)", false, repro::Kind::kMeasurement});
   }
   {
     const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, true, 1.0), nullptr, 20.0, update);
     claims.push_back({"4.3 (extra)", "phi = 20 deg with H = 1 m (paper's rule gives 6.5 m here): less rocking",
                       "Eq. 30", "rel. error " + format_short(r.rel_error(), 3), "|rel. error| < 1 %",
                       std::fabs(r.rel_error()) < kTol});
+    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                        "the elastic stick phase of Table 4's kt = 1e7 N/m remains (predicted lead in the row above)");
   }
   for (double kt : {1e9, 1e11}) {
     dda::paper::Incline in = dda::paper::incline(20.0, 30.0, 1.0, true, 1.0);
@@ -183,12 +175,18 @@ int main(int argc, char** argv) {
                       "Eq. 30 in the rigid-friction limit",
                       "rel. error " + format_short(r.rel_error(), 3) + " (l = " + format_short(r.distance, 5) + " m)",
                       "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+    repro::explain_fail(claims.back(), repro::Cause::kImplementation,
+                        "not explained: with H = 1 m and a stiff kt neither cause of the gap is left, yet l stays "
+                        "1.7-1.9 % above Eq. 30; open, needs an issue note");
   }
   {
     const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, false), nullptr, 20.0, update);
     claims.push_back({"4.3 (extra)", "phi = 20 deg, B starting just touching (falls into its static penetration)",
                       "not stated in the paper", "rel. error " + format_short(r.rel_error(), 3),
                       "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+    repro::explain_fail(claims.back(), repro::Cause::kMissingData,
+                        "the paper does not give B's start; dropped onto the slab B bounces and rocks before it "
+                        "slides, so this start is not the paper's case");
   }
   if (return_mapping)
     for (repro::Claim& c : claims) c.claim += " [RETURN MAPPING: friction update not the paper's Eq. 26]";

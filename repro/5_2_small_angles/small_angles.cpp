@@ -26,54 +26,14 @@
 
 #include "dda/robustness_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "repro/5_2_small_angles/small_angles.hpp"
 #include "repro/common/common.hpp"
 #include "repro/common/sim_output.hpp"
 
-namespace {
 using dda::Vec2;
 using repro::format_short;
-
-struct Result {
-  dda::paper::RunStats stats;
-  double asymmetry = 0.0;   // largest point-symmetry error, m
-  bool apart_at_end = false;  // no contact between the triangles at the end
-  Vec2 v0_end{};
-  double rotation_end = 0.0;
-  double seconds = 0.0;
-};
-
-Result run(const dda::paper::SmallAngleTriangles& st, repro::CsvWriter* traces, repro::CsvWriter* snaps) {
-  const repro::Progress clock("run");
-  dda::Simulation sim(st.scene);
-  dda::paper::RunMonitor mon(sim, 0, 1);
-  Result r;
-  auto record = [&] {
-    const double a = dda::paper::point_symmetry_error(sim.polygon(0), sim.polygon(1), st.centre);
-    r.asymmetry = std::max(r.asymmetry, a);
-    if (traces && sim.step_count() % 5 == 0) {
-      const Vec2 p0 = sim.polygon(0).vertex(st.apex[0]), p1 = sim.polygon(1).vertex(st.apex[1]);
-      const dda::Energy e = sim.energy();
-      traces->row({sim.time(), p0.x, p0.y, p1.x, p1.y, sim.centroid(0).x, sim.centroid(0).y, sim.centroid(1).x,
-                   sim.centroid(1).y, a, e.total(), e.contact,
-                   dda::paper::overlap_thickness(sim.polygon(0), sim.polygon(1))});
-    }
-  };
-  if (snaps) repro::write_snapshot(*snaps, sim);
-  record();
-  while (sim.time() < st.scene.duration - 0.5 * sim.dt()) {
-    sim.step();
-    mon.sample();
-    record();
-  }
-  if (snaps) repro::write_snapshot(*snaps, sim);
-  r.stats = mon.stats();
-  r.v0_end = {sim.velocity(0)[0], sim.velocity(0)[1]};
-  r.apart_at_end = sim.contacts().empty();
-  r.rotation_end = sim.displacement(0)[2];
-  r.seconds = clock.elapsed_seconds();
-  return r;
-}
-}  // namespace
+using small_angles::Result;
+using small_angles::run;
 
 int main(int argc, char** argv) try {
   repro::check_command_line(argc, argv, "Paper A Sect. 5.2 (Figs. 15-16, geometry reconstructed): polygons with small angles.");
@@ -104,41 +64,7 @@ int main(int argc, char** argv) try {
            " s");
 
   const std::string geo = " (reconstructed geometry, 5 deg triangles, +-1 m/s, 0.2 s)";
-  // Tolerances: point symmetry to 1e-9 m (1e-9 of the block size: round-off
-  // differences in the order of operations of CP and TP may grow through the
-  // impact but stay far below anything visible); energy to 1 % (no damping,
-  // no friction: velocity Verlet conserves it to O(dt^2)).
-  const bool rebounded = r.stats.first_contact > 0.0 && r.apart_at_end;
-  std::vector<repro::Claim> claims = {
-      {"5.2", "the two triangles move point-symmetrically about the collision centre" + geo,
-       "Fig. 16: 'the two triangles move symmetrically regarding the collision centroid'",
-       "max over 0.2 s of |v0_k + v1_k - 2c| (every vertex) = " + format_short(r.asymmetry, 3) + " m",
-       "< 1e-9 m", r.asymmetry < 1e-9},
-      {"5.2", "the collision happens and the triangles separate again" + geo, "Fig. 16 (configuration after 0.2 s)",
-       "contact from " + format_short(r.stats.first_contact, 4) + " to " + format_short(r.stats.last_contact, 4) +
-           " s, apart at 0.2 s; the lower triangle ends at v = (" + format_short(r.v0_end.x, 3) + ", " +
-           format_short(r.v0_end.y, 3) + ") m/s (was (0, 1)), rotated by " + format_short(r.rotation_end, 3) +
-           " rad: it keeps " + format_short(100.0 * (r.v0_end.x * r.v0_end.x + r.v0_end.y * r.v0_end.y), 3) +
-           " % of its kinetic energy in translation, the rest goes into spin and vibration (energy conserved, next "
-           "row)",
-       "contact occurs and has ended by 0.2 s", rebounded},
-      {"5.2", "energy is conserved through the small-angle contact" + geo, "(robustness; no damping)",
-       "max |E - E0| / E_mech = " + format_short(r.stats.energy_error, 3), "< 1 %", r.stats.energy_error < 0.01},
-      {"5.2", "peak penetration of the small-angle contact" + geo, "(not stated)",
-       "overlap thickness (diameter of the largest circle in the intersection polygon) " +
-           format_short(r.stats.peak_thickness, 3) + " m; deepest vertex " +
-           format_short(r.stats.peak_vertex_depth, 3) + " m",
-       "information (< 0.1 of the triangles' base, " + format_short(0.1 * 2 * std::tan(2.5 * M_PI / 180), 3) + " m)",
-       r.stats.peak_vertex_depth < 0.1 * 2 * std::tan(2.5 * M_PI / 180)},
-      {"5.2 (extra)", "variant: 5 deg triangles apex to apex (tilted 1 deg), point symmetry",
-       "(not in the paper)",
-       "point-symmetry error " + format_short(rt.asymmetry, 3) + " m; the tips glance: contact " +
-           format_short(rt.stats.first_contact, 4) + " to " + format_short(rt.stats.last_contact, 4) +
-           " s, peak overlap thickness " + format_short(rt.stats.peak_thickness, 3) + " m, lower triangle ends at v = (" +
-           format_short(rt.v0_end.x, 3) + ", " + format_short(rt.v0_end.y, 3) + ") m/s; energy error " +
-           format_short(rt.stats.energy_error, 3),
-       "< 1e-9 m and energy error < 1 %", rt.asymmetry < 1e-9 && rt.stats.energy_error < 0.01},
-  };
+  const std::vector<repro::Claim> claims = small_angles::claims(r, rt, geo);
   repro::write_claims(repro::claims_path(out, "5_2_small_angles"), claims);
   progress("done");
   return 0;

@@ -33,98 +33,15 @@
 
 #include "dda/robustness_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "repro/5_3_small_edges/small_edges.hpp"
 #include "repro/common/common.hpp"
 
-namespace {
 using dda::Vec2;
-using repro::format_short;
 using dda::paper::SmallEdgeCase;
-
-struct Result {
-  dda::paper::RunStats stats;
-  double min_push = 1e300;      // smallest y-component of the contact force on the upper block, N
-  double max_push = 0.0;        // largest, N
-  double mirror = 0.0;          // mirror asymmetry (case 1), m
-  double max_up_velocity = 0.0; // largest upward velocity after the first contact, m/s
-  bool apart_at_end = false;
-  Vec2 vertex_end{};
-  double seconds = 0.0;
-};
-
-// Rows "case,time,block,vertex,x,y" of every block's polygon now.
-void write_snapshot(repro::CsvWriter& csv, const dda::Simulation& sim, double case_id) {
-  for (int i = 0; i < sim.block_count(); ++i) {
-    const dda::Polygon& p = sim.polygon(i);
-    for (int k = 0; k < p.count; ++k)
-      csv.row({case_id, sim.time(), static_cast<double>(i), static_cast<double>(k), p.vertex(k).x, p.vertex(k).y});
-  }
-}
-
-Result run(const dda::paper::SmallEdgeImpact& si, double case_id, repro::CsvWriter* traces,
-           repro::CsvWriter* snaps) {
-  const repro::Progress clock("run");
-  dda::Simulation sim(si.scene);
-  dda::paper::RunMonitor mon(sim, si.lower, si.upper);
-  Result r;
-  auto record = [&] {
-    if (!traces || sim.step_count() % 5 != 0) return;
-    const Vec2 v = sim.polygon(si.upper).vertex(si.contact_vertex);
-    const dda::Energy e = sim.energy();
-    traces->row({case_id, sim.time(), v.x, v.y, sim.centroid(si.upper).x, sim.centroid(si.upper).y, e.total(),
-                 dda::paper::overlap_thickness(sim.polygon(si.lower), sim.polygon(si.upper)),
-                 dda::paper::vertex_depth(sim.polygon(si.lower), sim.polygon(si.upper))});
-  };
-  if (snaps) write_snapshot(*snaps, sim, case_id);
-  record();
-  while (sim.time() < si.scene.duration - 0.5 * sim.dt()) {
-    sim.step();
-    mon.sample();
-    for (const dda::ContactInfo& c : sim.contacts()) {
-      const Vec2 f = c.cp == si.upper ? c.normal_force : -1.0 * c.normal_force;
-      r.min_push = std::min(r.min_push, f.y);
-      r.max_push = std::max(r.max_push, f.y);
-    }
-    if (mon.stats().first_contact >= 0.0) r.max_up_velocity = std::max(r.max_up_velocity, sim.velocity(si.upper)[1]);
-    if (si.mirror_symmetric) r.mirror = std::max(r.mirror, dda::paper::mirror_symmetry_error(sim, si.upper, 0.0));
-    record();
-  }
-  if (snaps) write_snapshot(*snaps, sim, case_id);
-  r.stats = mon.stats();
-  r.apart_at_end = sim.contacts().empty();
-  r.vertex_end = sim.polygon(si.upper).vertex(si.contact_vertex);
-  r.seconds = clock.elapsed_seconds();
-  return r;
-}
-
-void add_claims(std::vector<repro::Claim>& claims, const std::string& section, const std::string& name,
-                const Result& r, bool frictionless) {
-  // No flip-through: the normal force on the upper block never points down
-  // (into the lower block), the block moves up again after the impact, and
-  // the two are apart at 0.2 s.
-  const bool no_flip = r.stats.first_contact > 0.0 && r.min_push >= 0.0 && r.max_up_velocity > 0.0 && r.apart_at_end;
-  // Bounded energy: growth below 10 % of the largest mechanical energy (the
-  // solver's own guard stops at 50 %).
-  const bool bounded = r.stats.energy_growth < 0.1;
-  claims.push_back({section, name + ": the run stays sane (no flip-through, bounded energy)",
-                    "Fig. 18: 'the proposed approach can treat contacts of small edges with good robustness'",
-                    "contact " + format_short(r.stats.first_contact, 3) + " to " + format_short(r.stats.last_contact, 3) +
-                        " s; vertical contact force on the upper block in [" + format_short(r.min_push, 3) + ", " +
-                        format_short(r.max_push, 3) + "] N; largest upward speed after impact " +
-                        format_short(r.max_up_velocity, 3) + " m/s; apart at 0.2 s: " + (r.apart_at_end ? "yes" : "no") +
-                        "; energy growth " + format_short(r.stats.energy_growth, 3) + " of E_mech",
-                    "force never pulls down, block rebounds, apart at 0.2 s; energy growth < 10 %", no_flip && bounded});
-  if (frictionless)
-    claims.push_back({section, name + ": energy is conserved (frictionless, undamped)", "(robustness)",
-                      "max |E - E0| / E_mech = " + format_short(r.stats.energy_error, 3) +
-                          " (paper's segmentation and small-edge rule, the library defaults; 5.5 compares SPEC.md's "
-                          "replacing reading and the exact integration)",
-                      "< 1 %", r.stats.energy_error < 0.01});
-  claims.push_back({section, name + ": peak penetration", "'block penetrations around 0.01 m' (Sect. 5.3)",
-                    "overlap thickness " + format_short(r.stats.peak_thickness, 3) + " m; deepest vertex " +
-                        format_short(r.stats.peak_vertex_depth, 3) + " m",
-                    "information (< 0.05 m, a twentieth of the block)", r.stats.peak_vertex_depth < 0.05});
-}
-}  // namespace
+using repro::format_short;
+using small_edges::add_claims;
+using small_edges::Result;
+using small_edges::run;
 
 int main(int argc, char** argv) try {
   repro::check_command_line(argc, argv, "Paper A Sect. 5.3 (Figs. 17-18, geometry reconstructed): a polygon with small edges.");

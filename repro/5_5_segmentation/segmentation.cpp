@@ -265,7 +265,7 @@ int main(int argc, char** argv) try {
                           paper_rule + ": " + st.mode[0].describe() + ". " + replace_rule + ", same states: " +
                           (st.mode[1].same_as(st.mode[0]) ? std::string("the same errors, bit for bit")
                                                           : st.mode[1].describe()),
-                      "information (exact would be 0)", true});
+                      "information (exact would be 0)", false, repro::Kind::kMeasurement});
   }
   contacts.commit();
   summary.commit();
@@ -354,7 +354,7 @@ int main(int argc, char** argv) try {
                " % nonzero (max " + format_short(bn.small_paper.max_force, 3) + "), replacing reading " +
                format_short(bn.small_replace.nonzero_percent(), 3) + " % (max " +
                format_short(bn.small_replace.max_force, 3) + ")",
-           "information (exact would be 0)", true});
+           "information (exact would be 0)", false, repro::Kind::kMeasurement});
     }
     progress("fuzz: " + std::to_string(accepted) + " pairs in " + format_short(clock.elapsed_seconds(), 3) + " s");
   }
@@ -453,7 +453,7 @@ int main(int argc, char** argv) try {
                replace_rule + " " + format_short(worst[1], 3) + (identical ? " (the two readings' runs never differ)" : "") +
                (friction ? "; energy change (friction dissipates): paper's rule " : "; energy error: paper's rule ") +
                format_short(e0, 3) + ", replacing " + format_short(e1, 3) + ", exact " + format_short(e2, 3),
-           "information", true});
+           "information", false, repro::Kind::kMeasurement});
       progress(t.name + ": max difference " + format_short(worst[0], 3) + " (paper's rule) / " +
                format_short(worst[1], 3) + " (replacing), energy error " + format_short(e0, 3) + " / " +
                format_short(e1, 3) + " / exact " + format_short(e2, 3) + ", " + format_short(clock.elapsed_seconds(), 3) +

@@ -414,6 +414,10 @@ int main(int argc, char** argv) try {
                         format_short(c_whole.left.base_slip, 3) + " m (next row)",
                     "base slip with free joints > 2 x with locked joints",
                     left.base_slip > 2.0 * c_locked.left.base_slip});
+  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                      "the left slope slides on its base as much with locked joints: the slip is the start-up "
+                      "transient of suddenly applied gravity on the undamped stick spring and the re-stick ratchet "
+                      "of Eq. 26 (diagnosis row), not joint slip; the geometry is also reconstructed (Fig. 21 lost)");
   // The premise: one block per slope on the 30 deg base with 32 deg friction
   // is stable (tan 32 > tan 30). Stable: < 0.05 m of slip in 3.5 s (a block
   // that starts sliding at the 8 % friction margin's deficit would move
@@ -439,6 +443,11 @@ int main(int argc, char** argv) try {
                         format_short(c_whole.right.outward_rotation * deg, 3) + " deg)",
                     "|slip| < 0.05 m on both sides",
                     std::fabs(c_whole.left.base_slip) < 0.05 && std::fabs(c_whole.right.base_slip) < 0.05});
+  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                      "suddenly applied gravity on the undamped stick spring (kt = 1e8 N/m) reaches the friction "
+                      "limit moving, and the 8 % margin stops the wedge only after ~0.3 m (analytic, see the source); "
+                      "then each re-stick of Eq. 26 restarts the spring from zero shear and the wedge ratchets on; "
+                      "the return mapping (an option beyond the paper) stops the ratchet (diagnosis row)");
   // Diagnosis of the two rows above (not a paper claim): if the slip that
   // goes on after the start-up transient is the ratchet of Eq. 26's
   // re-stick (spring restarted from zero shear), the elastic-plastic update

@@ -210,6 +210,10 @@ int main(int argc, char** argv) {
                         "= 5e-4 s, 1/3 s lies in [0.3330, 0.3335]): NOT MATCHED, the paper's label looks one step off",
                     "touch step = [0.3335, 0.3340] s",
                     std::fabs(touch.step_start - 0.3335) < 1e-9 && std::fabs(touch.step_end - 0.3340) < 1e-9});
+  repro::explain_fail(claims.back(), repro::Cause::kMissingData,
+                      "the paper's printed step [0.3335, 0.3340] s does not contain its own printed touch time "
+                      "0.3333 s; with t0 = 0 and dt = 5e-4 s, 1/3 s lies in [0.3330, 0.3335] (analytic): the label "
+                      "is inconsistent with the paper's other data");
   claims.push_back(
       {"B-6", "the step containing the touch is split into dt1 + dt2 = dt", "Sect. 3 (Figs. 4-6)",
        "step [" + format_short(touch.step_start, 5) + ", " + format_short(touch.step_end, 5) +

@@ -752,7 +752,7 @@ int main(int argc, char** argv) {
     const CurveSummary cs = find("4.3 incline", "phi = 20 deg, paper", "trajectory (m)");
     claims.push_back({"S1 / 4.3", cs.scene + ", " + cs.option + ": trajectory error (stick/slip switching)",
                       "not discussed in the paper", order_text(cs) + "; " + at_paper(cs),
-                      "information: switching between stick and slip is not smooth", true});
+                      "information: switching between stick and slip is not smooth", false, repro::Kind::kMeasurement});
     const CurveSummary e = find("4.3 incline", "phi = 20 deg, paper", "Eq. 30");
     claims.push_back({"S1 / 4.3", "phi = 20 deg: error against Eq. 30 is the model's (penalty stick phase), not dt's",
                       "Fig. 12: good agreement",
@@ -811,7 +811,7 @@ int main(int argc, char** argv) {
     const CurveSummary ec = find("5.2 small-angle triangles", pu, "energy in contact");
     claims.push_back({"S1 / 5.2", ec.scene + ", " + ec.option + ": energy error in contact",
                       "not discussed in the paper", order_text(ec) + "; " + at_paper(ec),
-                      "information (deformable blocks: one-point loading of the strains)", true});
+                      "information (deformable blocks: one-point loading of the strains)", false, repro::Kind::kMeasurement});
   }
   for (const char* h : {"H unified", "H inscribed radius"}) {
     order_claim("S1 / 5.1", find("5.1 bouncing block", h, "trajectory, first impact (t <= 0.5 s) (m)"), 2.0, 0.3,
@@ -819,7 +819,7 @@ int main(int argc, char** argv) {
     const CurveSummary all = find("5.1 bouncing block", h, "trajectory, all impacts (1.5 s) (m)");
     claims.push_back({"S1 / 5.1", all.scene + ", " + all.option + ": trajectory over all impacts",
                       "no analytic answer (converged run)", order_text(all) + "; " + at_paper(all),
-                      "information: repeated impacts", true});
+                      "information: repeated impacts", false, repro::Kind::kMeasurement});
   }
   for (const char* o : {"paper segmentation", "exact integration"})
     order_claim("S1 / 5.3", find("5.3 small edge", o, "trajectory (m)"), 1.0, 0.3,
@@ -857,7 +857,7 @@ int main(int argc, char** argv) {
                         "max vertex distance between the two converged runs " + format_short(d, 3) +
                             " m; dt error of the paper segmentation at the paper's dt " +
                             format_short(dt_error, 3) + " m",
-                        "information: a model difference, not a dt error", true});
+                        "information: a model difference, not a dt error", false, repro::Kind::kMeasurement});
     }
   }
   repro::write_claims(repro::claims_path(out, "S1_work_precision"), claims);

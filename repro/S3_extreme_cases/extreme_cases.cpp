@@ -348,7 +348,7 @@ int main(int argc, char** argv) {
                               message.find("collapsed") != std::string::npos);
     claims.push_back({"S3 / guards", "a run at 3 x dt_crit stops with a message naming step, time, block, pair, "
                                      "what was exceeded and dt/dt_crit; the rows written before it are kept",
-                      "the user: fail loudly, never write NaN results as data",
+                      "not in the papers: fail loudly, never write NaN results as data",
                       (message.empty() ? std::string("no stop") : "message: " + message) + "; " +
                           std::to_string(series.rows()) + " finite rows kept",
                       "all six items in the message, >= 1 row kept", names_all && series.rows() >= 1});

@@ -192,6 +192,7 @@ int main(int argc, char** argv) {
                         "; negative control, the same criterion without the penetration guard: " +
                         std::to_string(through_off) + " cells passed through -> " + (pass_off ? "PASS" : "FAIL"),
                     "0 passed, 0 stuck; and FAIL on the unguarded runs", pass_on && !pass_off});
+  claims.back().control = "in the same run: the criterion on the unguarded runs must FAIL (make verdicts)";
   claims.push_back({sec, "the guard does not touch a bounce: every guarded bounce ends bit for bit as without it",
                     "the suite: a guard observes, it does not change the trajectory",
                     std::to_string(bounces_identical) + " of " + std::to_string(bounces) + " bounces identical",
@@ -205,7 +206,7 @@ int main(int argc, char** argv) {
                     std::to_string(false_stops) + " of " + std::to_string(stops) + " guard stops" +
                         (first_false.empty() ? "" : " (first: " + first_false + ")") + "; " +
                         std::to_string(other_stops) + " cells stopped by another guard",
-                    "measurement, no verdict", true});
+                    "measurement, no verdict", false, repro::Kind::kMeasurement});
   repro::write_claims(repro::claims_path(out, "S3_penetration_map"), claims);
   progress("done");
   return 0;

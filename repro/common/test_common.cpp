@@ -75,13 +75,43 @@ TEST_CASE("full-precision numbers read back exactly", "[csv]") {
     CHECK(std::strtod(repro::format_full(v).c_str(), nullptr) == v);
 }
 
-TEST_CASE("claims file has the report's columns and PASS/FAIL", "[claims]") {
+TEST_CASE("claims file has the report's columns, kinds, ids and causes", "[claims]") {
   const std::string out = scratch("o");
   const std::string path = repro::claims_path(out, "drv");
-  repro::write_claims(path, {{"4.1", "a, b", "x", "1", "<2", true}, {"4.1", "c", "\"q\"", "3", "<2", false}});
-  CHECK(slurp(path) ==
-        "section,claim,paper,measured,tolerance,status\n4.1,\"a, b\",x,1,<2,PASS\n4.1,c,\"\"\"q\"\"\",3,<2,FAIL\n");
+  repro::Claim fail{"4.1", "c", "\"q\"", "3", "<2", false};
+  repro::explain_fail(fail, repro::Cause::kMissingData, "geometry reconstructed");
+  repro::Claim pass{"4.1", "a, b", "x", "1", "<2", true};
+  pass.control = "ctl";
+  repro::explain_fail(pass, repro::Cause::kImplementation, "ignored: the check passes");
+  repro::write_claims(path, {pass, fail, repro::measurement("5.1", "H (m)", "-", "0.5", "information"),
+                             repro::measurement("5.1", "H (m)", "-", "0.6", "information")});
+  std::string text = slurp(path);
+  // The run time is the last column; drop its values before comparing.
+  std::string stripped;
+  for (std::size_t pos = 0; pos < text.size();) {
+    const std::size_t eol = text.find('\n', pos);
+    const std::string line = text.substr(pos, eol - pos);
+    stripped += pos == 0 ? line : line.substr(0, line.rfind(','));
+    stripped += '\n';
+    pos = eol + 1;
+  }
+  CHECK(stripped ==
+        "id,section,kind,claim,paper,measured,tolerance,status,cause,cause_text,control,run_time_s\n"
+        "4.1:a-b,4.1,check,\"a, b\",x,1,<2,PASS,,,ctl\n"
+        "4.1:c,4.1,check,c,\"\"\"q\"\"\",3,<2,FAIL,missing_data,geometry reconstructed,\n"
+        "5.1:h-m,5.1,measurement,H (m),-,0.5,information,,,,\n"
+        "5.1:h-m-2,5.1,measurement,H (m),-,0.6,information,,,,\n");
   fs::remove_all(fs::path(scratch("")));
+}
+
+TEST_CASE("claim ids: explicit key, or a bounded slug of the claim", "[claims]") {
+  repro::Claim c{"6.2", "The Left slope SLUMPS (phi = 30 deg)!", "", "", "", false};
+  CHECK(repro::claim_id(c) == "6.2:the-left-slope-slumps-phi-30-deg");
+  c.key = "slump";
+  CHECK(repro::claim_id(c) == "6.2:slump");
+  c.key.clear();
+  c.claim = std::string(200, 'x');
+  CHECK(repro::claim_id(c).size() < 100);
 }
 
 TEST_CASE("out_dir parses --out", "[cli]") {

@@ -1,0 +1,80 @@
+// Paper A Sect. 4.3: one sliding run and the Eq. 30 criterion, shared by the
+// driver (incline.cpp) and the negative controls (repro/common/test_controls.cpp).
+#pragma once
+#include <cmath>
+#include <string>
+
+#include "dda/paper_scenes.hpp"
+#include "dda/simulation.hpp"
+#include "repro/common/claims.hpp"
+#include "repro/common/csv.hpp"
+
+namespace incline {
+
+constexpr double kG = 9.81;
+constexpr double kPi = 3.14159265358979323846;
+// Tolerance 1 % of the distance: "good agreement" read as within the line
+// width of Fig. 12.
+constexpr double kTol = 0.01;
+constexpr int kRecordEvery = 500;  // steps between rows of sliding.csv
+
+struct Run {
+  double distance = 0.0;  // final sliding distance, m
+  double analytic = 0.0;  // Eq. 30 at the same time, m
+  double rel_error() const { return (distance - analytic) / analytic; }
+};
+
+// Runs one case with the friction update `update`; Eq. 30 is evaluated with
+// the friction angle `phi_deg` (the scene's own, except in a control);
+// appends (phi, time, l, l_analytic) rows to `csv` if given.
+inline Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg, dda::FrictionUpdate update) {
+  in.scene.contact.friction_update = update;
+  dda::Simulation sim(in.scene);
+  const dda::Vec2 c0 = sim.centroid(1);
+  const double phi = phi_deg * kPi / 180.0;
+  Run r;
+  while (sim.time() < in.scene.duration - 0.5 * sim.dt()) {
+    sim.step();
+    if (csv && sim.step_count() % kRecordEvery == 0) {
+      const double l = dot(sim.centroid(1) - c0, in.downhill);
+      csv->row({phi_deg, sim.time(), l, dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time())});
+    }
+  }
+  r.distance = dot(sim.centroid(1) - c0, in.downhill);
+  r.analytic = dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time());
+  return r;
+}
+
+// The Eq. 30 row of one paper case (friction angle phi_deg).
+inline repro::Claim eq30_row(double phi_deg, const Run& r) {
+  using repro::format_short;
+  repro::Claim c{"4.3", "sliding distance at t = 1 s follows Eq. 30, phi = " + format_short(phi_deg) + " deg",
+                 "Fig. 12: 'good agreements'",
+                 "l = " + format_short(r.distance, 5) + " m vs " + format_short(r.analytic, 5) + " m, rel. error " +
+                     format_short(r.rel_error(), 3),
+                 "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol};
+  c.control = phi_deg > 0.0 ? "repro_controls: 4.3 Eq. 30 with friction: FAIL with friction off"
+                            : "repro_controls: 4.3 Eq. 30 without friction: FAIL with friction on";
+  return c;
+}
+
+// A block on a slope gentler than its friction angle stays put (Sect. 4.3's
+// Coulomb law, Eq. 30 with tan(phi) > tan(theta)): it may only creep by the
+// elastic shear of its contact springs (m g sin(theta) / kt ~ 1 mm for the
+// paper's 1 m square and kt = 1e7 N/m); 1 cm in 1 s is ten times that.
+constexpr double kRestPhi = 35.0;        // deg: 5 deg above the 30 deg slope
+constexpr double kRestTolerance = 0.01;  // m
+inline const char* const kControlRest = "4.3 rest: FAIL with friction off";
+
+inline repro::Claim rest_row(const Run& r) {
+  using repro::format_short;
+  repro::Claim c{"4.3", "a block on a slope gentler than its friction angle stays put (phi = 35 deg on 30 deg)",
+                 "Sect. 4.3, Eq. 30: no sliding when tan(phi) > tan(theta)",
+                 "moved " + format_short(r.distance, 3) + " m down the slope in 1 s",
+                 "|l| < " + format_short(kRestTolerance) + " m", std::fabs(r.distance) < kRestTolerance};
+  c.key = "rest";
+  c.control = std::string("repro_controls: ") + kControlRest;
+  return c;
+}
+
+}  // namespace incline

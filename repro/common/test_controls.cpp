@@ -1,0 +1,206 @@
+// Negative controls of the claim rows (issue 21, item 2): every check that
+// names a control here ("repro_controls: <test name>") is run with the
+// driver's own criterion on a deliberately wrong configuration that the claim
+// depends on, and must come out FAIL. A criterion that passes anyway checks
+// nothing, and this test fails.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "dda/paper_scenes.hpp"
+#include "repro/4_1_two_squares/two_squares.hpp"
+#include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
+#include "repro/4_3_incline/incline.hpp"
+#include "repro/5_1_bouncing_block/bouncing_block.hpp"
+#include "repro/5_2_small_angles/small_angles.hpp"
+#include "repro/5_3_small_edges/small_edges.hpp"
+#include "repro/common/claims.hpp"
+
+namespace {
+
+// The row with key `key`; fails the test if there is none or it is not a check.
+const repro::Claim& row(const std::vector<repro::Claim>& rows, const std::string& key) {
+  for (const repro::Claim& c : rows)
+    if (c.key == key) {
+      REQUIRE(c.kind == repro::Kind::kCheck);
+      return c;
+    }
+  FAIL("no row with key " << key);
+  return rows.front();
+}
+
+// The control named in the row must be this test case (so that the report's
+// count of controlled checks names real tests).
+void names_control(const repro::Claim& c, const std::string& test) {
+  CHECK(c.control == "repro_controls: " + test);
+}
+
+}  // namespace
+
+// --- Sect. 4.1, two squares --------------------------------------------------
+TEST_CASE("4.1 velocity exchange: FAIL when B is twice as heavy", "[controls][4.1]") {
+  dda::Scene s = dda::paper::two_squares();
+  s.materials.push_back(s.materials[0]);
+  s.materials[1].density *= 2.0;  // unequal masses: velocities are not exchanged
+  s.blocks[1].material = 1;
+  const auto rows = two_squares::claims(two_squares::run(s, nullptr));
+  CHECK_FALSE(row(rows, two_squares::kKeyAStops).pass);
+  names_control(row(rows, two_squares::kKeyAStops), "4.1 velocity exchange: FAIL when B is twice as heavy");
+  CHECK_FALSE(row(rows, two_squares::kKeyBLeaves).pass);
+  names_control(row(rows, two_squares::kKeyBLeaves), "4.1 velocity exchange: FAIL when B is twice as heavy");
+}
+
+TEST_CASE("4.1 momentum: FAIL when B is fixed", "[controls][4.1]") {
+  dda::Scene s = dda::paper::two_squares();
+  s.blocks[1].fixed = true;  // a wall: A bounces back, momentum is not conserved
+  const auto rows = two_squares::claims(two_squares::run(s, nullptr));
+  CHECK_FALSE(row(rows, two_squares::kKeyMomentum).pass);
+  names_control(row(rows, two_squares::kKeyMomentum), "4.1 momentum: FAIL when B is fixed");
+}
+
+TEST_CASE("4.1 energy: FAIL with mass damping", "[controls][4.1]") {
+  dda::Scene s = dda::paper::two_squares();
+  s.damping.mass = 1.0;  // 1/s: A loses most of its kinetic energy within the 1 s run
+  const auto rows = two_squares::claims(two_squares::run(s, nullptr));
+  CHECK_FALSE(row(rows, two_squares::kKeyEnergy).pass);
+  names_control(row(rows, two_squares::kKeyEnergy), "4.1 energy: FAIL with mass damping");
+}
+
+// --- Sect. 4.2, symmetric stack --------------------------------------------------
+TEST_CASE("4.2 symmetry: FAIL when the impactor drifts sideways", "[controls][4.2]") {
+  dda::paper::SymmetricStack st = dda::paper::symmetric_stack();
+  // Symmetric at t = 0, but the impactor drifts sideways at 2.5 % of its
+  // 2 m/s fall: the asymmetry must come from the motion, not the start.
+  constexpr double kSideSpeed = 0.05;  // m/s
+  st.scene.blocks.back().velocity.x = kSideSpeed;
+  const repro::Claim c = symmetric_stack::row(symmetric_stack::run(st, nullptr, nullptr));
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == "repro_controls: 4.2 symmetry: FAIL when the impactor drifts sideways");
+}
+
+// --- Sect. 4.3, incline ----------------------------------------------------------
+TEST_CASE("4.3 Eq. 30 with friction: FAIL with friction off", "[controls][4.3]") {
+  for (double phi : {10.0, 20.0}) {
+    dda::paper::Incline in = dda::paper::incline(phi);
+    in.scene.contact.kt = 0.0;  // friction off: B slides as on a frictionless plane
+    const repro::Claim c = incline::eq30_row(phi, incline::run(in, nullptr, phi, dda::FrictionUpdate::kPaper));
+    CHECK_FALSE(c.pass);
+    CHECK(c.control == "repro_controls: 4.3 Eq. 30 with friction: FAIL with friction off");
+  }
+}
+
+TEST_CASE("4.3 Eq. 30 without friction: FAIL with friction on", "[controls][4.3]") {
+  // The phi = 0 row judged on a run with the 10 deg friction of the next case.
+  const repro::Claim c =
+      incline::eq30_row(0.0, incline::run(dda::paper::incline(10.0), nullptr, 0.0, dda::FrictionUpdate::kPaper));
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == "repro_controls: 4.3 Eq. 30 without friction: FAIL with friction on");
+}
+
+TEST_CASE("4.3 rest: FAIL with friction off", "[controls][4.3]") {
+  dda::paper::Incline in = dda::paper::incline(incline::kRestPhi);
+  in.scene.contact.kt = 0.0;  // friction off: the block slides down the 30 deg slope
+  const repro::Claim c =
+      incline::rest_row(incline::run(in, nullptr, incline::kRestPhi, dda::FrictionUpdate::kPaper));
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == std::string("repro_controls: ") + incline::kControlRest);
+}
+
+// --- Sect. 5.1, bouncing block ----------------------------------------------------
+TEST_CASE("5.1 H comparison: FAIL with the H rules swapped", "[controls][5.1]") {
+  // The wrong H rule: the runs judged as 'unified H' use the inscribed radius
+  // and the other way round.
+  using dda::HRule;
+  const double diff_inscribed = bouncing_block::max_difference(bouncing_block::run(0.1, HRule::kInscribedRadius, "c1"),
+                                                               bouncing_block::run(1.0, HRule::kInscribedRadius, "c2"));
+  const double diff_unified = bouncing_block::max_difference(bouncing_block::run(0.1, HRule::kMinMaxEdge, "c1"),
+                                                             bouncing_block::run(1.0, HRule::kMinMaxEdge, "c2"));
+  const repro::Claim swapped = bouncing_block::comparison_row(diff_inscribed, diff_unified);
+  CHECK_FALSE(swapped.pass);
+  CHECK(swapped.control == "repro_controls: 5.1 H comparison: FAIL with the H rules swapped");
+}
+
+TEST_CASE("5.1 sane run: FAIL with mass damping", "[controls][5.1]") {
+  // 1/s: A loses energy in its fall and bounce, so the undamped run's energy
+  // criterion must fail (the criterion also checks flip-through and symmetry).
+  const bouncing_block::Run r = bouncing_block::run(0.1, dda::HRule::kMinMaxEdge, "damped",
+                                                    [](dda::Scene& s) { s.damping.mass = 1.0; });
+  const repro::Claim c = bouncing_block::sane_row(r);
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == std::string("repro_controls: ") + bouncing_block::kControlSane);
+}
+
+// --- Sect. 5.2, small angles ------------------------------------------------------
+namespace {
+// The 5.2 rows for a modified scene (the run stands in for the apex-to-apex variant too).
+std::vector<repro::Claim> small_angle_rows(const dda::paper::SmallAngleTriangles& st) {
+  const small_angles::Result r = small_angles::run(st, nullptr, nullptr);
+  return small_angles::claims(r, r, "");
+}
+std::string control(const char* name) { return std::string("repro_controls: ") + name; }
+}  // namespace
+
+TEST_CASE("5.2 point symmetry: FAIL when one triangle is 1 % faster", "[controls][5.2]") {
+  dda::paper::SmallAngleTriangles st = dda::paper::small_angle_triangles(5.0);
+  st.scene.blocks[0].velocity = st.scene.blocks[0].velocity * 1.01;  // no longer point images in velocity
+  const repro::Claim c = row(small_angle_rows(st), "symmetry");
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == control(small_angles::kControlFaster));
+}
+
+TEST_CASE("5.2 contact: FAIL when the triangles move apart", "[controls][5.2]") {
+  dda::paper::SmallAngleTriangles st = dda::paper::small_angle_triangles(5.0);
+  for (dda::BlockSpec& b : st.scene.blocks) b.velocity = -1.0 * b.velocity;  // no collision at all
+  const repro::Claim c = row(small_angle_rows(st), "separate");
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == control(small_angles::kControlApart));
+}
+
+TEST_CASE("5.2 energy: FAIL with mass damping", "[controls][5.2]") {
+  dda::paper::SmallAngleTriangles st = dda::paper::small_angle_triangles(5.0);
+  st.scene.damping.mass = 1.0;  // 1/s: about a fifth of the energy lost over the 0.2 s run
+  const auto rows = small_angle_rows(st);
+  for (const char* key : {"energy", "apex-to-apex"}) {
+    CHECK_FALSE(row(rows, key).pass);
+    CHECK(row(rows, key).control == control(small_angles::kControlDamped));
+  }
+}
+
+// --- Sect. 5.3, small edges -------------------------------------------------------
+namespace {
+// The rows of case 1 (on the small edge) for a modified scene.
+std::vector<repro::Claim> small_edge_rows(const dda::paper::SmallEdgeImpact& si) {
+  std::vector<repro::Claim> rows;
+  small_edges::add_claims(rows, "5.3", "control", small_edges::run(si, 1, nullptr, nullptr), true);
+  REQUIRE(rows.size() == 3);  // sane, energy, penetration
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("5.3 sane: FAIL when kn is 1000 times too soft and the guards are off", "[controls][5.3]") {
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  si.scene.contact.kn *= 1e-3;              // too soft to stop the square: it passes into the hexagon
+  si.scene.guards.max_penetration = 0.0;    // the solver's guards would stop such a run first
+  si.scene.guards.max_approach_energy = 0.0;
+  const auto rows = small_edge_rows(si);
+  CHECK_FALSE(rows[0].pass);
+  CHECK(rows[0].control == std::string("repro_controls: ") + small_edges::kControlFlip);
+}
+
+TEST_CASE("5.3 penetration: FAIL when kn is 100 times too soft", "[controls][5.3]") {
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  si.scene.contact.kn *= 1e-2;  // the depth grows as 1/sqrt(kn): about 10 times the paper's
+  const auto rows = small_edge_rows(si);
+  CHECK_FALSE(rows[2].pass);
+  CHECK(rows[2].control == std::string("repro_controls: ") + small_edges::kControlSoft);
+}
+
+TEST_CASE("5.3 energy: FAIL with mass damping", "[controls][5.3]") {
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  si.scene.damping.mass = 1.0;  // 1/s: about a fifth of the energy lost over the 0.2 s run
+  const auto rows = small_edge_rows(si);
+  CHECK_FALSE(rows[1].pass);
+  CHECK(rows[1].control == std::string("repro_controls: ") + small_edges::kControlDamped);
+}

@@ -1,0 +1,110 @@
+"""Expected verdicts of every claim row: compare a run with the committed list, or rewrite it.
+
+usage: verdicts.py compare CLAIMS_DIR EXPECTED_CSV
+       verdicts.py write   CLAIMS_DIR EXPECTED_CSV
+
+CLAIMS_DIR holds the drivers' <driver>.csv files (repro/common/claims.hpp).
+EXPECTED_CSV (repro/expected_verdicts.csv) has one line per row:
+  driver,id,kind,verdict,cause
+with verdict PASS or FAIL for a check and "-" for a measurement, cause the
+FAIL's cause (empty for a PASS or a measurement).
+
+compare exits 1, listing the rows, when a row's kind, verdict or cause
+differs from the list, a listed row is missing, a row is new, an id repeats,
+or a failing check has no cause (issue 21: every FAIL is explained); it
+exits 0 otherwise. write replaces EXPECTED_CSV with the run's verdicts
+(make expected-verdicts); commit that change on its own, saying why.
+"""
+import csv
+import glob
+import os
+import sys
+
+FIELDS = ["driver", "id", "kind", "verdict", "cause"]
+CAUSES = ("paper_method", "missing_data", "implementation")
+
+
+def run_verdicts(claims_dir):
+    """{(driver, id): (kind, verdict, cause)} of a run, and the problems found."""
+    rows, problems = {}, []
+    files = sorted(glob.glob(os.path.join(claims_dir, "*.csv")))
+    if not files:
+        problems.append(f"no claim files in {claims_dir}")
+    for path in files:
+        driver = os.path.splitext(os.path.basename(path))[0]
+        with open(path, newline="", encoding="utf-8") as f:
+            for rec in csv.DictReader(f):
+                if any(rec.get(k) is None for k in ("id", "kind", "status", "cause")):
+                    problems.append(f"{driver}: a row lacks id/kind/status/cause (old claims format?)")
+                    break
+                key = (driver, rec["id"])
+                kind = rec["kind"]
+                verdict = rec["status"] if kind == "check" else "-"
+                cause = rec["cause"] if verdict == "FAIL" else ""
+                if key in rows:
+                    problems.append(f"{driver} {rec['id']}: id repeats")
+                if verdict == "FAIL" and cause not in CAUSES:
+                    problems.append(f"{driver} {rec['id']}: FAIL without a cause")
+                rows[key] = (kind, verdict, cause)
+    return rows, problems
+
+
+def read_expected(path):
+    with open(path, newline="", encoding="utf-8") as f:
+        return {(r["driver"], r["id"]): (r["kind"], r["verdict"], r["cause"]) for r in csv.DictReader(f)}
+
+
+def show(v):
+    return "absent" if v is None else (v[0] if v[1] == "-" else f"{v[1]}" + (f" ({v[2]})" if v[2] else ""))
+
+
+def compare(claims_dir, expected_path):
+    got, problems = run_verdicts(claims_dir)
+    want = read_expected(expected_path)
+    changed = []
+    for key in sorted(set(got) | set(want)):
+        g, w = got.get(key), want.get(key)
+        if g != w:
+            changed.append(f"  {key[0]} {key[1]}: expected {show(w)}, got {show(g)}")
+    checks = [v for v in got.values() if v[0] == "check"]
+    print(f"verdicts: {len(got)} rows from {claims_dir}: {len(checks)} checks "
+          f"({sum(v[1] == 'PASS' for v in checks)} PASS, {sum(v[1] == 'FAIL' for v in checks)} FAIL), "
+          f"{len(got) - len(checks)} measurements")
+    for p in problems:
+        print(f"verdicts: problem: {p}")
+    if changed:
+        print(f"verdicts: {len(changed)} row(s) differ from {expected_path}:")
+        print("\n".join(changed))
+        print("If a change is intended: make expected-verdicts, then commit "
+              f"{expected_path} on its own, saying why.")
+    if changed or problems:
+        return 1
+    print(f"verdicts: every row matches {expected_path}")
+    return 0
+
+
+def write(claims_dir, expected_path):
+    got, problems = run_verdicts(claims_dir)
+    for p in problems:
+        print(f"verdicts: problem: {p}")
+    if problems:
+        return 1
+    tmp = expected_path + ".tmp"
+    with open(tmp, "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(FIELDS)
+        for key in sorted(got):
+            w.writerow([key[0], key[1], *got[key]])
+    os.replace(tmp, expected_path)
+    print(f"verdicts: wrote {len(got)} rows to {expected_path}")
+    return 0
+
+
+def main(argv):
+    if len(argv) != 4 or argv[1] not in ("compare", "write"):
+        raise SystemExit(__doc__)
+    return (compare if argv[1] == "compare" else write)(argv[2], argv[3])
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
