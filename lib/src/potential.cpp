@@ -7,6 +7,22 @@
 
 namespace dda {
 
+namespace {
+
+// Smallest |determinant| of a triple of edge lines' system [n_x n_y 1]
+// (dimensionless; unit normals make it at most about 3): below it two of
+// the lines are parallel within ~1e-12 rad, far below the turns a block may
+// have (kCollinearSin = 1e-9), and the triple has no tangent circle.
+constexpr double kParallelLinesDet = 1e-12;
+
+// Smallest |cross product| of two unit bisector directions of a small
+// edge's end vertices (dimensionless, the sine of their angle): below it
+// they are parallel and meet nowhere (cannot happen for a convex block,
+// whose turns exceed kCollinearSin).
+constexpr double kParallelBisectorsSin = 1e-14;
+
+}  // namespace
+
 Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
   double d = DBL_MAX;
   int best = -1;
@@ -30,6 +46,7 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
   // (radius == exit_distance(centre)) and needs no feasibility tolerance.
   InscribedCircle best;
   const int n = poly.count;
+  if (n > 0) best.centre = poly.vertex(0);  // a point of the polygon, whatever follows
   if (n < 3) return best;
   const Vec2 o = poly.vertex(0);
   for (int i = 0; i < n; ++i)
@@ -39,7 +56,7 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
         const Vec2 ni = poly.normal(i), nj = poly.normal(j), nk = poly.normal(k);
         const double bi = dot(ni, poly.vertex(i) - o), bj = dot(nj, poly.vertex(j) - o), bk = dot(nk, poly.vertex(k) - o);
         const double det = ni.x * (nj.y - nk.y) - ni.y * (nj.x - nk.x) + (nj.x * nk.y - nj.y * nk.x);
-        if (std::fabs(det) < 1e-12) continue;  // two parallel lines met twice: no vertex
+        if (std::fabs(det) < kParallelLinesDet) continue;  // two parallel lines met twice: no vertex
         // Cramer's rule on [nx ny 1 | b].
         const double dx = bi * (nj.y - nk.y) - ni.y * (bj - bk) + (bj * nk.y - nj.y * bk);
         const double dy = ni.x * (bj - bk) - bi * (nj.x - nk.x) + (nj.x * bk - bj * nk.x);
@@ -49,6 +66,16 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
         const double r = exit_distance(poly, c);  // < dr / det if another edge is closer
         if (r > best.radius) best = {c, r};
       }
+  if (best.radius > 0.0) return best;
+  // No triple gave a centre with a positive exit distance: a polygon whose
+  // size is below the coordinate spacing at its offset (its normals and
+  // offsets are round-off), or not a valid block. Issue 26: this returned
+  // r = 0 at (0, 0), a point far from the polygon. Now: r = 0 at the
+  // vertex mean, a point of the polygon (inside it, up to round-off).
+  Vec2 mean{};
+  for (int i = 0; i < n; ++i) mean += poly.vertex(i);
+  best.centre = mean / static_cast<double>(n);
+  best.radius = 0.0;
   return best;
 }
 
@@ -76,7 +103,7 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
     const Vec2 pa = poly.vertex(a), pb = poly.vertex(b);
     const Vec2 da = vertex_dir(a), db = vertex_dir(b);
     const double den = cross(da, db);
-    if (std::fabs(den) < 1e-14) continue;  // parallel bisectors (cannot happen when convex)
+    if (std::fabs(den) < kParallelBisectorsSin) continue;  // parallel bisectors (cannot happen when convex)
     const double s = cross(pb - pa, db) / den;
     const Vec2 node = pa + s * da;
     if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced |= ab_bits;
