@@ -171,14 +171,15 @@ double draw_angle() {
 }
 
 // An offset coordinate for a polygon of size `size`: 0, of its size, up to
-// 1e6 absolute (the families before issue 26), or "far": 1e6 .. 1e9 times
-// its size (issue 26: offsets up to 1e9 relative to the block size).
+// 1e6 absolute (the families before issue 26; capped at 1e9 times the size
+// for tiny blocks), or "far": 1e6 .. 1e9 times its size (issue 26: offsets
+// up to 1e9 relative to the block size).
 double draw_offset_coordinate(double size) {
   const double sign = draw_chance(1, 2) ? 1.0 : -1.0;
   switch (draw_index(0, 4)) {
     case 0: return 0.0;
     case 1: return draw_uniform(-10.0, 10.0) * size;
-    case 2: return sign * draw_log(1.0, 1e6);
+    case 2: return sign * std::min(draw_log(1.0, 1e6), 1e9 * size);  // at most 1e9 times the size
     default: return sign * draw_log(1e6, 1e9) * size;
   }
 }

@@ -74,3 +74,20 @@ TEST_CASE("regression: IP vertices stay within kIpVertexReach tol of a sharp con
   for (Vec2 q : ip) CHECK(region_distance(q, b) <= dda::kIpVertexReach * tol);
   CHECK(check_intersection(a, b) == "");
 }
+
+// Found by property "exit distance and inscribed circle" with the tiny-block
+// family (issue 26; seed 20240611, after 660): a rectangle 1e-6 m long and
+// 1e-12 m wide at x = 8192, where the coordinate spacing is 1.8e-12 m. Every
+// triple's centre lies 5e-13 m from a short edge, rounds onto it, and has
+// exit distance 0: the radius came back 0 at (0, 0). Fixed in
+// lib/src/potential.cpp: the vertex mean (here on the plateau's middle line).
+TEST_CASE("regression: inscribed_circle of a rectangle below the coordinate spacing", "[regression]") {
+  const Points p = {{8192.0000000000127, -5.0000050000000038e-13}, {8192.0000010000131, -4.9999950000000041e-13},
+                    {8192.0000010000131, 5.0000050000000038e-13}, {8192.0000000000127, 4.9999950000000041e-13}};
+  REQUIRE(is_valid(p));
+  const dda::Polygon poly = to_polygon(p);
+  const dda::InscribedCircle ic = dda::inscribed_circle(poly);
+  CHECK(ic.radius > 0.0);
+  CHECK(dda::locate_point(poly, ic.centre, 0.0) == dda::PointLocation::kInside);
+  CHECK(check_exit(p, {}) == "");
+}

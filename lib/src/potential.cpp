@@ -67,15 +67,19 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
         if (r > best.radius) best = {c, r};
       }
   if (best.radius > 0.0) return best;
-  // No triple gave a centre with a positive exit distance: a polygon whose
-  // size is below the coordinate spacing at its offset (its normals and
-  // offsets are round-off), or not a valid block. Issue 26: this returned
-  // r = 0 at (0, 0), a point far from the polygon. Now: r = 0 at the
-  // vertex mean, a point of the polygon (inside it, up to round-off).
+  // No triple gave a centre with a positive exit distance: every candidate
+  // rounded onto (or past) an edge. Either the polygon is below the
+  // coordinate spacing at its offset, or the optimum is a plateau whose
+  // ends are not representable: a rectangle 1e-12 m wide at x = 8192
+  // (spacing 1.8e-12 m) has its tangent circles' centres 5e-13 m from the
+  // short edges. Issue 26: this returned r = 0 at (0, 0), a point far from
+  // the polygon. Now the vertex mean (a point of the polygon: on the
+  // plateau's middle line for the rectangle), with its exit distance when
+  // positive, else r = 0 there (the error callers test).
   Vec2 mean{};
   for (int i = 0; i < n; ++i) mean += poly.vertex(i);
   best.centre = mean / static_cast<double>(n);
-  best.radius = 0.0;
+  best.radius = std::max(0.0, exit_distance(poly, best.centre));
   return best;
 }
 
