@@ -160,6 +160,12 @@ double axis_distance(const Polygon& a, const Polygon& b, int axis) {
   return axis;
 }
 
+// Fraction of tol (dimensionless) by which a vertex of B must lie outside
+// an edge line of A for that line to count as cutting (see below): half of
+// the clipper's snapping tol, far above the few eps |x| by which the two
+// roundings of n . b - n . a differ, so a skipped line never cuts.
+constexpr double kCutMargin = 0.5;
+
 // The overlap test on E(A, B)'s edge lines (Table 2), shared by
 // overlap_state and overlap_and_intersection. a0 in E(A, B), evaluated on
 // E's edge lines without building E: every edge of E has the outward normal
@@ -212,7 +218,7 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
   }
   if (witness) *witness = -1;
   if (kCuts) {
-    const Lanes half_tol = {0.5 * tol, 0.5 * tol};
+    const Lanes half_tol = {kCutMargin * tol, kCutMargin * tol};
     std::uint64_t mask = 0;
     for (int k = 0; k < pa; ++k) mask |= std::uint64_t{lane_bits(hi_a[k] - ea.off[k] > half_tol)} << (2 * k);
     *cuts = static_cast<std::uint32_t>(mask & ((std::uint64_t{1} << na) - 1u));
@@ -273,8 +279,7 @@ inline void set_labelled_edge(int i, int l, const Polygon& contact, const Polygo
 
 // Cosine of the turn between consecutive edge normals above which a contact
 // corner gets a bevel (dimensionless): dot(n_prev, n) < -1/2, a turn of more
-// than 120 degrees, i.e. an interior angle theta below kBevelBelow = 60
-// degrees. Unbevelled corners (theta >= 60 deg) keep every IP vertex within
+// than 120 degrees, i.e. an interior angle theta below 60 degrees. Unbevelled corners (theta >= 60 deg) keep every IP vertex within
 // tol / sin(30 deg) = 2 tol of the contact (see clip_target); a wider
 // threshold would bevel the 60..90-degree corners of joint-set blocks on
 // every contact for no gain in the bound's order.
@@ -420,7 +425,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
   // with the two edge lines have interior angles (pi + theta) / 2 >= pi / 2.
   // Cutting by it (tol-snapped like every cut) bounds every vertex within
   // sqrt(2) tol of the contact near a bevelled corner and within tol /
-  // sin(kBevelBelow / 2) = 2 tol near the others, plus round-off: hence
+  // sin(30 deg) = 2 tol near the others, plus round-off: hence
   // kIpVertexReach. The target needs none: every vertex lies on the
   // target's ring (its vertices or convex combinations of them). A bevel
   // removes only what lies more than tol beyond the corner, so on ordinary

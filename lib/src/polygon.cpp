@@ -10,8 +10,9 @@ namespace dda {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-// Total turning of a simple convex polygon is 2*pi; a star that winds twice
-// turns 4*pi. Half a turn of slack separates the two cases robustly.
+// Slack on the total turning, rad: a simple convex polygon turns 2 pi, a
+// star that winds twice 4 pi (a bow tie 0); half a turn between the cases
+// is far above the round-off of the atan2 sum (a few eps per vertex).
 constexpr double kWindingSlack = kPi;
 }  // namespace
 
