@@ -60,7 +60,7 @@ TEST_CASE("regression: overlapping never comes with an empty intersection polygo
 // A vertex of IP(TP, CP) lay 12.5 tol from TP, the contact there: within
 // tol of both edge lines at TP's sharp corner, tol / sin(theta / 2) from
 // the corner. Fixed in lib/src/overlap.cpp (clip_target): the contact's
-// corners under 60 degrees are bevelled.
+// corners under 30 degrees are bevelled.
 TEST_CASE("regression: IP vertices stay within kIpVertexReach tol of a sharp contact corner", "[regression]") {
   const Points a = {{-13783.342628453845, -12128.338442188669}, {7178.4361848190274, 5705.2974118540869},
                     {-7176.436184819795, -5705.297411853122}};

@@ -51,12 +51,14 @@ inline bool overlaps(const Polygon& a, const Polygon& b) {
 // How far an intersection-polygon vertex may lie from either input polygon,
 // Euclidean, in units of the pair tolerance tol (dimensionless). Every IP
 // vertex is within tol of every edge line of both inputs; near a corner of
-// interior angle theta that allows tol / sin(theta / 2) from the polygon,
-// so the clipper bevels the contact's corners under 60 degrees (see
-// overlap.cpp, clip_target): then 2 tol at most (a 60-degree corner), plus
-// round-off (a few eps C, < tol / 16). Holds at any angle and offset
-// (checked against CGAL's exact kernel by property_tests, issue 26).
-inline constexpr double kIpVertexReach = 2.5;
+// interior angle theta that allows tol / sin(theta / 2) from the polygon
+// (1e6 tol at 1e-6 rad), so the clipper bevels the contact's corners under
+// 30 degrees (see overlap.cpp, clip_target): then tol / sin(15 deg) = 3.86
+// tol at most (a 30-degree corner), or 4.1 tol with the round-off of the
+// distances (a few eps C, < tol / 16) added to tol; 4.5 with margin. Holds
+// at any angle and offset (checked against CGAL's exact kernel by
+// property_tests, issue 26).
+inline constexpr double kIpVertexReach = 4.5;
 // Bound on the IP's area error, in units of (n + m) tol D (dimensionless;
 // see intersection_polygon): the boundary moves by at most tol per vertex
 // decision (snap, crossing, clean) along chords no longer than D.
