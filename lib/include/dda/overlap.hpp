@@ -79,8 +79,8 @@ inline constexpr double kIpAreaBound = 1.0;
 //    half-plane moved by 2 tol);
 //  - |area(IP) - area(contact and target)| <= kIpAreaBound (n + m) tol D
 //    (each vertex decision moves the boundary by <= tol along a chord <= D);
-//  - empty (count 0) when that shrunk intersection is empty may happen: a
-//    sliver thinner than ~tol has no IP (and overlap_state says touching).
+//  - empty (count 0) only if that shrunk intersection is empty: a sliver
+//    thinner than ~tol may have no IP (and overlap_state says touching).
 Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol = -1.0);
 // The same, into `out` (no 1 KB Polygon constructed: for the hot path).
 void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& out);
@@ -91,8 +91,9 @@ void intersection_polygon(const Polygon& contact, const Polygon& target, double 
 // edge is the source edge's normal. Like a Box2D feature id, it lets the
 // contact integration skip potentials that vanish by construction.
 // An edge left by merging two nearly collinear edges of different
-// polygons (or of two edges of one) has edge = -1: its source is not known
-// and its normal is computed from its end points.
+// polygons (or of two edges of one), or cut by a bevel at a sharp corner
+// of the contact (overlap.cpp, clip_target), has edge = -1: its source is
+// not known and its normal is computed from its end points.
 struct IpEdge {
   bool on_contact = false;  // true: an edge of the contact polygon; false: of the target
   int edge = -1;            // its index in that polygon; -1: not known
