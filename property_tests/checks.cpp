@@ -93,7 +93,27 @@ std::string check_overlap(const Points& a, const Points& b, std::string* contact
   if (std::isnan(t.sigma)) return "exact reference: area > 0 and 'origin inside B - A' disagree";
   const double band = tol::kVerdictBand * tol;
   const dda::OverlapState ab = dda::overlap_state(pa, pb), ba = dda::overlap_state(pb, pa);
+  // One verdict from one computation (issue 26): kOverlapping iff the
+  // intersection polygon is not empty, in either order.
+  for (int order = 0; order < 2; ++order) {
+    const Polygon& c = order == 0 ? pa : pb;
+    const Polygon& g = order == 0 ? pb : pa;
+    Polygon ip;
+    const dda::OverlapState s = dda::overlap_and_intersection(c, g, tol, ip, nullptr);
+    if ((s == dda::OverlapState::kOverlapping) != (ip.count >= 3))
+      return format("overlap_and_intersection(%s) = %s with an intersection polygon of %d vertices; exact: %s, area %.17g",
+                    order == 0 ? "A,B" : "B,A", name(s), ip.count, exact::name(t.contact), t.area);
+  }
   if (verdict_allowed(ab, t, band) && verdict_allowed(ba, t, band)) return "";
+  // An overlap deeper than the band may still be touching when the exact
+  // intersection is a sliver thinner than the clipper's resolution: its
+  // inner parallel region P_in(kSandwich tol) is empty, so the IP may be
+  // empty (check_clip_result) and the verdict follows the IP.
+  if (t.contact == exact::Contact::kOverlapping && ab != dda::OverlapState::kSeparate &&
+      ba != dda::OverlapState::kSeparate) {
+    const exact::Region r({b, a}, {}, tol::kSandwich * tol);
+    if (r.inner_empty()) return "";
+  }
   return format("overlap_state(A,B) = %s, (B,A) = %s; exact: %s, area %.17g, sigma %.17g (band %.3g), separation %.3g",
                 name(ab), name(ba), exact::name(t.contact), t.area, t.sigma, band, t.separation);
 }
@@ -194,8 +214,20 @@ std::string check_intersection(const Points& cp, const Points& tp) {
   const exact::Region r({tp, cp}, {}, tol::kSandwich * tol);
   // The IP lies in both inputs: its chords are no longer than the smaller diameter.
   const double diam = std::min(diameter_of(cp), diameter_of(tp));
-  const double area_tol = tol::kClipArea * static_cast<double>(cp.size() + tp.size()) * tol * diam;
+  const double area_tol = dda::kIpAreaBound * static_cast<double>(cp.size() + tp.size()) * tol * diam;
   std::string f = check_clip_result("IP(CP,TP)", k1, r, tol, area_tol);
+  // Every IP vertex within kIpVertexReach tol (Euclidean) of both inputs
+  // (overlap.hpp), whatever the angles: distances to edge lines (the
+  // sandwich above) allow tol / sin(theta / 2) at a corner of angle theta.
+  const double reach = dda::kIpVertexReach * tol + tol::kMeasureSlack * tol;
+  for (const Points* k : {&k1, &k2})
+    for (std::size_t i = 0; i < k->size() && f.empty(); ++i) {
+      const Vec2 q = (*k)[i];
+      const double dc = region_distance(q, cp), dt = region_distance(q, tp);
+      if (!(dc <= reach && dt <= reach))
+        f = format("IP(%s) vertex %zu %s is %.3g from CP and %.3g from TP (%.3g tol; bound %.3g tol)",
+                   k == &k1 ? "CP,TP" : "TP,CP", i, to_code(q).c_str(), dc, dt, std::max(dc, dt) / tol, reach / tol);
+    }
   if (f.empty()) f = check_clip_result("IP(TP,CP)", k2, r, tol, area_tol);
   if (f.empty()) f = check_fused(pc, pt, tol);
   if (f.empty()) f = check_fused(pt, pc, tol);
@@ -216,7 +248,7 @@ std::string check_motion(const Points& cp, const Points& tp, const Motion& m) {
   const Points mk = transformed(k, m);
   const exact::Region r({tp2, cp2}, {}, (tol::kSandwich + tol::kMotionRounding) * tol);
   const double diam = std::min(diameter_of(cp), diameter_of(tp));
-  const double area_tol = tol::kClipArea * static_cast<double>(cp.size() + tp.size()) * tol * diam;
+  const double area_tol = dda::kIpAreaBound * static_cast<double>(cp.size() + tp.size()) * tol * diam;
   const double a1 = k.empty() ? 0.0 : dda::area(to_polygon(k)), a2 = k2.empty() ? 0.0 : dda::area(to_polygon(k2));
   // Each of the two areas is within area_tol of the (nearly equal) exact areas.
   if (!(std::fabs(a1 - a2) <= 2.0 * area_tol))

@@ -123,6 +123,18 @@ Points cornercut_shape() {
   return p;
 }
 
+// A sharp corner: a needle (isosceles triangle) or a thin kite whose apex
+// angle is log-uniform in 1e-6 .. 0.3 rad (down to 1e-6 rad, far below the
+// 0.5-degree slivers above): where distances to edge lines and Euclidean
+// distances to the polygon differ by 1 / sin(theta / 2).
+Points needle_shape() {
+  const double theta = draw_log(1e-6, 0.3);
+  const double h = std::tan(0.5 * theta);
+  if (draw_chance(1, 2)) return {{-0.5, 0.0}, {0.5, -h}, {0.5, h}};
+  const double back = draw_uniform(0.5, 0.9);  // the kite's blunt back vertex, beyond the wide end
+  return {{-0.5, 0.0}, {0.4, -0.9 * h}, {0.4 + back * 0.1, 0.0}, {0.4, 0.9 * h}};
+}
+
 Points grid_shape() {
   const int k = draw_index(3, 9);
   Points pts;
@@ -131,7 +143,8 @@ Points grid_shape() {
 }
 
 Points base_shape(std::string& family) {
-  switch (draw_index(0, 14)) {
+  switch (draw_index(0, 16)) {
+    case 14: case 15: family = "needle"; return needle_shape();
     case 0: case 1: case 2: family = "hull"; return hull_shape();
     case 3: case 4: case 5: family = "regular"; return regular_shape(draw_index(3, 9));
     case 6: case 7: family = "sliver"; return sliver_shape();
@@ -157,11 +170,28 @@ double draw_angle() {
   }
 }
 
+// An offset coordinate for a polygon of size `size`: 0, of its size, up to
+// 1e6 absolute (the families before issue 26; capped at 1e9 times the size
+// for tiny blocks), or "far": 1e6 .. 1e9 times its size (issue 26: offsets
+// up to 1e9 relative to the block size).
 double draw_offset_coordinate(double size) {
-  switch (draw_index(0, 3)) {
+  const double sign = draw_chance(1, 2) ? 1.0 : -1.0;
+  switch (draw_index(0, 4)) {
     case 0: return 0.0;
     case 1: return draw_uniform(-10.0, 10.0) * size;
-    default: return (draw_chance(1, 2) ? 1.0 : -1.0) * draw_log(1.0, 1e6);
+    case 2: return sign * std::min(draw_log(1.0, 1e6), 1e9 * size);  // at most 1e9 times the size
+    default: return sign * draw_log(1e6, 1e9) * size;
+  }
+}
+
+// A scale: 1, 0.1 .. 10, or (issue 26) tiny (1e-6 .. 1e-4) or huge
+// (1e4 .. 1e6) blocks.
+double draw_scale(std::string& family) {
+  switch (draw_index(0, 6)) {
+    case 0: case 1: return 1.0;
+    case 2: case 3: return draw_log(0.1, 10.0);
+    case 4: family += " scale=tiny"; return draw_log(1e-6, 1e-4);
+    default: family += " scale=huge"; return draw_log(1e4, 1e6);
   }
 }
 
@@ -176,7 +206,7 @@ Similarity draw_similarity(std::string& family) {
     return s;
   }
   family += " world=similar";
-  s.scale = draw_chance(1, 3) ? 1.0 : draw_log(0.1, 10.0);
+  s.scale = draw_scale(family);
   s.angle = draw_angle();
   s.offset = {draw_offset_coordinate(s.scale), draw_offset_coordinate(s.scale)};
   return s;
@@ -191,11 +221,15 @@ Points apply_similarity(const Similarity& s, const Points& p) {
 // ---- pair families --------------------------------------------------------
 
 // A gap along a contact normal: 0 (exact contact) or +-1e-16 .. 1e-2 of size.
+// A gap along a contact normal: 0 (exact contact), +-1e-16 .. 1e-2 of size,
+// or a deep penetration of 1e-2 .. 0.5 of size (a needle's tip deep in the
+// other block: issue 26's wedge against a square).
 double draw_gap(double size, std::string& family) {
-  switch (draw_index(0, 5)) {
+  switch (draw_index(0, 6)) {
     case 0: case 1: case 2: family += " gap=0"; return 0.0;
     case 3: family += " gap>0"; return draw_log(1e-16, 1e-2) * size;
-    default: family += " gap<0"; return -draw_log(1e-16, 1e-2) * size;
+    case 4: family += " gap<0"; return -draw_log(1e-16, 1e-2) * size;
+    default: family += " gap<<0"; return -draw_log(1e-2, 0.5) * size;
   }
 }
 
@@ -313,6 +347,49 @@ PairCase edge_edge(Points a, std::string family) {
   return {a, b, "edge-edge " + family};
 }
 
+// Edges crossing at a small angle (issue 26): B's edge laid along A's edge
+// i (B outside it), then turned by +-1e-6 .. 2e-2 rad about a point of that
+// edge (or of the edge moved by a gap, for near-parallel edges that cross
+// or just miss): a sliver of overlap on one side of the crossing.
+PairCase crossing(Points a, std::string family) {
+  const std::size_t n = a.size(), i = static_cast<std::size_t>(draw_index(0, static_cast<int>(n)));
+  const Vec2 u = edge_normal(a, i);
+  const Points b = partner_shape(diameter_of(a), family);
+  const Vec2 on = dda::lerp(a[i], a[(i + 1) % n], draw_uniform(0.0, 1.0));
+  // B's edge j turned onto A's edge line, its start vertex at `on`.
+  const std::size_t j = static_cast<std::size_t>(draw_index(0, static_cast<int>(b.size())));
+  const Vec2 eb = b[(j + 1) % b.size()] - b[j];
+  const Vec2 ea = a[i] - a[(i + 1) % n];  // B's edge runs against A's (B lies outside edge i)
+  const double align = std::atan2(dda::cross(eb, ea), dda::dot(eb, ea));
+  Points placed = similar(b, 1.0, align, b[j]);
+  placed = moved(placed, on - placed[j]);
+  placed[j] = on;
+  const double g = draw_chance(1, 2) ? 0.0 : (draw_chance(1, 2) ? 1.0 : -1.0) * draw_log(1e-16, 1e-3) * diameter_of(a);
+  const Vec2 pivot = dda::lerp(a[i], a[(i + 1) % n], draw_uniform(-0.5, 1.5));
+  const double angle = (draw_chance(1, 2) ? 1.0 : -1.0) * draw_log(1e-6, 2e-2);
+  family += g == 0.0 ? " gap=0" : " gap!=0";
+  return {a, moved(similar(placed, 1.0, angle, pivot), g * u), "crossing " + family};
+}
+
+// A shared vertex with collinear edges (issue 26): B's edge k starts at A's
+// vertex i (bit for bit) and runs along A's edge i, in the same sense (both
+// interiors on the same side: an overlap along a collinear edge) or, turned
+// by pi, along the extension of A's edge i - 1 ... edge i (B beside A).
+PairCase shared_vertex(Points a, std::string family) {
+  const std::size_t n = a.size(), i = static_cast<std::size_t>(draw_index(0, static_cast<int>(n)));
+  const Points b = partner_shape(diameter_of(a), family);
+  const std::size_t k = static_cast<std::size_t>(draw_index(0, static_cast<int>(b.size())));
+  const bool same = draw_chance(1, 2);
+  const Vec2 ea = same ? a[(i + 1) % n] - a[i] : a[i] - a[(i + 1) % n];
+  const Vec2 eb = b[(k + 1) % b.size()] - b[k];
+  const double align = std::atan2(dda::cross(eb, ea), dda::dot(eb, ea));
+  Points placed = similar(b, 1.0, align, b[k]);
+  placed = moved(placed, a[i] - placed[k]);
+  placed[k] = a[i];
+  family += same ? " sense=same" : " sense=opposite";
+  return {a, placed, "shared-vertex " + family};
+}
+
 PairCase contained(Points a, std::string family) {
   Vec2 c;
   switch (draw_index(0, 3)) {
@@ -384,7 +461,9 @@ rc::Gen<PairCase> polygon_pair() {
     std::string fa;
     Points a = base_shape(fa);
     PairCase pc;
-    switch (draw_index(0, 19)) {
+    switch (draw_index(0, 23)) {
+      case 19: case 20: pc = crossing(a, fa); break;
+      case 21: case 22: pc = shared_vertex(a, fa); break;
       case 0: case 1: case 2: pc = independent_pair(a, fa); break;
       case 3: pc = {a, a, "identical " + fa}; break;
       case 4: case 5: pc = rotated_copy(a, fa); break;

@@ -56,7 +56,9 @@ inline constexpr double kSandwich = 2.0;
 // Extra sandwich width for a rigidly moved input, x tol: the moved vertices
 // and the moved result are rounded once more (a few eps C << tol).
 inline constexpr double kMotionRounding = 1.0;
-// Area of a clipping result, x (vertex count n + m) x tol x diameter [area]:
+// Area of a split_polygon part, x (vertex count n + 2) x tol x diameter
+// [area] (the intersection polygon's bound is the kernel's own promise,
+// dda::kIpAreaBound in overlap.hpp, of the same form):
 // each vertex decision (snap, crossing, clean) moves the boundary by <= tol
 // along a chord no longer than the diameter.
 inline constexpr double kClipArea = 1.0;

@@ -10,8 +10,9 @@ namespace dda {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-// Total turning of a simple convex polygon is 2*pi; a star that winds twice
-// turns 4*pi. Half a turn of slack separates the two cases robustly.
+// Slack on the total turning, rad: a simple convex polygon turns 2 pi, a
+// star that winds twice 4 pi (a bow tie 0); half a turn between the cases
+// is far above the round-off of the atan2 sum (a few eps per vertex).
 constexpr double kWindingSlack = kPi;
 }  // namespace
 
@@ -69,12 +70,14 @@ const char* describe(PolygonFault fault) {
   switch (fault) {
     case PolygonFault::kNone: return "valid";
     case PolygonFault::kTooFewVertices: return "fewer than 3 vertices";
-    case PolygonFault::kTooManyVertices: return "more than 16 vertices";
+    case PolygonFault::kTooManyVertices:
+      return "more than 16 vertices (the block limit kMaxBlockVertices: two blocks' intersection must fit 32)";
     case PolygonFault::kNonFinite: return "non-finite coordinate (NaN or infinity)";
     case PolygonFault::kDuplicateVertex: return "duplicate vertex (zero-length edge)";
     case PolygonFault::kCollinear: return "three collinear vertices";
     case PolygonFault::kClockwise: return "clockwise vertex order (counter-clockwise required)";
-    case PolygonFault::kNonConvex: return "polygon is not convex";
+    case PolygonFault::kNonConvex: return "polygon is not convex (or its edges cross)";
+    case PolygonFault::kOverflow: return "coordinate too large (|x| or |y| above 1e75 m: the area moments overflow)";
   }
   return "unknown fault";
 }
@@ -84,6 +87,8 @@ PolygonCheck validate_polygon(const Vec2* p, int count) {
   if (count > kMaxBlockVertices) return {PolygonFault::kTooManyVertices, -1};
   for (int i = 0; i < count; ++i)
     if (!is_finite(p[i])) return {PolygonFault::kNonFinite, i};
+  for (int i = 0; i < count; ++i)
+    if (!(std::fabs(p[i].x) <= kMaxCoordinate && std::fabs(p[i].y) <= kMaxCoordinate)) return {PolygonFault::kOverflow, i};
 
   double diam = 0.0;
   for (int i = 0; i < count; ++i)
@@ -112,12 +117,17 @@ PolygonCheck validate_polygon(const Vec2* p, int count) {
       first_straight = i;
     }
   }
-  if (first_left < 0 && first_right >= 0 && first_straight < 0) return {PolygonFault::kClockwise, first_right};
-  if (first_left >= 0 && first_right >= 0) {
-    // Mostly right turns: report the clockwise order; else the concave vertex.
-    if (turning < 0.0) return {PolygonFault::kClockwise, first_left};
-    return {PolygonFault::kNonConvex, first_right};
+  // Clockwise only when every turn is to the right and the ring winds once
+  // (a convex polygon listed backwards: reversing it fixes it). Turns both
+  // ways are non-convex whatever the total turning: a bow tie (edges that
+  // cross) turns right, right, left, left... and totals 0, and a concave
+  // polygon in clockwise order is no better when reversed (issue 26: a bow
+  // tie was labelled clockwise).
+  if (first_left < 0 && first_right >= 0 && first_straight < 0) {
+    if (turning < -2.0 * kPi - kWindingSlack) return {PolygonFault::kNonConvex, 0};  // winds twice, clockwise
+    return {PolygonFault::kClockwise, first_right};
   }
+  if (first_left >= 0 && first_right >= 0) return {PolygonFault::kNonConvex, turning < 0.0 ? first_left : first_right};
   if (first_straight >= 0) return {PolygonFault::kCollinear, first_straight};
   if (turning > 2.0 * kPi + kWindingSlack) return {PolygonFault::kNonConvex, 0};
   return {};

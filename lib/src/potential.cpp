@@ -7,6 +7,22 @@
 
 namespace dda {
 
+namespace {
+
+// Smallest |determinant| of a triple of edge lines' system [n_x n_y 1]
+// (dimensionless; unit normals make it at most about 3): below it two of
+// the lines are parallel within ~1e-12 rad, far below the turns a block may
+// have (kCollinearSin = 1e-9), and the triple has no tangent circle.
+constexpr double kParallelLinesDet = 1e-12;
+
+// Smallest |cross product| of two unit bisector directions of a small
+// edge's end vertices (dimensionless, the sine of their angle): below it
+// they are parallel and meet nowhere (cannot happen for a convex block,
+// whose turns exceed kCollinearSin).
+constexpr double kParallelBisectorsSin = 1e-14;
+
+}  // namespace
+
 Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
   double d = DBL_MAX;
   int best = -1;
@@ -30,6 +46,7 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
   // (radius == exit_distance(centre)) and needs no feasibility tolerance.
   InscribedCircle best;
   const int n = poly.count;
+  if (n > 0) best.centre = poly.vertex(0);  // a point of the polygon, whatever follows
   if (n < 3) return best;
   const Vec2 o = poly.vertex(0);
   for (int i = 0; i < n; ++i)
@@ -39,7 +56,7 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
         const Vec2 ni = poly.normal(i), nj = poly.normal(j), nk = poly.normal(k);
         const double bi = dot(ni, poly.vertex(i) - o), bj = dot(nj, poly.vertex(j) - o), bk = dot(nk, poly.vertex(k) - o);
         const double det = ni.x * (nj.y - nk.y) - ni.y * (nj.x - nk.x) + (nj.x * nk.y - nj.y * nk.x);
-        if (std::fabs(det) < 1e-12) continue;  // two parallel lines met twice: no vertex
+        if (std::fabs(det) < kParallelLinesDet) continue;  // two parallel lines met twice: no vertex
         // Cramer's rule on [nx ny 1 | b].
         const double dx = bi * (nj.y - nk.y) - ni.y * (bj - bk) + (bj * nk.y - nj.y * bk);
         const double dy = ni.x * (bj - bk) - bi * (nj.x - nk.x) + (nj.x * bk - bj * nk.x);
@@ -49,6 +66,20 @@ InscribedCircle inscribed_circle(const Polygon& poly) {
         const double r = exit_distance(poly, c);  // < dr / det if another edge is closer
         if (r > best.radius) best = {c, r};
       }
+  if (best.radius > 0.0) return best;
+  // No triple gave a centre with a positive exit distance: every candidate
+  // rounded onto (or past) an edge. Either the polygon is below the
+  // coordinate spacing at its offset, or the optimum is a plateau whose
+  // ends are not representable: a rectangle 1e-12 m wide at x = 8192
+  // (spacing 1.8e-12 m) has its tangent circles' centres 5e-13 m from the
+  // short edges. Issue 26: this returned r = 0 at (0, 0), a point far from
+  // the polygon. Now the vertex mean (a point of the polygon: on the
+  // plateau's middle line for the rectangle), with its exit distance when
+  // positive, else r = 0 there (the error callers test).
+  Vec2 mean{};
+  for (int i = 0; i < n; ++i) mean += poly.vertex(i);
+  best.centre = mean / static_cast<double>(n);
+  best.radius = std::max(0.0, exit_distance(poly, best.centre));
   return best;
 }
 
@@ -76,7 +107,7 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
     const Vec2 pa = poly.vertex(a), pb = poly.vertex(b);
     const Vec2 da = vertex_dir(a), db = vertex_dir(b);
     const double den = cross(da, db);
-    if (std::fabs(den) < 1e-14) continue;  // parallel bisectors (cannot happen when convex)
+    if (std::fabs(den) < kParallelBisectorsSin) continue;  // parallel bisectors (cannot happen when convex)
     const double s = cross(pb - pa, db) / den;
     const Vec2 node = pa + s * da;
     if (mode == SmallEdgeRays::kVirtualReplacesVertex) replaced |= ab_bits;

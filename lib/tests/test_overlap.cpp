@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "dda/overlap.hpp"
@@ -49,4 +51,72 @@ TEST_CASE("intersection polygon of overlapping rectangles", "[overlap]") {
   CHECK(ip3.count == 4);
   CHECK(min_edge_length(ip3) > 0.1);
   CHECK(intersection_polygon(a, rect(1, 0, 1, 1)).count == 0);
+}
+
+namespace {
+// Distance from q to the convex polygon p (0 inside): to its nearest edge.
+double distance_to(const Polygon& p, Vec2 q) {
+  if (locate_point(p, q, 0.0) != PointLocation::kOutside) return 0.0;
+  double d = DBL_MAX;
+  for (int i = 0; i < p.count; ++i) {
+    const Vec2 a = p.vertex(i), e = p.edge(i);
+    const double t = std::clamp(dot(q - a, e) / dot(e, e), 0.0, 1.0);
+    d = std::min(d, distance(q, a + t * e));
+  }
+  return d;
+}
+}  // namespace
+
+// Issue 26: a needle (corner of theta = 1e-4 rad) as the contact, its tip
+// inside a diamond whose corner lies d = 0.4 tol / sin(theta / 2) (~8000
+// tol) beyond the tip on the needle's axis: within 0.4 tol of both of the
+// needle's edge lines, so the clipper kept that corner as an IP vertex,
+// 8000 tol from the needle. The bevel at the needle's tip cuts it: every IP
+// vertex is within kIpVertexReach tol of both inputs.
+TEST_CASE("IP vertices stay near a needle's tip (bevel)", "[overlap]") {
+  const double theta = 1e-4, h = std::tan(theta / 2);
+  const Vec2 needle_v[3] = {{0, 0}, {1, -h}, {1, h}};
+  const Polygon needle = make_polygon(needle_v, 3);
+  auto diamond = [](double d) {
+    const Vec2 v[4] = {{-d, 0}, {-d + 1, -1}, {-d + 2, 0}, {-d + 1, 1}};
+    return make_polygon(v, 4);
+  };
+  const double d = 0.4 * pair_tolerance(needle, diamond(0.0)) / std::sin(theta / 2);
+  const Polygon target = diamond(d);
+  const double tol = pair_tolerance(needle, target);  // within a few ulps of the first
+  // Negative control: the diamond's corner is within tol of both needle lines, far from the needle.
+  CHECK(std::fabs(dot(needle.normal(0), target.vertex(0) - needle.vertex(0))) < tol);
+  CHECK(std::fabs(dot(needle.normal(2), target.vertex(0) - needle.vertex(2))) < tol);
+  CHECK(distance_to(needle, target.vertex(0)) > 1000.0 * tol);
+  Polygon ip;
+  REQUIRE(overlap_and_intersection(needle, target, tol, ip, nullptr) == OverlapState::kOverlapping);
+  REQUIRE(ip.count >= 3);
+  for (int i = 0; i < ip.count; ++i) {
+    CHECK(distance_to(needle, ip.vertex(i)) <= kIpVertexReach * tol);
+    CHECK(distance_to(target, ip.vertex(i)) <= kIpVertexReach * tol);
+  }
+  CHECK(area(ip) == Approx(0.5 * 2 * h).epsilon(1e-6));  // the whole needle is inside the diamond
+}
+
+// Issue 26: a needle (1e-6 rad) with its tip 0.5 deep in a square, both at
+// an offset of 1e9. Along every axis the overlap is far deeper than tol
+// (1.4e-5), but the exact intersection is a sliver at most 5e-7 wide: the
+// clipper leaves no polygon. The verdict was kOverlapping with an empty IP;
+// it is now kTouching (no IP, no force), from the same computation.
+TEST_CASE("a sliver thinner than tol is touching, never overlapping without an IP", "[overlap]") {
+  const double theta = 1e-6, h = std::tan(theta / 2), c = 1e9;
+  const Vec2 needle_v[3] = {{c - 0.5, c + 0.5}, {c + 0.5, c + 0.5 - h}, {c + 0.5, c + 0.5 + h}};
+  const Polygon needle = make_polygon(needle_v, 3);
+  const Polygon square = rect(c - 1.0, c, 1.0, 1.0);
+  const double tol = pair_tolerance(needle, square);
+  for (int order = 0; order < 2; ++order) {
+    const Polygon& cp = order == 0 ? needle : square;
+    const Polygon& tp = order == 0 ? square : needle;
+    Polygon ip;
+    const OverlapState s = overlap_and_intersection(cp, tp, tol, ip, nullptr);
+    CHECK(s != OverlapState::kSeparate);
+    CHECK((s == OverlapState::kOverlapping) == (ip.count >= 3));
+    CHECK(overlap_state(cp, tp, tol) == s);
+    CHECK(intersection_polygon(cp, tp, tol).count == ip.count);
+  }
 }

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "dda/joint_sets.hpp"
 #include "dda/polygon.hpp"
+#include "dda/rock_scenes.hpp"
 
 using namespace dda;
 
@@ -168,4 +171,80 @@ TEST_CASE("the one-pass geometry matches normals, moments, bounds and edges one 
       CHECK(x.hi == box.hi);
     }
   }
+}
+
+// Issue 26: a self-intersecting quadrilateral turns both ways with a total
+// turning of 0; when the right turns outweighed (three right, one left) it
+// was labelled clockwise, which reversing cannot fix. (Of 100,000 random
+// crossed quadrilaterals in [-1, 1]^2, 26,082 were "clockwise" before the
+// fix, this one the first; 0 after.)
+TEST_CASE("a bow tie is non-convex, not clockwise", "[polygon]") {
+  const std::vector<Vec2> bow = {{0.13969429740419326, 0.27046243662747216},
+                                 {-0.82109361271069092, 0.11235779824475989},
+                                 {0.57930393901296728, -0.55673265201320743},
+                                 {-0.16266294128208603, -0.50044415316658108}};
+  CHECK(fault_of(bow) == PolygonFault::kNonConvex);
+  CHECK(fault_of({bow[3], bow[2], bow[1], bow[0]}) == PolygonFault::kNonConvex);
+  CHECK(fault_of({{0, 0}, {1, 1}, {1, 0}, {0, 1}}) == PolygonFault::kNonConvex);
+  CHECK(fault_of({{0, 0}, {1, 0}, {0, 1}, {1, 1}}) == PolygonFault::kNonConvex);
+  CHECK(fault_of({{0, 0}, {2, 1}, {2, 0}, {0, 1}}) == PolygonFault::kNonConvex);
+  // Negative control: the same square in clockwise order is clockwise.
+  CHECK(fault_of({{0, 0}, {0, 1}, {1, 1}, {1, 0}}) == PolygonFault::kClockwise);
+  // A concave polygon listed clockwise is non-convex too (reversing it does not help).
+  CHECK(fault_of({{0, 2}, {2, 2}, {2, 0}, {1, 0.5}, {0, 0}}) == PolygonFault::kNonConvex);
+}
+
+// Issue 26: coordinates of 1e308 were "duplicate vertex (zero-length edge)"
+// (the edge lengths overflow to infinity); they have their own reason.
+TEST_CASE("coordinates whose area moments overflow are kOverflow", "[polygon]") {
+  CHECK(fault_of({{0, 0}, {1e308, 0}, {0, 1e308}}) == PolygonFault::kOverflow);
+  CHECK(fault_of({{-1e300, 0}, {1e300, 0}, {0, 1e300}}) == PolygonFault::kOverflow);
+  CHECK(validate_polygon(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 2e75}}.data(), 3).vertex == 2);
+  CHECK(std::string(describe(PolygonFault::kOverflow)).find("1e75") != std::string::npos);
+  // At the limit: valid, and its second moments are finite.
+  const std::vector<Vec2> big = {{-kMaxCoordinate, -kMaxCoordinate}, {kMaxCoordinate, -kMaxCoordinate}, {0, kMaxCoordinate}};
+  REQUIRE(fault_of(big) == PolygonFault::kNone);
+  const AreaMoments m = area_moments(make_polygon(big.data(), 3));
+  CHECK(std::isfinite(m.sxx));
+  CHECK(std::isfinite(m.syy));
+  CHECK(m.area > 0.0);
+}
+
+// Issue 26: the header said 'diameter' where the code uses the bounding
+// box's larger side; they now agree (the box side).
+TEST_CASE("geometric_tolerance scales with the bounding box side", "[polygon]") {
+  // A right triangle with legs 1: diameter sqrt(2), box side 1.
+  const Vec2 t[3] = {{0, 0}, {1, 0}, {0, 1}};
+  const Polygon p = make_polygon(t, 3);
+  CHECK(geometric_tolerance(p) == kRoundoffUlps * DBL_EPSILON * (1.0 + 1.0));
+  CHECK(geometric_tolerance(p) != kRoundoffUlps * DBL_EPSILON * (1.0 + diameter(p)));
+}
+
+// Issue 26: blocks are limited to kMaxBlockVertices = 16. A block cut from a
+// convex region of r edges by k joint sets has at most r + 2 k edges; no
+// generated scene comes near the limit, and a piece that would exceed it is
+// refused by generate_blocks. The error for a scene file's block says why.
+TEST_CASE("generated blocks fit kMaxBlockVertices", "[polygon]") {
+  int most = 0;
+  const paper::Collapse c = paper::collapse(30.0);
+  for (const BlockSpec& b : c.scene.blocks) most = std::max(most, static_cast<int>(b.vertices.size()));
+  const paper::TopplingSlumping ts = paper::toppling_slumping();
+  for (const BlockSpec& b : ts.scene.blocks) most = std::max(most, static_cast<int>(b.vertices.size()));
+  CHECK(most >= 3);
+  CHECK(most <= kMaxBlockVertices);
+  // Regions of up to 10 edges cut by up to 3 joint sets (r + 2 k <= 16).
+  for (int r = 3; r <= 10; ++r)
+    for (int k = 1; k <= 3; ++k) {
+      std::vector<Vec2> region;
+      for (int i = 0; i < r; ++i) region.push_back({10.0 * std::cos(2 * M_PI * i / r), 10.0 * std::sin(2 * M_PI * i / r)});
+      std::vector<JointSet> sets;
+      for (int s = 0; s < k; ++s) sets.push_back({17.0 + 53.0 * s, 2.0 + 0.7 * s, {0.31 * s, 0.17}});
+      const GeneratedBlocks g = generate_blocks(region, sets, 0.0);
+      REQUIRE(!g.blocks.empty());
+      for (const Polygon& p : g.blocks) {
+        CHECK(p.count <= r + 2 * k);
+        CHECK(p.count <= kMaxBlockVertices);
+      }
+    }
+  CHECK(std::string(describe(PolygonFault::kTooManyVertices)).find("kMaxBlockVertices") != std::string::npos);
 }

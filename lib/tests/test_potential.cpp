@@ -103,3 +103,21 @@ TEST_CASE("each bisector ray is where its two edge lines are equally far, from d
     }
   CHECK(virtual_rays == 6);  // three small edges, each in both modes
 }
+
+// Issue 26: a triangle a few units of the coordinate spacing wide (at 1e6 the
+// spacing is 1.16e-10 m) has no centre with a positive exit distance: every
+// candidate rounds onto the grid. inscribed_circle returned r = 0 at (0, 0),
+// 1.4e6 m away; now r = 0 at a point of the polygon (the error callers test).
+TEST_CASE("inscribed circle below the coordinate spacing is at a point of the polygon", "[potential]") {
+  const double x = 1e6, u = std::nextafter(x, 2e6) - x;  // the spacing at 1e6
+  const Vec2 t[3] = {{x, x}, {x + 2 * u, x}, {x, x + 2 * u}};
+  const Polygon p = make_polygon(t, 3);
+  REQUIRE(validate_polygon(t, 3).ok());
+  const InscribedCircle c = inscribed_circle(p);
+  CHECK(c.radius >= 0.0);
+  CHECK(locate_point(p, c.centre, 0.0) != PointLocation::kOutside);
+  CHECK(c.radius == exit_distance(p, c.centre) * (c.radius > 0.0 ? 1.0 : 0.0));
+  // Negative control: the same triangle scaled up has a positive radius at its incentre.
+  const Vec2 big[3] = {{x, x}, {x + 2, x}, {x, x + 2}};
+  CHECK(inscribed_circle(make_polygon(big, 3)).radius == Approx(2.0 - std::sqrt(2.0)).epsilon(1e-9));
+}

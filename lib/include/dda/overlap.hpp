@@ -27,10 +27,19 @@ struct EntranceBlock {
 // very short edge whose normal is still exact (taken from its source edge).
 EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0);
 
+// kTouching: the boundaries meet within tol but there is no intersection
+// polygon; the solver applies no contact force (contact_forces.cpp counts
+// only kOverlapping pairs with an IP).
 enum class OverlapState { kSeparate, kTouching, kOverlapping };
 
-// A and B overlap iff a0 lies inside E(A,B) (Table 2). a0 on E's boundary
-// (within tol) is touching: boundaries meet, interiors do not. tol < 0 means
+// A and B overlap iff a0 lies inside E(A,B) (Table 2) by more than tol AND
+// the intersection polygon (A the contact, B the target) is not empty: one
+// verdict from one computation, the same as overlap_and_intersection's, so
+// kOverlapping always comes with an IP of >= 3 vertices (issue 26: a sharp
+// wedge deep in a block at offset 1e9 overlaps by far more than tol along
+// every axis, yet the exact intersection is a sliver thinner than tol).
+// a0 on E's boundary (within tol) is touching: boundaries meet, interiors
+// do not; so is a deeper overlap whose IP is empty. tol < 0 means
 // the geometric tolerance of the two inputs. Evaluated on E's edge lines
 // directly (see the source), which is what entrance_block() + locate_point()
 // decide, without building E; the property tests check both against CGAL.
@@ -39,11 +48,39 @@ inline bool overlaps(const Polygon& a, const Polygon& b) {
   return overlap_state(a, b) == OverlapState::kOverlapping;
 }
 
+// How far an intersection-polygon vertex may lie from either input polygon,
+// Euclidean, in units of the pair tolerance tol (dimensionless). Every IP
+// vertex is within tol of every edge line of both inputs; near a corner of
+// interior angle theta that allows tol / sin(theta / 2) from the polygon
+// (1e6 tol at 1e-6 rad), so the clipper bevels the contact's corners under
+// 30 degrees (see overlap.cpp, clip_target): then tol / sin(15 deg) = 3.86
+// tol at most (a 30-degree corner), or 4.1 tol with the round-off of the
+// distances (a few eps C, < tol / 16) added to tol; 4.5 with margin. Holds
+// at any angle and offset (checked against CGAL's exact kernel by
+// property_tests, issue 26).
+inline constexpr double kIpVertexReach = 4.5;
+// Bound on the IP's area error, in units of (n + m) tol D (dimensionless;
+// see intersection_polygon): the boundary moves by at most tol per vertex
+// decision (snap, crossing, clean) along chords no longer than D.
+inline constexpr double kIpAreaBound = 1.0;
+
 // The intersection polygon (IP): the target polygon cut by the line of each
 // edge of the contact polygon, keeping the inner half-plane each time (Table 3).
 // Vertices within tol of a cutting line are taken as on it, so a line through
 // a vertex or along an edge makes no duplicate vertex or zero-length edge.
 // Returns an empty polygon (count 0) when the interiors do not overlap.
+// What the result promises (tol = the pair tolerance, n + m vertex counts,
+// D = the smaller diameter of the two inputs), checked exactly against CGAL
+// by property_tests at any angle (corners and crossings down to 1e-6 rad)
+// and at offsets up to 1e9 times the block size:
+//  - every vertex within kIpVertexReach tol (Euclidean) of both inputs;
+//  - strictly convex, CCW, no edge shorter than tol; it contains the exact
+//    intersection shrunk by 2 tol and lies within it grown by 2 tol (every
+//    half-plane moved by 2 tol);
+//  - |area(IP) - area(contact and target)| <= kIpAreaBound (n + m) tol D
+//    (each vertex decision moves the boundary by <= tol along a chord <= D);
+//  - empty (count 0) only if that shrunk intersection is empty: a sliver
+//    thinner than ~tol may have no IP (and overlap_state says touching).
 Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol = -1.0);
 // The same, into `out` (no 1 KB Polygon constructed: for the hot path).
 void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& out);
@@ -54,8 +91,9 @@ void intersection_polygon(const Polygon& contact, const Polygon& target, double 
 // edge is the source edge's normal. Like a Box2D feature id, it lets the
 // contact integration skip potentials that vanish by construction.
 // An edge left by merging two nearly collinear edges of different
-// polygons (or of two edges of one) has edge = -1: its source is not known
-// and its normal is computed from its end points.
+// polygons (or of two edges of one), or cut by a bevel at a sharp corner
+// of the contact (overlap.cpp, clip_target), has edge = -1: its source is
+// not known and its normal is computed from its end points.
 struct IpEdge {
   bool on_contact = false;  // true: an edge of the contact polygon; false: of the target
   int edge = -1;            // its index in that polygon; -1: not known

@@ -11,8 +11,20 @@ namespace dda {
 
 // Capacity of a Polygon. An intersection polygon or an entrance block of two
 // blocks has at most n + m vertices, so blocks are limited to half of it.
+// 16 is enough for every generated rock mass: a block cut from a convex
+// region of r edges by k joint sets has at most r + 2 k edges (each set's
+// parallel joints bound it twice at most), and the test "generated blocks
+// fit kMaxBlockVertices" (test_polygon.cpp) checks the scenes of
+// rock_scenes.cpp and joint_sets.cpp; a scene file's block with more is
+// refused with a message naming the limit (kTooManyVertices).
 inline constexpr int kMaxVertices = 32;
 inline constexpr int kMaxBlockVertices = kMaxVertices / 2;
+
+// Largest |coordinate| a block may have, m: the second area moments (the
+// mass matrix's, Paper A Eq. 5a) grow as size^4 and must stay finite:
+// (2e75)^4 = 1.6e301 < DBL_MAX. Above it validate_polygon says kOverflow
+// (issue 26: coordinates of 1e308 were reported as a duplicate vertex).
+inline constexpr double kMaxCoordinate = 1e75;
 
 // Round-off budget for geometric predicates, in units of machine epsilon times
 // the coordinate magnitude: the absolute error of a difference of coordinates
@@ -58,8 +70,9 @@ enum class PolygonFault {
   kNonFinite,        // NaN or infinite coordinate
   kDuplicateVertex,  // an edge shorter than kMinEdgeRelative * diameter
   kCollinear,        // a turn smaller than kCollinearSin
-  kClockwise,        // every turn is to the right
-  kNonConvex,        // turns both ways, or turns left but winds more than once
+  kClockwise,        // every turn is to the right (a convex polygon in clockwise order)
+  kNonConvex,        // turns both ways (including a self-intersecting bow tie), or winds more than once
+  kOverflow,         // a |coordinate| above kMaxCoordinate: area moments would overflow
 };
 
 struct PolygonCheck {
@@ -101,8 +114,10 @@ double min_edge_length(const Polygon& poly);
 double max_edge_length(const Polygon& poly);
 double perimeter(const Polygon& poly);
 
-// Absolute tolerance for predicates on this polygon: kRoundoffUlps * eps times
-// (largest |coordinate| + diameter). Scales with offsets and with size.
+// Absolute tolerance for predicates on this polygon, m: kRoundoffUlps * eps
+// times (largest |coordinate| + size), where size is the larger side of the
+// bounding box (not the diameter: the box is at hand per step, and it is
+// within a factor sqrt(2) of the diameter). Scales with offsets and size.
 double geometric_tolerance(const Polygon& poly);
 // The same from the polygon's bounds (a caller that has them).
 double geometric_tolerance(const Aabb& bounds);

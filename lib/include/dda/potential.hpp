@@ -31,6 +31,12 @@ Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h);
 // Radius and centre of the largest inscribed circle: the maximum of d_exit,
 // a small linear programme solved exactly by enumerating triples of edge
 // lines (O(n^4) but n <= 16 and it runs once per block or per H update).
+// radius == exit_distance(poly, centre) > 0 for a valid block. When no
+// triple's centre has a positive exit distance (a polygon below the
+// coordinate spacing at its offset, or a plateau optimum whose ends round
+// onto an edge), the centre is the vertex mean, a point of the polygon,
+// and the radius its exit distance if positive, else 0: callers that
+// divide by the radius must test radius > 0 (the error).
 struct InscribedCircle {
   Vec2 centre{};
   double radius = 0.0;
