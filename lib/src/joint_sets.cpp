@@ -106,6 +106,10 @@ std::vector<std::vector<Vec2>> convex_parts(const std::vector<Vec2>& poly) {
   return tris;
 }
 
+// Largest joint line number |offset / spacing| counted exactly with k += 1
+// in a double (2^52: every integer up to 2^53 is representable).
+constexpr double kMaxLineNumber = 4503599627370496.0;
+
 GeneratedBlocks generate_blocks(const std::vector<Vec2>& region, const std::vector<JointSet>& sets, double min_area) {
   if (region.size() < 3) throw std::invalid_argument("region: fewer than 3 vertices");
   for (const Vec2& p : region)
@@ -136,6 +140,12 @@ GeneratedBlocks generate_blocks(const std::vector<Vec2>& region, const std::vect
         hi = std::max(hi, s);
       }
       Polygon rest = piece;
+      // Line numbers are counted in a double: beyond 2^53 k += 1 no longer
+      // advances (an origin absurdly far from the region) and the loop
+      // would never end, so such a set is refused.
+      if (!(std::fabs(lo / js.spacing) < kMaxLineNumber) || !(std::fabs(hi / js.spacing) < kMaxLineNumber))
+        throw std::invalid_argument("joint set origin more than 2^52 spacings from the region: line numbers lose "
+                                    "their integer precision");
       for (double k = std::ceil(lo / js.spacing); k * js.spacing < hi; k += 1.0) {
         Polygon below, above;
         split_polygon(rest, js.origin + (k * js.spacing) * nrm, nrm, below, above);

@@ -58,3 +58,12 @@ TEST_CASE("bad joint sets and regions are rejected with the field named", "[join
   CHECK_THROWS_WITH(generate_blocks(sq, {{45.0, 0.0, {}}}, 0.0), Catch::Contains("joint_sets[0].spacing"));
   CHECK_THROWS_WITH(generate_blocks(sq, {{180.0, 1.0, {}}}, 0.0), Catch::Contains("joint_sets[0].dip"));
 }
+
+TEST_CASE("a joint set whose origin lies beyond 2^52 spacings is refused, not looped on forever", "[joint_sets]") {
+  // Found by the scene-file fuzzer (lib/io/fuzz): at 1e20 spacings k += 1
+  // does not change k and the cutting loop never ends.
+  const std::vector<Vec2> region = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  CHECK_THROWS_WITH(generate_blocks(region, {{60.0, 1.0, {0.0, 1e20}}}, 0.0), Catch::Contains("2^52 spacings"));
+  // Far but within range: still cut.
+  CHECK(generate_blocks(region, {{60.0, 1.0, {0.0, 1e6}}}, 0.0).blocks.size() > 10);
+}
