@@ -11,34 +11,17 @@ issue's fix), the estimate before it, and the linearised 2/omega_max at
 the peak contact force (independent check). Right panel: the dt_crit check
 on resting contacts, each estimate divided by the linearised limit.
 """
-import csv
-import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from potential_common import plt, save_atomic  # noqa: E402
+from potential_common import finite as f, plt, read_rows, save_atomic  # noqa: E402
 
 MAPS = [("two_squares", "4.1 two squares, 1 m/s, unified H"),
         ("bouncing_unified", "5.1 bouncing block case 1, unified H"),
         ("bouncing_inscribed", "5.1 bouncing block case 1, inscribed-radius H")]
 CLASSES = [("stable", "o", "tab:green", 18), ("energy growth > 1%", "^", "tab:orange", 26),
            ("flip-through", "D", "tab:purple", 24), ("blow-up", "x", "tab:red", 30)]
-
-
-def read_rows(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    if not rows:
-        raise SystemExit(f"{path}: no rows")
-    return rows
-
-
-def f(text):
-    x = float(text)
-    if not math.isfinite(x):
-        raise SystemExit(f"non-finite value {text!r}")
-    return x
 
 
 def main(argv):

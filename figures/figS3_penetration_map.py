@@ -9,34 +9,17 @@ on (bounced, stopped by the penetration guard, stopped by another guard,
 passed through, stuck) and crossed where the same impact without the
 penetration guard passes the blocks through each other.
 """
-import csv
-import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from potential_common import plt, save_atomic  # noqa: E402
+from potential_common import finite as f, plt, read_rows, save_atomic  # noqa: E402
 
 CLASSES = [("bounced", "tab:green"), ("guard stop", "tab:blue"), ("other stop", "tab:orange"),
            ("passed", "tab:red"), ("stuck", "tab:purple"), ("missed", "tab:gray")]
 MAPS = [("head on, v-kn", "kn", "kn, Pa", "head on, dt = 1e-4 s"),
         ("oblique, v-kn", "kn", "kn, Pa", "30 deg oblique, dt = 1e-4 s"),
         ("head on, v-dt", "dt", "dt, s", "head on, kn = 1e5 Pa")]
-
-
-def read_rows(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    if not rows:
-        raise SystemExit(f"{path}: no rows")
-    return rows
-
-
-def f(text):
-    x = float(text)
-    if not math.isfinite(x):
-        raise SystemExit(f"non-finite value {text!r}")
-    return x
 
 
 def main(argv):

@@ -4,6 +4,7 @@ The grid CSVs are written by the potential_fields driver: '#' comment lines,
 a header 'x,y,inside,d_exit,phi', rows y-major (x varies fastest).
 """
 import csv
+import math
 import os
 import textwrap
 
@@ -34,6 +35,23 @@ def read_csv(path):
     if not np.all(np.isfinite(data)):
         raise SystemExit(f"{path}: non-finite values")
     return comments, {name: data[:, i] for i, name in enumerate(header)}
+
+
+def read_rows(path):
+    """The rows of a CSV file as dicts (comment lines skipped); fails when there are none."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    if not rows:
+        raise SystemExit(f"{path}: no rows")
+    return rows
+
+
+def finite(text):
+    """A CSV field as a finite float; fails on NaN or inf."""
+    x = float(text)
+    if not math.isfinite(x):
+        raise SystemExit(f"non-finite value {text!r}")
+    return x
 
 
 def save_atomic(fig, out_png):
