@@ -254,15 +254,6 @@ OverlapState by_counts(const Polygon& a, const Polygon& b, Args&&... args) {
   }
 }
 
-// The overlap test alone, for by_counts.
-template <bool kCuts>
-struct SeparatingAxes {
-  template <int kA, int kB>
-  static OverlapState run(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
-    return separating_axes_n<kCuts, kA, kB>(a, b, tol, cuts, witness);
-  }
-};
-
 // Ring edge labels while clipping: target edge j is j, contact edge c is -1 - c.
 constexpr int contact_label(int c) { return -1 - c; }
 
@@ -508,9 +499,8 @@ constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
 OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
   if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
   if (tol < 0.0) tol = pair_tolerance(a, b);
-  const OverlapState state = by_counts<SeparatingAxes<false>>(a, b, tol, nullptr, nullptr);
-  if (state != OverlapState::kOverlapping) return state;
-  // overlap_and_intersection's verdict: kOverlapping only with an IP.
+  // overlap_and_intersection's verdict (kOverlapping only with an IP): one
+  // separating-axis test, and the clip only for a pair it finds overlapping.
   Polygon ip;
   return overlap_and_intersection(a, b, tol, ip, nullptr);
 }
