@@ -29,7 +29,11 @@
 //
 // Controls (claims only): the same model with the joints locked (friction
 // 80 deg), and each slope as ONE block -- the paper's premise that each
-// slope alone is stable on its base.
+// slope alone is stable on its base. Beside the paper-method FAILs, the
+// same runs with the options beyond the paper (rows "6.2 (option)"): the
+// friction start-up (settled with sticking contacts, Scene::damping) for the
+// premise, and the start-up with the return mapping for the mechanism.
+// Expected: both pass.
 //
 // Output under data/toppling_slumping/: series.csv (per-side measures every
 // 0.01 s), frames.csv (polygons every 0.05 s), blocks.csv (per-block state at
@@ -54,6 +58,10 @@ using repro::format_short;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kSeriesEvery = 0.01;  // s
 constexpr double kFrameEvery = 0.05;   // s
+// A block's edge lies on the sliding base if both its ends are this close to
+// the base line (m): settling (the start-up option) presses the blocks in by
+// millimetres; the joint spacing is 3 m.
+constexpr double kBaseEdgeTolerance = 0.05;
 
 // Per-side measures, mass-weighted means over the side's blocks.
 struct SideState {
@@ -88,13 +96,21 @@ class Tracker {
       const dda::Vec2 toe{s < 0 ? -ts.valley_half_width : ts.valley_half_width, 0.0};
       b.down = s < 0 ? ts.left_downdip : ts.right_downdip;
       const dda::Polygon& p = sim.polygon(i);
-      double lo = 1e300, hi = -1e300;
+      double lo = 1e300, hi = -1e300, nearest = kBaseEdgeTolerance;
       for (int v = 0; v < p.count; ++v) {
         const double d = dot(p.vertex(v) - toe, joint_dir);
         lo = std::min(lo, d);
         hi = std::max(hi, d);
-        // On the sliding base at t = 0: within 1e-9 m of its line.
-        if (std::fabs(cross(b.down, p.vertex(v) - toe)) < 1e-9) (b.base_a < 0 ? b.base_a : b.base_b) = v;
+        // The edge on the sliding base: the one nearest its line, both ends
+        // within kBaseEdgeTolerance (exactly on it unless the scene settled).
+        const int w = (v + 1) % p.count;
+        const double off = std::max(std::fabs(cross(b.down, p.vertex(v) - toe)),
+                                    std::fabs(cross(b.down, p.vertex(w) - toe)));
+        if (off < nearest) {
+          nearest = off;
+          b.base_a = v;
+          b.base_b = w;
+        }
       }
       if (b.base_b < 0) throw std::runtime_error("block " + std::to_string(i) + " has no edge on the sliding base");
       b.length = hi - lo;
@@ -150,6 +166,23 @@ class Tracker {
   double side_mass_[2] = {0.0, 0.0};
 };
 
+// The friction start-up option (not the paper's start; Scene::damping):
+// settled from rest for kSettleTime with mass damping (Eq. 5c) and every
+// contact sticking, the last kSettleSlipTime of it with the friction angles
+// again (still damped: the wedges' toe corners, which touch the valley floor
+// with almost no normal force, shed the shear they took while sticking),
+// then released at t = 0 with the stick springs carrying the static shear.
+constexpr double kSettleDamping = 10.0;  // 1/s: about the wedges' 9.5 rad/s stick mode (kt 1e8 N/m, ~1e6 kg/m)
+constexpr double kSettleTime = 2.0;      // s: 10 decay times (a / 2 = 5 1/s)
+constexpr double kSettleSlipTime = 1.0;  // s
+dda::Scene start_up(dda::Scene s) {
+  s.damping.mass = kSettleDamping;
+  s.damping.settle_time = kSettleTime;
+  s.damping.settle_sticking = true;
+  s.damping.settle_slip_time = kSettleSlipTime;
+  return s;
+}
+
 // A control run without output: the per-side state at the end.
 struct Control {
   SideState left, right;            // at the end
@@ -174,7 +207,7 @@ Control run_control(const dda::paper::TopplingSlumping& ts, const dda::Scene& sc
   c.wall = clock.elapsed_seconds();
   c.steps = sim.step_count();
   clock("done: " + std::to_string(c.steps) + " steps in " + format_short(c.wall, 3) + " s; left base slip " +
-        format_short(c.left.base_slip, 3) + " m, right outward rotation " +
+        format_short(c.left_half.base_slip, 3) + " m at half time, " + format_short(c.left.base_slip, 3) + " m at the end, right outward rotation " +
         format_short(c.right.outward_rotation * 180.0 / kPi, 3) + " deg");
   return c;
 }
@@ -307,6 +340,16 @@ int main(int argc, char** argv) try {
   // elastic-plastic friction update (not the paper's rule), to measure how
   // much of the slip after the start-up transient is the re-stick ratchet
   // of Eq. 26 (dda::FrictionUpdate).
+  // The friction start-up option beside the paper's start (not the paper's
+  // method; Scene::damping settle_sticking): the same runs started from a
+  // settled state whose stick springs already carry the static shear.
+  // The slumping mechanism with the return mapping as well (the start-up
+  // option alone leaves Eq. 26's re-stick ratchet, diagnosis row below).
+  const Control c_whole_su = run_control(ts, start_up(whole), {-1, +1}, threads, "each slope one block, start-up option");
+  dda::Scene model_su = start_up(ts.scene), locked_su = start_up(locked);
+  model_su.contact.friction_update = locked_su.contact.friction_update = dda::FrictionUpdate::kReturnMapping;
+  const Control c_su = run_control(ts, model_su, ts.side, threads, "start-up option and return mapping");
+  const Control c_locked_su = run_control(ts, locked_su, ts.side, threads, "joints locked, start-up option and return mapping");
   Control c_rm, c_whole_rm;
   if (!return_mapping) {
     dda::Scene rm = ts.scene, whole_rm = whole;
@@ -417,7 +460,28 @@ int main(int argc, char** argv) try {
   repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
                       "the left slope slides on its base as much with locked joints: the slip is the start-up "
                       "transient of suddenly applied gravity on the undamped stick spring and the re-stick ratchet "
-                      "of Eq. 26 (diagnosis row), not joint slip; the geometry is also reconstructed (Fig. 21 lost)");
+                      "of Eq. 26 (diagnosis row), not joint slip; the geometry is also reconstructed (Fig. 21 lost); with "
+                      "the friction start-up option and the return mapping beyond the paper (next row) the joints "
+                      "carry it");
+  // Beside it, the options beyond the paper: the friction start-up (springs
+  // pre-loaded by settling) and the return mapping (no re-stick ratchet).
+  // Measured (3.5 s): left base slip 0.051 m with free joints, 1e-6 m with
+  // the joints locked; the start-up option alone leaves the ratchet (free /
+  // locked 0.38 / 0.50 m).
+  claims.push_back({"6.2 (option)",
+                    "the left slope's slumping comes from slip on the 22 deg joints (locking them stops it), with the "
+                    "friction start-up option and the return mapping (not the paper's start and update)" + run_note,
+                    "\"influenced by the joint set with a friction angle of 22 deg, the stable condition ... will be broken\"",
+                    "left base slip at t = " + format_short(duration, 3) + " s: " + format_short(c_su.left.base_slip, 3) +
+                        " m with the joints at 22 deg (mean |rotation| " +
+                        format_short(c_su.left.abs_rotation * deg, 3) + " deg), " +
+                        format_short(c_locked_su.left.base_slip, 3) + " m with the joints locked at 80 deg; right "
+                        "outward rotation " + format_short(c_su.right.outward_rotation * deg, 3) + " deg",
+                    "base slip with free joints > 2 x with locked joints, and > 0.01 m (beyond settling)",
+                    c_su.left.base_slip > 2.0 * std::fabs(c_locked_su.left.base_slip) && c_su.left.base_slip > 0.01});
+  repro::explain_fail(claims.back(), repro::Cause::kImplementation,
+                      "with the springs pre-loaded and no ratchet only the joints should let the left slope move; "
+                      "not explained, needs an issue note");
   // The premise: one block per slope on the 30 deg base with 32 deg friction
   // is stable (tan 32 > tan 30). Stable: < 0.05 m of slip in 3.5 s (a block
   // that starts sliding at the 8 % friction margin's deficit would move
@@ -447,7 +511,21 @@ int main(int argc, char** argv) try {
                       "suddenly applied gravity on the undamped stick spring (kt = 1e8 N/m) reaches the friction "
                       "limit moving, and the 8 % margin stops the wedge only after ~0.3 m (analytic, see the source); "
                       "then each re-stick of Eq. 26 restarts the spring from zero shear and the wedge ratchets on; "
-                      "the return mapping (an option beyond the paper) stops the ratchet (diagnosis row)");
+                      "the return mapping (an option beyond the paper) stops the ratchet (diagnosis row); the friction "
+                      "start-up option beyond the paper (next row) passes");
+  // Beside it, the friction start-up option alone (the paper's Eq. 26
+  // update): the wedges start from the settled state, springs loaded.
+  claims.push_back({"6.2 (option)",
+                    "premise: each slope as ONE block stays on its 30 deg base (friction 32 deg), with the friction "
+                    "start-up option (settled with sticking contacts, not the paper's start)" + run_note,
+                    "\"both the left slope and right slope will keep stable as one unique block\"",
+                    "one block per slope, settled, then " + format_short(duration, 3) + " s: left slid " +
+                        format_short(c_whole_su.left.base_slip, 3) + " m, right slid " +
+                        format_short(c_whole_su.right.base_slip, 3) + " m",
+                    "|slip| < 0.05 m on both sides",
+                    std::fabs(c_whole_su.left.base_slip) < 0.05 && std::fabs(c_whole_su.right.base_slip) < 0.05});
+  repro::explain_fail(claims.back(), repro::Cause::kImplementation,
+                      "the start-up option should remove the sudden loading; not explained, needs an issue note");
   // Diagnosis of the two rows above (not a paper claim): if the slip that
   // goes on after the start-up transient is the ratchet of Eq. 26's
   // re-stick (spring restarted from zero shear), the elastic-plastic update

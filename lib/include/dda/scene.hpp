@@ -183,6 +183,13 @@ struct Damping {
   // block gain a head start while it loads (Sect. 4.3: 7 % on Eq. 30 at
   // kt = 1e7 N/m). false: the friction angles apply while settling too.
   bool settle_sticking = false;
+  // With settle_sticking: the last this many seconds of the settle (s, <
+  // settle_time) run with the friction angles, still damped, so a contact
+  // that took more shear while sticking than its limit allows (a corner
+  // touching with almost no normal force) sheds it before t = 0 instead of
+  // shedding it undamped at the release (Sect. 6.2's toe corners). 0: every
+  // contact sticks until t = 0.
+  double settle_slip_time = 0.0;
   bool on() const { return mass > 0.0 || stiffness > 0.0; }
 };
 

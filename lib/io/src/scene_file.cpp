@@ -809,13 +809,15 @@ std::string generated_note(const std::string& message, const std::vector<Generat
 
 // Eq. 5c damping; every key optional (the kernel checks the ranges).
 Damping read_damping(const Reader& r, const json& v, const std::string& path) {
-  r.object(v, path, {"mass", "stiffness", "settle_time", "settle_sticking"});
+  r.object(v, path, {"mass", "stiffness", "settle_time", "settle_sticking", "settle_slip_time"});
   Damping d;
   if (const json* x = Reader::find(v, "mass")) d.mass = r.number(*x, join_path(path, "mass"));
   if (const json* x = Reader::find(v, "stiffness")) d.stiffness = r.number(*x, join_path(path, "stiffness"));
   if (const json* x = Reader::find(v, "settle_time")) d.settle_time = r.number(*x, join_path(path, "settle_time"));
   if (const json* x = Reader::find(v, "settle_sticking"))
     d.settle_sticking = r.boolean(*x, join_path(path, "settle_sticking"));
+  if (const json* x = Reader::find(v, "settle_slip_time"))
+    d.settle_slip_time = r.number(*x, join_path(path, "settle_slip_time"));
   return d;
 }
 
@@ -1094,7 +1096,8 @@ std::string write_scene(const SceneFile& file) {
   root["damping"] = {{"mass", s.damping.mass},
                      {"stiffness", s.damping.stiffness},
                      {"settle_time", s.damping.settle_time},
-                     {"settle_sticking", s.damping.settle_sticking}};
+                     {"settle_sticking", s.damping.settle_sticking},
+                     {"settle_slip_time", s.damping.settle_slip_time}};
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
                     {"tracked_blocks", file.output.tracked_blocks}};

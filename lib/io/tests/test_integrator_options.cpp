@@ -42,13 +42,14 @@ TEST_CASE("rotation_update and damping: defaults, values, round trip", "[io][sce
   CHECK_FALSE(s.damping.on());
   CHECK(s.damping.settle_time == 0.0);
   j["rotation_update"] = "exact";
-  j["damping"] = {{"mass", 2.0}, {"stiffness", 1e-4}, {"settle_time", 0.5}, {"settle_sticking", true}};
+  j["damping"] = {{"mass", 2.0}, {"stiffness", 1e-4}, {"settle_time", 0.5}, {"settle_sticking", true}, {"settle_slip_time", 0.2}};
   const dda::io::SceneFile f = parse_scene(j.dump(), "scene.json");
   CHECK(f.scene.rotation_update == dda::RotationUpdate::kExact);
   CHECK(f.scene.damping.mass == 2.0);
   CHECK(f.scene.damping.stiffness == 1e-4);
   CHECK(f.scene.damping.settle_time == 0.5);
   CHECK(f.scene.damping.settle_sticking);
+  CHECK(f.scene.damping.settle_slip_time == 0.2);
   const std::string text = dda::io::write_scene(f);
   const dda::Scene g = parse_scene(text, "scene.json (rewritten)").scene;
   CHECK(g.rotation_update == dda::RotationUpdate::kExact);
@@ -56,6 +57,7 @@ TEST_CASE("rotation_update and damping: defaults, values, round trip", "[io][sce
   CHECK(g.damping.stiffness == 1e-4);
   CHECK(g.damping.settle_time == 0.5);
   CHECK(g.damping.settle_sticking);
+  CHECK(g.damping.settle_slip_time == 0.2);
 }
 
 TEST_CASE("invalid rotation_update and damping name their field", "[io][scene][options][reject]") {
@@ -71,6 +73,10 @@ TEST_CASE("invalid rotation_update and damping name their field", "[io][scene][o
   j = scene();
   j["damping"] = {{"mass", 1.0}, {"settle_sticking", true}};
   CHECK(error_of(j).find("damping.settle_sticking: needs damping.settle_time > 0") != std::string::npos);
+  j = scene();
+  j["damping"] = {{"mass", 1.0}, {"settle_time", 0.5}, {"settle_sticking", true}, {"settle_slip_time", 0.5}};
+  CHECK(error_of(j).find("damping.settle_slip_time: needs damping.settle_sticking and a value below") !=
+        std::string::npos);
   j = scene();
   j["damping"] = {{"alpha", 1.0}};
   CHECK(error_of(j).find("damping.alpha: unknown key") != std::string::npos);

@@ -84,13 +84,17 @@ void Simulation::settle() {
     friction_tan = friction_tan_table_;
     std::fill(friction_tan_table_.begin(), friction_tan_table_.end(), std::numeric_limits<double>::infinity());
   }
+  // With settle_sticking, the last settle_slip_time of the settle runs
+  // with the friction limits again (still damped).
+  const double sticking_until = scene_.damping.settle_sticking ? settle - scene_.damping.settle_slip_time : settle;
   try {
+    advance_to(sticking_until);
+    if (scene_.damping.settle_sticking) friction_tan_table_ = friction_tan;
     advance_to(settle);
   } catch (const SimulationError& e) {
     throw SimulationError(std::string("while settling (damping.settle_time = ") + std::to_string(settle) +
                           " s, before t = 0): " + e.what());
   }
-  if (scene_.damping.settle_sticking) friction_tan_table_ = friction_tan;
   start_damping(false);
   for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] = v0[i];
   for (Vec6& d : disp_) d.setZero();

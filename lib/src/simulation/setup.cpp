@@ -82,6 +82,10 @@ void check_scene(const Scene& scene) {
     fail("damping.settle_time", "settling needs damping: set damping.mass or damping.stiffness > 0");
   if (dmp.settle_sticking && !(dmp.settle_time > 0.0 && scene.contact.friction()))
     fail("damping.settle_sticking", "needs damping.settle_time > 0 and friction (contact.kt > 0)");
+  if (!(std::isfinite(dmp.settle_slip_time) && dmp.settle_slip_time >= 0.0))
+    fail("damping.settle_slip_time", "must be finite and >= 0");
+  if (dmp.settle_slip_time > 0.0 && !(dmp.settle_sticking && dmp.settle_slip_time < dmp.settle_time))
+    fail("damping.settle_slip_time", "needs damping.settle_sticking and a value below damping.settle_time");
   if (scene.materials.empty()) fail("materials", "at least one material is needed");
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
