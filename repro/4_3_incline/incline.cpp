@@ -50,6 +50,16 @@ int main(int argc, char** argv) {
   using repro::format_short;
   constexpr double kSettleDamping = 80.0;   // 1/s: ~2 x the contact's 39 rad/s normal mode, 20 decay times in 0.5 s
   constexpr double kSettleTime = 0.5;       // s
+  // The friction start-up option (not the paper's start): settled for 0.5 s
+  // with every contact sticking (mass damping a = 80 1/s, about twice the
+  // contact's normal mode), so the springs carry the static shear at t = 0
+  // instead of loading while the block gains a head start.
+  auto start_up = [&](dda::paper::Incline in) {
+    in.scene.damping.mass = kSettleDamping;
+    in.scene.damping.settle_time = kSettleTime;
+    in.scene.damping.settle_sticking = true;
+    return in;
+  };
   constexpr double kCreepPhi = 30.0, kCreepTheta = 20.0;  // deg
   constexpr double kCreepSpeed = 0.5;        // m/s downhill at t = 0
   constexpr double kCreepEnd = 3.0;          // s
@@ -65,15 +75,8 @@ int main(int argc, char** argv) {
                         "Coulomb friction (Eq. 30) does not have (predicted below), and the friction torque rocks B "
                         "on the soft contact of the paper's H = 6.5 m; the friction start-up option beyond the "
                         "paper (next row: springs pre-loaded by settling) passes");
-    // Beside it, the friction start-up option (not the paper's): settled
-    // for 0.5 s with every contact sticking (mass damping a = 80 1/s, about
-    // twice the contact's normal mode), so the springs carry the static
-    // shear at t = 0 instead of loading while the block gains a head start.
-    dda::paper::Incline settled = dda::paper::incline(phi);
-    settled.scene.damping.mass = kSettleDamping;
-    settled.scene.damping.settle_time = kSettleTime;
-    settled.scene.damping.settle_sticking = true;
-    const Run s = run(settled, nullptr, phi, update);
+    // Beside it, the friction start-up option (not the paper's).
+    const Run s = run(start_up(dda::paper::incline(phi)), nullptr, phi, update);
     claims.push_back({"4.3 (option)", "phi = " + format_short(phi) +
                                           " deg, friction start-up option (settled with sticking contacts, not the "
                                           "paper's start): sliding distance follows Eq. 30",
@@ -96,11 +99,7 @@ int main(int argc, char** argv) {
     progress("phi = " + format_short(incline::kRestPhi) + ": moved " + format_short(r.distance, 3) + " m");
     // Beside it, the friction start-up option (not the paper's): the stick
     // spring is loaded while settling, so gravity is not applied suddenly.
-    dda::paper::Incline settled = dda::paper::incline(incline::kRestPhi);
-    settled.scene.damping.mass = kSettleDamping;
-    settled.scene.damping.settle_time = kSettleTime;
-    settled.scene.damping.settle_sticking = true;
-    repro::Claim c = incline::rest_row(run(settled, nullptr, incline::kRestPhi, update));
+    repro::Claim c = incline::rest_row(run(start_up(dda::paper::incline(incline::kRestPhi)), nullptr, incline::kRestPhi, update));
     c.section = "4.3 (option)";
     c.claim += ", friction start-up option (settled with sticking contacts, not the paper's start)";
     c.key = "rest-start-up";
@@ -158,8 +157,9 @@ int main(int argc, char** argv) {
   // leads Eq. 30 by dv = g [tan(phi) cos(theta) t* - sin(theta) (t* - sin(w t*) / w)].
   // (2) The friction torque rocks B on the soft contact (H = 6.5 m from the
   // long slab) and the contact point's motion reverses, which re-enters the
-  // stick phase. Rows below: the predicted offset, and runs with a stiffer
-  // kt and a smaller H that remove both causes.
+  // stick phase. Rows below: the predicted offset, and runs with a smaller
+  // H and stiffer kt, which do not remove the gap (the sudden start remains),
+  // each beside the start-up option, which does.
   {
     const double th = 30.0 * kPi / 180.0, mu = std::tan(20.0 * kPi / 180.0), m = 2000.0, t_end = 1.0;
     const double w = std::sqrt(1e7 / m);
@@ -173,25 +173,36 @@ int main(int argc, char** argv) {
                           format_short(predicted, 3),
                       "information (no tolerance)", false, repro::Kind::kMeasurement});
   }
-  {
-    const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, true, 1.0), nullptr, 20.0, update);
-    claims.push_back({"4.3 (extra)", "phi = 20 deg with H = 1 m (paper's rule gives 6.5 m here): less rocking",
-                      "Eq. 30", "rel. error " + format_short(r.rel_error(), 3), "|rel. error| < 1 %",
-                      std::fabs(r.rel_error()) < kTol});
-    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
-                        "the elastic stick phase of Table 4's kt = 1e7 N/m remains (predicted lead in the row above)");
-  }
-  for (double kt : {1e9, 1e11}) {
+  // H = 1 m (less rocking) and stiffer kt (shorter stick phase): measured,
+  // neither removes the gap (+1.9 % at kt = 1e9 N/m, whatever dt or the
+  // integration), while the start-up option on the same runs does (1.2e-4):
+  // from rest, friction and its torque about the centroid (applied at the
+  // base, h / 2 below it) are switched on at once on an undamped block,
+  // which starts rocking on its contact and keeps rocking (the normal force
+  // still swings +-12 % at t = 1 s); each row has the option beside it.
+  for (double kt : {1e7, 1e9, 1e11}) {
     dda::paper::Incline in = dda::paper::incline(20.0, 30.0, 1.0, true, 1.0);
     in.scene.contact.kt = kt;
+    const std::string what = "phi = 20 deg, H = 1 m (the paper's rule gives 6.5 m here)" +
+                             (kt == 1e7 ? std::string(", kt = 1e7 N/m (Table 4)")
+                                        : ", kt = " + format_short(kt) + " N/m (paper: 1e7)");
     const Run r = run(in, nullptr, 20.0, update);
-    claims.push_back({"4.3 (extra)", "phi = 20 deg, H = 1 m, kt = " + format_short(kt) + " N/m (paper: 1e7)",
-                      "Eq. 30 in the rigid-friction limit",
+    claims.push_back({"4.3 (extra)", what + ": sliding distance follows Eq. 30", "Eq. 30",
                       "rel. error " + format_short(r.rel_error(), 3) + " (l = " + format_short(r.distance, 5) + " m)",
                       "|rel. error| < 1 %", std::fabs(r.rel_error()) < kTol});
+    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                        "the paper's start from rest: friction and its torque switched on at once on the undamped "
+                        "block, which gains a lead in the stick phase and keeps rocking on its contact (measured: "
+                        "independent of dt and of the integration); the friction start-up option beyond the paper "
+                        "(next row) passes");
+    const Run s = run(start_up(in), nullptr, 20.0, update);
+    claims.push_back({"4.3 (option)", what + ", friction start-up option (not the paper's start): sliding distance "
+                                             "follows Eq. 30",
+                      "Eq. 30",
+                      "rel. error " + format_short(s.rel_error(), 3) + " (l = " + format_short(s.distance, 5) + " m)",
+                      "|rel. error| < 1 %", std::fabs(s.rel_error()) < kTol});
     repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                        "not explained: with H = 1 m and a stiff kt neither cause of the gap is left, yet l stays "
-                        "1.7-1.9 % above Eq. 30; open, needs an issue note");
+                        "the start-up option should remove the sudden start; not explained, needs an issue note");
   }
   {
     const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, false), nullptr, 20.0, update);

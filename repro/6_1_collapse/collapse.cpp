@@ -29,7 +29,9 @@
 //
 // Options: --out DIR, --duration S (default: the scene's 7.5 s; shorter for
 // quick checks), --threads N (contact loop, default 1; results do not
-// depend on it), --case 1|2 (default both).
+// depend on it), --case 1|2 (default both), --exact-rotation 1 (the blocks'
+// rigid part turned exactly, dda::RotationUpdate::kExact, not the paper's
+// linearised Eq. 1; the claims say so).
 //
 // Output under data/collapse/: summary.csv (one row per case), boundaries.csv,
 // case<k>/series.csv (the measures vs time), case<k>/frames.csv (block
@@ -128,8 +130,10 @@ const char* const kNumberings[] = {"generator", "x", "y"};
 // centroid coordinate `axis` (0: x, 1: y; stable, so ties keep the
 // generator's order): the same blocks, joints and boundaries. Returns the
 // end state's measures.
-Sample rerun_renumbered(int k, double friction, double duration, int threads, int axis) {
+Sample rerun_renumbered(int k, double friction, double duration, int threads, int axis,
+                        dda::RotationUpdate rotation) {
   dda::paper::Collapse col = dda::paper::collapse(friction, 0.5, duration);
+  col.scene.rotation_update = rotation;
   std::vector<std::pair<double, dda::BlockSpec>> keyed;
   for (dda::BlockSpec& b : col.scene.blocks) {
     const dda::Vec2 c = dda::area_centroid(b.vertices.data(), static_cast<int>(b.vertices.size())).centroid;
@@ -159,9 +163,11 @@ std::string time_tag(double t) {
   return b;
 }
 
-CaseResult run_case(int k, double friction, double duration, int threads, const std::string& dir) {
+CaseResult run_case(int k, double friction, double duration, int threads, const std::string& dir,
+                    dda::RotationUpdate rotation) {
   const repro::Progress progress("6.1 collapse case " + std::to_string(k));
-  const dda::paper::Collapse col = dda::paper::collapse(friction, 0.5, duration);
+  dda::paper::Collapse col = dda::paper::collapse(friction, 0.5, duration);
+  col.scene.rotation_update = rotation;
   dda::Simulation sim(col.scene);
   sim.set_threads(threads);
   const int n = sim.scene_block_count();
@@ -270,12 +276,14 @@ int main(int argc, char** argv) try {
   repro::check_command_line(argc, argv, "Paper A Sect. 6.1 (Figs. 19-20, geometry reconstructed): frictional collapse of a jointed rock mass, cases 1 and 2.",
                             {{"--duration", "S", "simulated seconds per case (default 7.5: the paper's)", false},
                              {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
-                             {"--case", "N", "1 or 2: that case only, without the renumbered reruns (default 0: both)", true}});
+                             {"--case", "N", "1 or 2: that case only, without the renumbered reruns (default 0: both)", true},
+                             repro::kExactRotationOption});
   const std::string out = repro::out_dir(argc, argv);
   const double full = dda::paper::collapse(15.0).scene.duration;
   const double duration = repro::option_number(argc, argv, "--duration", full);
   const int threads = repro::option_int(argc, argv, "--threads", 1);
   const int only = repro::option_int(argc, argv, "--case", 0);
+  const dda::RotationUpdate rotation = repro::rotation_option(argc, argv);
   if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
   if (only < 0 || only > 2) throw std::invalid_argument("--case must be 1 or 2");
   const std::string dir = out + "/data/collapse";
@@ -283,7 +291,7 @@ int main(int argc, char** argv) try {
   const double frictions[2] = {15.0, 30.0};
   std::vector<CaseResult> runs;
   for (int k = 1; k <= 2; ++k)
-    if (only == 0 || only == k) runs.push_back(run_case(k, frictions[k - 1], duration, threads, dir));
+    if (only == 0 || only == k) runs.push_back(run_case(k, frictions[k - 1], duration, threads, dir, rotation));
 
   repro::CsvWriter summary(dir + "/summary.csv",
                            {"case", "joint_friction_deg", "blocks", "dropped", "dropped_area", "H", "dt",
@@ -310,7 +318,7 @@ int main(int argc, char** argv) try {
   if (renumber) {
     for (int c = 0; c < 2; ++c) ends[0][c] = runs[static_cast<std::size_t>(c)].series.back();
     for (int axis = 0; axis < 2; ++axis)
-      for (int c = 0; c < 2; ++c) ends[axis + 1][c] = rerun_renumbered(c + 1, frictions[c], duration, threads, axis);
+      for (int c = 0; c < 2; ++c) ends[axis + 1][c] = rerun_renumbered(c + 1, frictions[c], duration, threads, axis, rotation);
     repro::CsvWriter rn(dir + "/renumbered.csv", {"case", "order", "front_x_end", "runout_mass_end", "mean_drop_end"},
                         {"Paper A Sect. 6.1 reconstructed: each case with its blocks numbered by the generator, by "
                          "centroid x and by centroid y (order: 0 generator, 1 x, 2 y), end of the run"});
@@ -330,7 +338,9 @@ int main(int argc, char** argv) try {
   std::vector<repro::Claim> claims;
   const CaseResult& a = runs.front();
   const bool short_run = duration < full - 1e-9;
-  const std::string run_note = short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "";
+  const std::string run_note =
+      (short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "") +
+      (rotation == dda::RotationUpdate::kExact ? repro::kExactRotationNote : "");
   claims.push_back(
       {"6.1", "joint-set generator: the 20 m x 50 m column cut by dips 80/40 deg, spacings 1.5/2.5 m, slivers < 0.5 m^2 dropped, runs below the stability limit",
        "Fig. 19 (lost): two persistent joint sets cut the region into a block system",

@@ -25,7 +25,8 @@
 // Options: --out DIR, --duration S (default: the scene's 3.5 s), --threads N
 // (default 1), --return-mapping 1 (all runs with the elastic-plastic
 // friction update dda::FrictionUpdate::kReturnMapping instead of the
-// paper's Eq. 26; the claims say so).
+// paper's Eq. 26; the claims say so), --exact-rotation 1 (all runs with
+// dda::RotationUpdate::kExact instead of the linearised Eq. 1; likewise).
 //
 // Controls (claims only): the same model with the joints locked (friction
 // 80 deg), and each slope as ONE block -- the paper's premise that each
@@ -218,7 +219,8 @@ int main(int argc, char** argv) try {
   repro::check_command_line(argc, argv, "Paper A Sect. 6.2 (Figs. 21-22, geometry reconstructed): toppling and slumping of a jointed valley slope.",
                             {{"--duration", "S", "simulated seconds (default 3.5: the paper's)", false},
                              {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
-                             {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true}});
+                             {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true},
+                             repro::kExactRotationOption});
   const std::string out = repro::out_dir(argc, argv);
   const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
   const double duration = repro::option_number(argc, argv, "--duration", full.scene.duration);
@@ -227,6 +229,8 @@ int main(int argc, char** argv) try {
   const bool return_mapping = repro::option_int(argc, argv, "--return-mapping", 0) != 0;
   dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping(full.min_area, duration);
   if (return_mapping) ts.scene.contact.friction_update = dda::FrictionUpdate::kReturnMapping;
+  ts.scene.rotation_update = repro::rotation_option(argc, argv);
+  const bool exact_rotation = ts.scene.rotation_update == dda::RotationUpdate::kExact;
   const repro::Progress progress("6.2 toppling/slumping");
   dda::Simulation sim(ts.scene);
   sim.set_threads(threads);
@@ -388,7 +392,8 @@ int main(int argc, char** argv) try {
   const bool short_run = duration < full.scene.duration - 1e-9;
   const std::string run_note =
       (short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "") +
-      (return_mapping ? " [RETURN MAPPING: friction update not the paper's Eq. 26]" : "");
+      (return_mapping ? " [RETURN MAPPING: friction update not the paper's Eq. 26]" : "") +
+      (exact_rotation ? repro::kExactRotationNote : "");
   auto describe = [&](const SideState& s) {
     return "outward rotation " + format_short(s.outward_rotation * deg, 3) + " deg (|rotation| " +
            format_short(s.abs_rotation * deg, 3) + " deg, top travel from rotation " +
