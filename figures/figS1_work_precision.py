@@ -3,7 +3,7 @@
 usage: figS1_work_precision.py DATA_DIR OUT_PNG SCENE
   DATA_DIR from the work_precision driver (runs.csv, orders.csv); SCENE is
   the scene column's text up to its first space-separated word set, e.g.
-  "4.1", "4.3", "resting", "5.2", "5.1", "5.3", "free".
+  "4.1", "4.3", "resting", "5.2", "5.1", "5.3", "free", "damped".
 
 One panel per measure: error (relative, or m) against the median wall time
 of the runs, log-log; each curve is labelled with its observed order p

@@ -85,7 +85,7 @@ DRIVERS = {
                           "Not in the papers: convergence orders and conservation of the integration.",
                           ["figS1a_two_squares.png", "figS1b_incline.png", "figS1c_resting_block.png",
                            "figS1d_triangles.png", "figS1e_bouncing_block.png", "figS1f_small_edge.png",
-                           "figS1g_free_rotation.png"]),
+                           "figS1g_free_rotation.png", "figS1h_damped_flight.png"]),
     "S2_stability_maps": ("Supplementary", "S2: stability maps and the critical time step",
                           "Not in the papers: the predicted critical step against the linearised and empirical limits.",
                           ["figS2_stability_maps.png"]),

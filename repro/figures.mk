@@ -214,11 +214,13 @@ $(OUT)/figures/figS1f_small_edge.png: $(S1_DEPS)
 	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ 5.3
 $(OUT)/figures/figS1g_free_rotation.png: $(S1_DEPS)
 	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ free
+$(OUT)/figures/figS1h_damped_flight.png: $(S1_DEPS)
+	$(PY) figures/figS1_work_precision.py $(OUT)/data/work_precision $@ damped
 
 FIGS += $(OUT)/figures/figS1a_two_squares.png $(OUT)/figures/figS1b_incline.png \
         $(OUT)/figures/figS1c_resting_block.png $(OUT)/figures/figS1d_triangles.png \
         $(OUT)/figures/figS1e_bouncing_block.png $(OUT)/figures/figS1f_small_edge.png \
-        $(OUT)/figures/figS1g_free_rotation.png
+        $(OUT)/figures/figS1g_free_rotation.png $(OUT)/figures/figS1h_damped_flight.png
 $(OUT)/report.md: $(OUT)/data/work_precision/.done
 
 # --- S2: stability maps (kn x dt) and the dt_crit check ---------------------
