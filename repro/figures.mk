@@ -23,6 +23,17 @@
 # failure never leaves half a CSV. A figure script also gets a rule on any
 # helper module it imports (figures/potential_common.py below).
 
+# --- Paper A Sects. 3.1.2, 3.2.1: entrance block, force as energy gradient ---
+$(OUT)/data/contact_statements/.done: $(BIN)/contact_statements
+	$(BIN)/contact_statements --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/fig_contact_statements.png: $(OUT)/data/contact_statements/.done figures/fig_contact_statements.py figures/potential_common.py
+	$(PY) figures/fig_contact_statements.py $(OUT)/data/contact_statements $@
+
+FIGS += $(OUT)/figures/fig_contact_statements.png
+$(OUT)/report.md: $(OUT)/data/contact_statements/.done
+
 # --- Paper A Sect. 3.2.2: potential fields, Figs. 4b and 5 -------------------
 $(OUT)/data/potential_fields/.done: $(BIN)/potential_fields
 	$(BIN)/potential_fields --out $(OUT)

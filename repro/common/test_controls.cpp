@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dda/paper_scenes.hpp"
+#include "repro/3_1_contact_statements/contact_statements.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/4_3_incline/incline.hpp"
@@ -38,6 +39,29 @@ void names_control(const repro::Claim& c, const std::string& test) {
 }
 
 }  // namespace
+
+// --- Sects. 3.1.2 and 3.2.1, contact statements ---------------------------------
+TEST_CASE("3.1.2 entrance block: FAIL when A is not reflected", "[controls][3.1]") {
+  // E built as B + A + a0: a0 inside it says nothing about the overlap.
+  namespace cs = contact_statements;
+  const std::vector<cs::Pair> pairs = cs::random_pairs(1500, 1);
+  CHECK(cs::entrance_row(pairs).pass);
+  const repro::Claim c = cs::entrance_row(pairs, cs::Variant::kEntranceWithoutReflection);
+  CHECK_FALSE(c.pass);
+  CHECK(c.key == cs::kKeyEntrance);
+}
+
+TEST_CASE("3.2.1 energy gradient: FAIL when the force leaves out TP's potential", "[controls][3.2]") {
+  // The force integrates phi_CP alone (TP's kn / H = 0 in the force, not in
+  // the energy): no longer the gradient of the energy.
+  namespace cs = contact_statements;
+  const std::vector<cs::Pair> pairs = cs::random_pairs(1000, 2);
+  CHECK(cs::gradient_row(pairs, dda::Integration::kExactEnvelope).pass);
+  const repro::Claim c =
+      cs::gradient_row(pairs, dda::Integration::kExactEnvelope, cs::Variant::kForceWithoutTargetPotential);
+  CHECK_FALSE(c.pass);
+  CHECK(c.key == cs::kKeyGradientExact);
+}
 
 // --- Sect. 4.1, two squares --------------------------------------------------
 TEST_CASE("4.1 velocity exchange: FAIL when B is twice as heavy", "[controls][4.1]") {
