@@ -34,9 +34,9 @@ CAUSES = {"paper_method": "paper's method", "missing_data": "missing data", "imp
 # Per driver: (paper, heading, the paper's statement, figure files under out/figures).
 # The statements quote or paraphrase the papers as the drivers' header comments cite them.
 DRIVERS = {
-    "3_1_contact_statements": ("Paper A", "Sects. 3.1.2 and 3.2.1: entrance block and the force as the energy gradient",
+    "3_1_contact_statements": ("Paper A", "Sects. 3.1.2, 3.2.1, 3.2.4: entrance block, the force as the energy gradient, Eq. 20",
                                "A and B overlap if and only if a0 lies in the entrance block E (Sect. 3.1.2); the "
-                               "normal force is the negative gradient of the contact energy (Eqs. 10-11).",
+                               "normal force is the negative gradient of the contact energy (Eqs. 10-11) and acts on a line through pg (Eq. 20).",
                                ["fig_contact_statements.png"]),
     "3_2_2_potential_fields": ("Paper A", "Sect. 3.2.2: the new potential function (Figs. 4b, 5)",
                                "The potential is defined at every point inside a polygon, zero on its boundary, "

@@ -11,6 +11,10 @@
 //    is a central difference of dda::contact_energy (exact, by cells), with
 //    the force from dda::normal_contact_force under the paper's segmentation
 //    (Sect. 3.2.3) and under the exact integration (not the paper's).
+//  - Sect. 3.2.4, Eq. 20: the resultant acts on a line through the loading
+//    point pg, so the contact's moment about pg vanishes; the reference is
+//    the moment as the energy's derivative, -dE/dtheta for CP turned about
+//    pg (central difference).
 // Each row function takes a Variant: the negative controls of
 // repro/common/test_controls.cpp apply the same criterion to a deliberately
 // wrong construction and must get FAIL.
@@ -34,6 +38,8 @@ namespace contact_statements {
 inline const char* const kKeyEntrance = "entrance-block-iff";
 inline const char* const kKeyGradientExact = "force-is-energy-gradient-exact";
 inline const char* const kKeyGradientPaper = "force-is-energy-gradient-paper";
+inline const char* const kKeyMomentExact = "zero-moment-about-pg-exact";
+inline const char* const kKeyMomentPaper = "zero-moment-about-pg-paper";
 
 struct Pair {
   dda::Polygon a, b;  // a: the contact polygon CP, b: the target TP
@@ -72,6 +78,7 @@ enum class Variant {
   kAsPublished,
   kEntranceWithoutReflection,  // E built as B + A + a0 (A not reflected)
   kForceWithoutTargetPotential,  // the force integrates phi_CP only (TP's kn / H set to 0 in the force)
+  kMomentAboutCentroid,          // the moment taken about the IP centroid instead of pg
 };
 
 // Sect. 3.1.2: overlap iff a0 inside E(A, B).
@@ -167,6 +174,49 @@ inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integratio
               "(grad E: central difference of the exact contact energy, step 1e-5 m)",
           "|f + grad E| / |grad E| < 1e-6 on every pair, at least 300 pairs", used >= 300 && beyond == 0,
           repro::Kind::kCheck, exact ? kKeyGradientExact : kKeyGradientPaper};
+}
+
+// Eq. 20: the moment about pg, -dE/dtheta for CP turned about pg by a
+// central difference (step kTurn), relative to |f| sqrt(IP area).
+inline repro::Claim moment_row(const std::vector<Pair>& pairs, dda::Integration rule,
+                               Variant variant = Variant::kAsPublished) {
+  constexpr double kKn = 1e6, kH = 1.0;  // Pa, m (as gradient_row)
+  constexpr double kTurn = 1e-6;         // rad, central-difference step
+  constexpr double kMinArea = 1e-3;      // m^2 (as gradient_row)
+  constexpr double kTolerance = 1e-6;    // relative: measured 2e-8 for the exact integration
+  int used = 0, beyond = 0;
+  double worst = 0.0;
+  for (const Pair& p : pairs) {
+    const double tol = dda::pair_tolerance(p.a, p.b);
+    const dda::Polygon ip = dda::intersection_polygon(p.a, p.b, tol);
+    if (ip.count < 3 || dda::area(ip) < kMinArea) continue;
+    const dda::PotentialSide cp{&p.a, kKn / kH, 0.0}, tp{&p.b, kKn / kH, 0.0};
+    const dda::NormalForce f = dda::normal_contact_force(cp, tp, ip, rule, tol);
+    if (!f.valid) continue;
+    const dda::Vec2 about = variant == Variant::kMomentAboutCentroid ? f.ip_centroid : f.point;
+    auto energy_turned = [&](double t) {
+      std::vector<dda::Vec2> v;
+      for (int i = 0; i < p.a.count; ++i) v.push_back(about + dda::rotate(p.a.vertex(i) - about, t));
+      const dda::Polygon a = dda::make_polygon(v.data(), p.a.count);
+      const dda::PotentialSide side{&a, kKn / kH, 0.0};
+      return dda::contact_energy(side, tp, dda::intersection_polygon(a, p.b, tol), tol);
+    };
+    const double moment = -(energy_turned(kTurn) - energy_turned(-kTurn)) / (2.0 * kTurn);
+    const double e = std::fabs(moment) / (dda::length(f.force) * std::sqrt(dda::area(ip)));
+    worst = std::max(worst, e);
+    beyond += e > kTolerance;
+    ++used;
+  }
+  const bool exact = rule == dda::Integration::kExactEnvelope;
+  return {"3.2.4",
+          std::string("the contact force acts on a line through pg: its moment about pg vanishes (Eq. 20), ") +
+              (exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)"),
+          "Eq. 20: the acting line is where the moment of the segment forces vanishes; pg lies on it",
+          std::to_string(used) + " random overlapping convex pairs: largest |M_pg| / (|f| sqrt(IP area)) " +
+              repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 (M_pg = -dE/dtheta "
+              "for CP turned about pg, central difference of the exact contact energy, step 1e-6 rad)",
+          "|M_pg| / (|f| sqrt(IP area)) < 1e-6 on every pair, at least 300 pairs", used >= 300 && beyond == 0,
+          repro::Kind::kCheck, exact ? kKeyMomentExact : kKeyMomentPaper};
 }
 
 }  // namespace contact_statements

@@ -63,6 +63,17 @@ TEST_CASE("3.2.1 energy gradient: FAIL when the force leaves out TP's potential"
   CHECK(c.key == cs::kKeyGradientExact);
 }
 
+TEST_CASE("3.2.4 moment about pg: FAIL about the IP centroid", "[controls][3.2]") {
+  // The same energy derivative taken about the IP centroid: the force's
+  // line misses it, so the moment there is not zero.
+  namespace cs = contact_statements;
+  const std::vector<cs::Pair> pairs = cs::random_pairs(1000, 3);
+  CHECK(cs::moment_row(pairs, dda::Integration::kExactEnvelope).pass);
+  const repro::Claim c = cs::moment_row(pairs, dda::Integration::kExactEnvelope, cs::Variant::kMomentAboutCentroid);
+  CHECK_FALSE(c.pass);
+  CHECK(c.key == cs::kKeyMomentExact);
+}
+
 // --- Sect. 4.1, two squares --------------------------------------------------
 TEST_CASE("4.1 velocity exchange: FAIL when B is twice as heavy", "[controls][4.1]") {
   dda::Scene s = dda::paper::two_squares();
