@@ -68,7 +68,8 @@ sanitize: deps
 DRIVERS := collapse toppling_slumping work_precision stability_maps extreme_cases \
            segmentation B_7_contact_comparison extreme_geometry potential_fields \
            previous_potential two_squares symmetric_stack incline bouncing_block \
-           small_angles small_edges B_6_two_prisms penetration_map contact_statements
+           small_angles small_edges B_6_two_prisms penetration_map contact_statements \
+           geometry_claims
 VERDICT_OUT ?= $(BUILD)/verdicts_out
 EXPECTED    := repro/expected_verdicts.csv
 

@@ -34,6 +34,8 @@ CAUSES = {"paper_method": "paper's method", "missing_data": "missing data", "imp
 # Per driver: (paper, heading, the paper's statement, figure files under out/figures).
 # The statements quote or paraphrase the papers as the drivers' header comments cite them.
 DRIVERS = {
+    "3_1_exact_geometry": ("Paper A", "Sect. 3.1.3: the intersection polygon, against CGAL's exact intersection",
+                           "The contact integrals run over the intersection polygon of the two blocks.", []),
     "3_1_contact_statements": ("Paper A", "Sects. 3.1.2, 3.2.1, 3.2.4: entrance block, the force as the energy gradient, Eq. 20",
                                "A and B overlap if and only if a0 lies in the entrance block E (Sect. 3.1.2); the "
                                "normal force is the negative gradient of the contact energy (Eqs. 10-11) and acts on a line through pg (Eq. 20).",

@@ -34,6 +34,13 @@ $(OUT)/figures/fig_contact_statements.png: $(OUT)/data/contact_statements/.done 
 FIGS += $(OUT)/figures/fig_contact_statements.png
 $(OUT)/report.md: $(OUT)/data/contact_statements/.done
 
+# --- Paper A Sect. 3.1.3: intersection polygon against CGAL (no figure) -------
+# (the program lives in property_tests/, the only directory that links CGAL)
+$(OUT)/data/exact_geometry/.done: $(BIN)/geometry_claims
+	$(BIN)/geometry_claims --out $(OUT)
+	@mkdir -p $(@D) && touch $@
+$(OUT)/report.md: $(OUT)/data/exact_geometry/.done
+
 # --- Paper A Sect. 3.2.2: potential fields, Figs. 4b and 5 -------------------
 $(OUT)/data/potential_fields/.done: $(BIN)/potential_fields
 	$(BIN)/potential_fields --out $(OUT)
