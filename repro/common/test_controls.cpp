@@ -6,11 +6,14 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "dda/paper_scenes.hpp"
 #include "repro/3_1_contact_statements/contact_statements.hpp"
+#include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/4_3_incline/incline.hpp"
@@ -72,6 +75,66 @@ TEST_CASE("3.2.4 moment about pg: FAIL about the IP centroid", "[controls][3.2]"
   const repro::Claim c = cs::moment_row(pairs, dda::Integration::kExactEnvelope, cs::Variant::kMomentAboutCentroid);
   CHECK_FALSE(c.pass);
   CHECK(c.key == cs::kKeyMomentExact);
+}
+
+// --- S1 work precision: the order, round-off and plateau criteria -------------
+namespace {
+// The errors of measure `m` of case `c` at four dts halving from `dt_hi`,
+// and their observed order (as the S1 sweep fits it).
+struct Curve {
+  std::vector<double> dts, errors;
+  repro::stab::Order order;
+};
+Curve s1_curve(const s1::Case& c, std::size_t m, double dt_hi) {
+  Curve k;
+  for (int i = 3; i >= 0; --i) k.dts.push_back(std::ldexp(dt_hi, -i));
+  for (double dt : k.dts) {
+    const s1::RunOut r = s1::monitored_run(c, dt);
+    REQUIRE(r.ok);
+    k.errors.push_back(r.errors[m]);
+  }
+  k.order = repro::stab::observed_order(k.dts, k.errors, c.measures[m].floor);
+  return k;
+}
+s1::Case s1_case(const std::string& scene) {
+  for (const s1::Case& c : s1::all_cases())
+    if (c.scene == scene) return c;
+  FAIL("no S1 case " << scene);
+  return {};
+}
+constexpr std::size_t kVertexPosition = 1;  // free rotation: area, vertex position
+constexpr std::size_t kArea = 0;
+constexpr std::size_t kDampedPosition = 0;  // damped flight: vertex position, kinetic energy, budget
+}  // namespace
+
+TEST_CASE("S1 order 2: FAIL on a first-order configuration", "[controls][S1]") {
+  // The spinning block with the paper's linearised rotation: first order.
+  const Curve k = s1_curve(s1::free_rotation_cases()[0], kVertexPosition, 2e-4);
+  CHECK(s1::order_met(k.order, 1.0, 0.3));
+  CHECK_FALSE(s1::order_met(k.order, 2.0, 0.3));
+}
+
+TEST_CASE("S1 order 1: FAIL on a second-order configuration", "[controls][S1]") {
+  // The damped flight (exact rotation, semi-implicit mass damping): second order.
+  const Curve k = s1_curve(s1_case("damped flight"), kDampedPosition, 2e-4);
+  CHECK(s1::order_met(k.order, 2.0, 0.3));
+  CHECK_FALSE(s1::order_met(k.order, 1.0, 0.3));
+}
+
+TEST_CASE("S1 round-off: FAIL on a first-order configuration", "[controls][S1]") {
+  // The paper's rotation grows a spinning block: its area is off by far more
+  // than round-off; the exact rotation keeps it (the criterion passes).
+  const Curve paper = s1_curve(s1::free_rotation_cases()[0], kArea, 2e-4);
+  const Curve exact = s1_curve(s1::free_rotation_cases()[1], kArea, 2e-4);
+  auto largest = [](const Curve& k) { return *std::max_element(k.errors.begin(), k.errors.end()); };
+  constexpr double kLevel = 1e-10;  // the largest level of the S1 round-off rows
+  CHECK(s1::roundoff_met(largest(exact), kLevel));
+  CHECK_FALSE(s1::roundoff_met(largest(paper), kLevel));
+}
+
+TEST_CASE("S1 plateau: FAIL on a converging curve", "[controls][S1]") {
+  const Curve k = s1_curve(s1_case("damped flight"), kDampedPosition, 2e-4);
+  CHECK_FALSE(s1::plateau_met(k.order));
 }
 
 // --- Sect. 4.1, two squares --------------------------------------------------

@@ -1,0 +1,177 @@
+// S1 work precision: every case at every dt, one monitored run for the
+// errors and timed unmonitored runs for the cost; the curves' observed
+// orders (repro::stab::observed_order).
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dda/simulation.hpp"
+#include "repro/S1_work_precision/work_precision.hpp"
+
+namespace s1 {
+namespace {
+using repro::format_short;
+// Timed runs per dt: 3, more for short runs where timer noise and the load
+// of a shared machine weigh more (a median of 5 or 9).
+int repeats_for(double seconds) { return seconds < 0.05 ? 9 : seconds < 0.2 ? 5 : 3; }
+std::string num(double x) { return repro::format_full(x); }
+}  // namespace
+
+// observe = false: the reference run (trajectory samples only).
+RunOut monitored_run(const Case& c, double dt, bool observe) {
+  RunOut r;
+  dda::Scene s = c.sc;
+  s.dt = dt;
+  try {
+    dda::Simulation sim(s);
+    Observer obs = observe ? c.observer() : Observer{};
+    obs.begin(sim);
+    r.ratio0 = dt / sim.predicted_critical_step();
+    r.ratio_max = dt / sim.critical_time_step();
+    r.samples.push_back(repro::stab::vertex_state(sim));
+    r.sample_times.push_back(0.0);
+    const long per_sample = std::lround(c.sample_every / dt);
+    const long total = std::lround(s.duration / dt);
+    const long ratio_every = 1 + total / 20000;  // dt/dt_crit in contact: at most ~20000 evaluations
+    for (long k = 1; k <= total; ++k) {
+      sim.step();
+      if (observe) obs.step(sim);
+      if (k % ratio_every == 0 && !sim.contacts().empty())
+        r.ratio_max = std::max(r.ratio_max, dt / sim.critical_time_step());
+      if (k % per_sample == 0) {
+        r.samples.push_back(repro::stab::vertex_state(sim));
+        r.sample_times.push_back(sim.time());
+      }
+    }
+    if (observe) r.errors = obs.end(sim);
+  } catch (const dda::SimulationError& e) {
+    r.ok = false;
+    r.message = e.what();
+  }
+  return r;
+}
+
+repro::stab::Timing timed_run(const dda::Scene& sc, double dt) {
+  dda::Scene s = sc;
+  s.dt = dt;
+  auto run = [&] {
+    dda::Simulation sim(s);
+    const long total = std::lround(s.duration / dt);
+    for (long k = 0; k < total; ++k) sim.step();
+  };
+  const repro::stab::Timing first = repro::stab::median_time(1, run);
+  return repro::stab::median_time(repeats_for(first.wall), run);
+}
+
+std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::string& dir, References& references,
+                                const repro::Progress& progress) {
+  repro::CsvWriter runs(dir + "/runs.csv",
+                        {"scene", "option", "measure", "dt", "dt_over_crit_start", "dt_over_crit_max", "wall_s",
+                         "cpu_s", "error", "local_order", "status"},
+                        {"S1 work precision: error (relative, or m where the measure says so) against the median "
+                         "wall time (steady_clock) and CPU time of 3 to 9 unmonitored runs (more for short runs); "
+                         "empty error: the run stopped (status says why)"});
+  std::vector<CurveSummary> curves;
+  for (const Case& c : cases) {
+    std::vector<RunOut> res;
+    std::vector<repro::stab::Timing> times;
+    for (double dt : c.dts) {
+      res.push_back(monitored_run(c, dt));
+      times.push_back(res.back().ok ? timed_run(c.sc, dt) : repro::stab::Timing{});
+    }
+    // Reference run for the trajectory measures.
+    RunOut ref;
+    if (!c.trajectory_windows.empty()) {
+      ref = monitored_run(c, c.dts.front() / 16.0, false);
+      if (!ref.ok) throw std::runtime_error(c.scene + ", " + c.option + ": reference run stopped: " + ref.message);
+      references.push_back({c.scene + " | " + c.option, ref.samples});
+    }
+    // Errors per measure.
+    std::vector<std::string> names;
+    std::vector<std::string> refs;
+    std::vector<double> floors;
+    for (const Measure& m : c.measures) {
+      names.push_back(m.name);
+      refs.push_back(m.reference);
+      floors.push_back(m.floor);
+    }
+    for (const std::string& n : c.trajectory_names) {
+      names.push_back(n + " (m)");
+      refs.push_back("converged run at dt = " + format_short(c.dts.front() / 16.0) + " s");
+      floors.push_back(1e-12);
+    }
+    const std::size_t nm = names.size();
+    std::vector<std::vector<double>> err(nm, std::vector<double>(c.dts.size(), -1.0));
+    for (std::size_t k = 0; k < c.dts.size(); ++k) {
+      const RunOut& r = res[k];
+      if (!r.ok) continue;
+      for (std::size_t m = 0; m < c.measures.size(); ++m) err[m][k] = r.errors[m];
+      for (std::size_t w = 0; w < c.trajectory_windows.size(); ++w) {
+        double e = 0.0;
+        // Samples of this run at the reference's times (both every sample_every).
+        for (std::size_t s = 0; s < r.samples.size(); ++s) {
+          if (r.sample_times[s] > c.trajectory_windows[w] + 1e-9) break;
+          if (std::fabs(ref.sample_times[s] - r.sample_times[s]) > 1e-9)
+            throw std::runtime_error("sample times differ: " + c.scene);
+          e = std::max(e, repro::stab::max_abs_difference(r.samples[s], ref.samples[s]));
+        }
+        err[c.measures.size() + w][k] = e;
+      }
+    }
+    for (std::size_t m = 0; m < nm; ++m) {
+      CurveSummary cs;
+      cs.scene = c.scene;
+      cs.option = c.option;
+      cs.measure = names[m];
+      cs.reference = refs[m];
+      cs.order = repro::stab::observed_order(c.dts, err[m], floors[m]);
+      cs.order_all = repro::stab::observed_order(c.dts, err[m], floors[m], 100);
+      for (std::size_t k = 0; k < c.dts.size(); ++k) {
+        const RunOut& r = res[k];
+        double local = std::numeric_limits<double>::quiet_NaN();
+        if (k > 0 && err[m][k] > floors[m] && err[m][k - 1] > floors[m])
+          local = std::log(err[m][k] / err[m][k - 1]) / std::log(c.dts[k] / c.dts[k - 1]);
+        runs.row(std::vector<std::string>{
+            c.scene, c.option, names[m], num(c.dts[k]), num(r.ratio0), r.ok ? num(r.ratio_max) : "",
+            r.ok ? num(times[k].wall) : "", r.ok ? num(times[k].cpu) : "", r.ok ? num(err[m][k]) : "",
+            std::isfinite(local) ? num(local) : "",
+            r.ok ? "ok" : "stopped: " + r.message});
+        if (std::fabs(c.dts[k] - c.paper_dt) < 1e-12 * c.paper_dt) {
+          cs.error_at_paper = r.ok ? err[m][k] : -1.0;
+          cs.wall_at_paper = r.ok ? times[k].wall : -1.0;
+          cs.cpu_at_paper = r.ok ? times[k].cpu : -1.0;
+          cs.ratio_at_paper = r.ratio0;
+        }
+        if (r.ok) {
+          cs.largest_stable_ratio = std::max(cs.largest_stable_ratio, r.ratio0);
+          cs.max_error = std::max(cs.max_error, err[m][k]);
+        }
+        if (!r.ok && cs.first_failure.empty()) cs.first_failure = r.message;
+      }
+      curves.push_back(cs);
+    }
+    progress(c.scene + ", " + c.option + ": done");
+  }
+  runs.commit();
+
+  repro::CsvWriter orders(dir + "/orders.csv",
+                          {"scene", "option", "measure", "reference", "order", "fit_points", "fit_dt_lo", "fit_dt_hi",
+                           "order_all_stable",
+                           "error_at_paper_dt", "wall_at_paper_dt", "cpu_at_paper_dt", "paper_dt_over_crit",
+                           "largest_stable_dt_over_crit", "note"});
+  for (const CurveSummary& cs : curves)
+    orders.row(std::vector<std::string>{
+        cs.scene, cs.option, cs.measure, cs.reference, cs.order.valid() ? num(cs.order.p) : "",
+        std::to_string(cs.order.used), cs.order.valid() ? num(cs.order.dt_lo) : "",
+        cs.order.valid() ? num(cs.order.dt_hi) : "", cs.order_all.valid() ? num(cs.order_all.p) : "",
+        cs.error_at_paper >= 0.0 ? num(cs.error_at_paper) : "",
+        cs.wall_at_paper >= 0.0 ? num(cs.wall_at_paper) : "", cs.cpu_at_paper >= 0.0 ? num(cs.cpu_at_paper) : "",
+        num(cs.ratio_at_paper), num(cs.largest_stable_ratio),
+        cs.order.note});
+  orders.commit();
+  return curves;
+}
+
+}  // namespace s1

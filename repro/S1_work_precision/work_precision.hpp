@@ -1,0 +1,126 @@
+// S1 work precision (see work_precision.cpp for what it measures): the
+// scenes with a reference (cases.cpp), the dt sweep (sweep.cpp) and the
+// claim rows with their criteria (claims.cpp). The criteria are functions
+// here so that the negative controls (repro/common/test_controls.cpp) apply
+// the same ones to a deliberately wrong configuration.
+#pragma once
+#include <cmath>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dda/scene.hpp"
+#include "dda/simulation.hpp"
+#include "repro/S_common/stability.hpp"
+#include "repro/common/claims.hpp"
+#include "repro/common/common.hpp"
+
+namespace s1 {
+
+// ---- one scene, one option ----------------------------------------------
+
+// Observes a monitored run: begin() after construction, step() after every
+// step, end() returns the errors of the analytic measures (in the order of
+// Case::measures).
+struct Observer {
+  std::function<void(const dda::Simulation&)> begin = [](const dda::Simulation&) {};
+  std::function<void(const dda::Simulation&)> step = [](const dda::Simulation&) {};
+  std::function<std::vector<double>(const dda::Simulation&)> end;
+};
+
+struct Measure {
+  std::string name;       // e.g. "energy"
+  std::string reference;  // e.g. "exact conservation"
+  double floor = 1e-13;   // round-off level: errors below it are not fitted
+};
+
+struct Case {
+  std::string scene, option;  // "4.1 two squares", "paper, H unified"
+  dda::Scene sc;
+  double paper_dt = 0.0;
+  std::vector<double> dts;  // ascending
+  double sample_every = 0.0;  // s, a multiple of every dt
+  std::vector<Measure> measures;
+  std::function<Observer()> observer;
+  // Trajectory measures against a run at dts[0] / 16: one per window end
+  // (s); empty: none. Names "trajectory" / "trajectory to t = ..".
+  std::vector<double> trajectory_windows;
+  std::vector<std::string> trajectory_names;
+};
+
+struct RunOut {
+  bool ok = true;
+  std::string message;
+  double ratio0 = 0.0, ratio_max = 0.0;
+  std::vector<double> errors;                // analytic measures
+  std::vector<std::vector<double>> samples;  // vertex states at sample times
+  std::vector<double> sample_times;
+};
+
+// One monitored run at dt (observe = false: the reference run, trajectory
+// samples only); a SimulationError ends it with ok = false.
+RunOut monitored_run(const Case& c, double dt, bool observe = true);
+// Median wall and CPU time of unmonitored runs of the scene at dt.
+repro::stab::Timing timed_run(const dda::Scene& sc, double dt);
+
+// ---- scenes (cases.cpp) ----------------------------------------------------
+std::vector<Case> all_cases();
+std::vector<Case> free_rotation_cases();  // [0] the paper's rotation, [1] exact (not the paper's)
+
+// The resting block (our scene): rigid A (1 m square) on a fixed 4 m x 1 m
+// block B, A released `sunk` deep; its static and deepest penetrations.
+struct Resting {
+  dda::Scene sc;
+  double h_a = 0.0, h_b = 0.0, weight = 0.0, length = 1.0;
+  double static_pen() const {  // f(delta) = W
+    const double s = 1.0 / h_a + 1.0 / h_b, kn = sc.contact.kn;
+    return 0.5 * h_a * (length * s - std::sqrt(length * length * s * s - 4.0 * weight / (kn * h_a)));
+  }
+  double max_pen() const {  // int_0^delta f = W delta
+    const double s = 1.0 / h_a + 1.0 / h_b, kn = sc.contact.kn;
+    return 1.5 * h_a * (0.5 * length * s - std::sqrt(0.25 * length * length * s * s - 4.0 * weight / (3.0 * kn * h_a)));
+  }
+};
+
+Resting resting_block(dda::HRule h, double sunk);
+// A's depth below B's top (y = 0), m.
+double penetration(const dda::Simulation& sim);
+
+// ---- sweep (sweep.cpp) -----------------------------------------------------
+
+struct CurveSummary {
+  std::string scene, option, measure, reference;
+  repro::stab::Order order;      // over the 4 smallest dt above round-off
+  repro::stab::Order order_all;  // over every dt that ran (robust to one lucky cancellation)
+  double error_at_paper = -1.0, wall_at_paper = -1.0, cpu_at_paper = -1.0, ratio_at_paper = 0.0;
+  double largest_stable_ratio = 0.0;  // dt/dt_crit (predicted) of the largest dt that ran through
+  double max_error = 0.0;             // over every dt that ran through
+  std::string first_failure;          // message of the smallest dt that stopped
+};
+
+// Converged trajectories by "scene | option" (reference-run samples).
+using References = std::vector<std::pair<std::string, std::vector<std::vector<double>>>>;
+
+// Runs every case at every dt, writes dir/runs.csv and dir/orders.csv, and
+// returns one summary per (case, measure); fills `references`.
+std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::string& dir, References& references,
+                                const repro::Progress& progress);
+
+// ---- criteria and claims (claims.cpp) --------------------------------------
+
+// An observed order within tol of the expected one.
+bool order_met(const repro::stab::Order& order, double expected, double tol);
+// Every error over the sweep below the round-off level.
+bool roundoff_met(double max_error, double level);
+// The fitted errors within a factor 1.5 (a model error dt does not reduce).
+bool plateau_met(const repro::stab::Order& order);
+// The negative controls (test_controls.cpp) named by the rows.
+inline const char* const kControlOrder2 = "repro_controls: S1 order 2: FAIL on a first-order configuration";
+inline const char* const kControlOrder1 = "repro_controls: S1 order 1: FAIL on a second-order configuration";
+inline const char* const kControlRoundoff = "repro_controls: S1 round-off: FAIL on a first-order configuration";
+inline const char* const kControlPlateau = "repro_controls: S1 plateau: FAIL on a converging curve";
+
+std::vector<repro::Claim> claim_rows(const std::vector<CurveSummary>& curves, const References& references);
+
+}  // namespace s1
