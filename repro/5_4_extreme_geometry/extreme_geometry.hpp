@@ -1,0 +1,62 @@
+// Beyond Paper A Sect. 5 (extreme_geometry.cpp says what it measures): the
+// cases, one attempt at a dt, and the "clean" criterion, here so that the
+// negative controls (repro/common/test_controls.cpp) apply the same one.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dda/contact.hpp"
+#include "dda/scene.hpp"
+#include "dda/simulation.hpp"
+
+namespace extreme {
+
+// A scene plus what to watch in it.
+struct Case {
+  std::string family;     // "5.1", "5.2", "5.3"
+  std::string label;      // e.g. "B height 1e-3 m, unified H"
+  double parameter = 0.0; // the swept size (m or deg)
+  dda::Scene scene;
+  int a = 0, b = 1;       // the contact pair
+  int pushed = 1;         // block whose normal force must point up (+y)
+  bool apart_at_end = true;  // must the pair be apart at the end?
+  double floor_y = -1e300;   // 5.1: A's lowest point must stay above this
+  double thin_height = 0.0;  // 5.1: B's height (the block that may be pierced), m
+  // Symmetry error of the current state; empty if the scene has none.
+  std::function<double(const dda::Simulation&)> asymmetry;
+};
+
+struct Outcome {
+  bool finished = false, clean = false;
+  bool flip = false, pierced = false, energy_bad = false, asymmetric = false, still_touching = false;
+  std::string verdict;  // "clean" or the reason
+  double dt = 0.0, dt_crit = 0.0;
+  double dt_strain = 0.0;  // stability limit of the blocks' own strain modes alone, s
+  double energy_error = 0.0, energy_growth = 0.0;
+  double asymmetry = -1.0;  // -1: not applicable
+  double thickness = 0.0, depth = 0.0;
+  double min_push = 0.0;   // most negative normal force on the pushed block along y, N
+  double below = 0.0;      // 5.1: how far A's base went below B's bottom, m (0 if never)
+  double max_up = 0.0;     // largest upward velocity of the pushed block after the first contact, m/s
+  double seconds = 0.0;
+  long steps = 0;
+};
+
+// One run of case c at dt (motion_guard false: the step-motion guard off),
+// judged by the criterion of the rows: clean if it finishes, shows no
+// flip-through (the pushed block's normal force never pulls it in; for 5.1
+// it does not end below B), is not pierced, is apart at the end where it
+// must be, has an energy error < 1 % and, where the scene is symmetric, an
+// asymmetry < 1e-9 m.
+Outcome attempt(const Case& c, double dt, bool motion_guard,
+                dda::Integration integration = dda::Integration::kPaperBisector);
+
+// The 5.1, 5.2 and 5.3 cases of the sweep (paper sizes first).
+std::vector<Case> make_cases();
+
+// Summary of one outcome for the report row; pm: 3 significant digits.
+std::string describe(const Outcome& o);
+std::string pm(double x);
+
+}  // namespace extreme
