@@ -13,6 +13,7 @@
 
 #include "dda/paper_scenes.hpp"
 #include "repro/3_1_contact_statements/contact_statements.hpp"
+#include "repro/3_2_2_potential_fields/potential_fields.hpp"
 #include "repro/5_4_extreme_geometry/extreme_geometry.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
@@ -76,6 +77,39 @@ TEST_CASE("3.2.4 moment about pg: FAIL about the IP centroid", "[controls][3.2]"
   const repro::Claim c = cs::moment_row(pairs, dda::Integration::kExactEnvelope, cs::Variant::kMomentAboutCentroid);
   CHECK_FALSE(c.pass);
   CHECK(c.key == cs::kKeyMomentExact);
+}
+
+// --- Sect. 3.2.2, potential fields: the checks shared by Figs. 4b and 5 ---------
+TEST_CASE("3.2.2 potential field: FAIL on an offset, a shifted and a doubled field", "[controls][3.2.2]") {
+  // The Fig. 4b polygon's grid filled with Eq. 12's field and with three
+  // wrong ones; add_common_claims gives rows [0] zero on the boundary and
+  // positive inside, [1] defined everywhere inside, [2] slope <= kn/H.
+  namespace pf = potential_fields;
+  const std::vector<dda::Vec2> pts = pf::small_edge_polygon();
+  const dda::Polygon poly = dda::make_polygon(pts.data(), static_cast<int>(pts.size()));
+  auto rows = [&](auto phi) {
+    pf::Grid g = pf::make_grid(pts);
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const std::size_t k = g.idx(i, j);
+        g.inside[k] = dda::locate_point(poly, g.at(i, j)) == dda::PointLocation::kInside;
+        g.phi[k] = phi(g.at(i, j));
+      }
+    std::vector<repro::Claim> c;
+    pf::add_common_claims(c, "control", g, pf::boundary_max_abs(pts, phi));
+    REQUIRE(c.size() == 3);
+    return c;
+  };
+  const double k = pf::kKn / pf::kH;
+  auto eq12 = [&](dda::Vec2 p) { return dda::potential(poly, p, pf::kKn, pf::kH); };
+  const auto good = rows(eq12);
+  for (const repro::Claim& c : good) CHECK(c.pass);
+  // Offset by 1 cm: not zero on the boundary.
+  CHECK_FALSE(rows([&](dda::Vec2 p) { return eq12(p) + 0.01 * k; })[0].pass);
+  // Shifted 5 cm inward: phi <= 0 in a band inside the boundary.
+  CHECK_FALSE(rows([&](dda::Vec2 p) { return k * (dda::exit_distance(poly, p) - 0.05); })[1].pass);
+  // Doubled (H / 2 in the field only): slope 2 kn/H.
+  CHECK_FALSE(rows([&](dda::Vec2 p) { return 2.0 * eq12(p); })[2].pass);
 }
 
 // --- S1 work precision: the order, round-off and plateau criteria -------------

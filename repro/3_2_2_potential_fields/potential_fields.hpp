@@ -1,0 +1,254 @@
+// Paper A Sect. 3.2.2 (potential_fields.cpp says what it reproduces): the
+// reconstructed polygons, the potential grids and the checks shared by both
+// figures, here so that the negative controls (repro/common/test_controls.cpp)
+// apply the same criteria to a deliberately wrong field.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dda/polygon.hpp"
+#include "dda/potential.hpp"
+#include "repro/common/common.hpp"
+
+namespace potential_fields {
+
+using dda::Vec2;
+using repro::Claim;
+using repro::format_short;
+
+constexpr double kKn = 1.0;  // Pa, Paper A Sect. 3.2.2
+constexpr double kH = 1.0;   // m
+constexpr int kGridCells = 300;        // grid cells along the longer side
+constexpr int kBoundarySamples = 200;  // samples per edge for the boundary check
+const char* const kSection = "3.2.2";
+// The negative control of the checks every field gets (add_common_claims).
+const char* const kFieldControl =
+    "repro_controls: 3.2.2 potential field: FAIL on an offset, a shifted and a doubled field";
+
+// ---- geometry -------------------------------------------------------------
+
+// Replaces corner i of a closed polyline by two points on its neighbouring
+// edges so that the new (cut) edge has length `len`.
+inline std::vector<Vec2> cut_corner(const std::vector<Vec2>& pts, std::size_t i, double len) {
+  const std::size_t n = pts.size();
+  const Vec2 v = pts[i], a = pts[(i + n - 1) % n], b = pts[(i + 1) % n];
+  const Vec2 ua = dda::normalized(a - v), ub = dda::normalized(b - v);
+  const double t = len / dda::length(ua - ub);
+  std::vector<Vec2> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == i) {
+      out.push_back(v + t * ua);
+      out.push_back(v + t * ub);
+    } else {
+      out.push_back(pts[k]);
+    }
+  }
+  return out;
+}
+
+// (a) Reconstructed Fig. 4b polygon: a ~1.2 m convex pentagon whose corners
+// 1 and 3 are cut by edges of 0.03 m and 0.05 m.
+inline std::vector<Vec2> small_edge_polygon() {
+  std::vector<Vec2> p = {{0.0, 0.0}, {1.0, -0.05}, {1.15, 0.55}, {0.55, 1.0}, {-0.1, 0.65}};
+  p = cut_corner(p, 3, 0.05);  // cut the later corner first: indices below stay valid
+  p = cut_corner(p, 1, 0.03);
+  return p;
+}
+
+// (b) Reconstructed Fig. 5 polygon: simple, CCW, 13 vertices, 4 reflex.
+inline std::vector<Vec2> concave_polygon() {
+  return {{0.0, 0.0},  {0.55, 0.05}, {0.7, 0.35},  {0.85, 0.1}, {1.3, 0.15}, {1.2, 0.5},  {0.95, 0.55},
+          {1.25, 0.95}, {0.75, 1.1},  {0.55, 0.75}, {0.3, 1.05}, {-0.05, 0.8}, {0.2, 0.5}};
+}
+
+inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 e = b - a;
+  const double ee = dda::dot(e, e);
+  const double t = ee > 0.0 ? std::clamp(dda::dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
+  return dda::distance(p, a + t * e);
+}
+
+// Shortest distance from p to the boundary of the closed polygon `pts`.
+inline double boundary_distance(const std::vector<Vec2>& pts, Vec2 p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < pts.size(); ++i) d = std::min(d, segment_distance(p, pts[i], pts[(i + 1) % pts.size()]));
+  return d;
+}
+
+// Crossing-number point-in-polygon test (any simple polygon).
+inline bool inside_simple(const std::vector<Vec2>& pts, Vec2 p) {
+  bool in = false;
+  for (std::size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
+    const Vec2 a = pts[i], b = pts[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
+  }
+  return in;
+}
+
+inline double signed_area(const std::vector<Vec2>& pts) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < pts.size(); ++i) s += dda::cross(pts[i], pts[(i + 1) % pts.size()]);
+  return 0.5 * s;
+}
+
+inline bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double o1 = dda::cross(b - a, c - a), o2 = dda::cross(b - a, d - a);
+  const double o3 = dda::cross(d - c, a - c), o4 = dda::cross(d - c, b - c);
+  return ((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0));
+}
+
+// Throws unless the polygon is simple (no two non-adjacent edges cross) and CCW.
+inline void check_simple_ccw(const std::vector<Vec2>& pts) {
+  const std::size_t n = pts.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
+      if (segments_cross(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]))
+        throw std::runtime_error("concave polygon: edges " + std::to_string(i) + " and " + std::to_string(j) + " cross");
+    }
+  if (signed_area(pts) <= 0.0) throw std::runtime_error("concave polygon: not counter-clockwise");
+}
+
+inline int reflex_count(const std::vector<Vec2>& pts) {
+  int r = 0;
+  const std::size_t n = pts.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (dda::cross(pts[i] - pts[(i + n - 1) % n], pts[(i + 1) % n] - pts[i]) < 0.0) ++r;
+  return r;
+}
+
+// ---- fields ----------------------------------------------------------------
+
+struct Grid {
+  int nx = 0, ny = 0;
+  double x0 = 0, y0 = 0, h = 0;
+  std::vector<double> d_exit, phi;
+  std::vector<char> inside;
+  Vec2 at(int i, int j) const { return {x0 + i * h, y0 + j * h}; }
+  std::size_t idx(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i); }
+};
+
+inline Grid make_grid(const std::vector<Vec2>& pts) {
+  Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (Vec2 p : pts) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  const double span = std::max(hi.x - lo.x, hi.y - lo.y);
+  const double margin = 0.04 * span;
+  Grid g;
+  g.h = (span + 2 * margin) / kGridCells;
+  g.x0 = lo.x - margin;
+  g.y0 = lo.y - margin;
+  g.nx = static_cast<int>(std::ceil((hi.x - lo.x + 2 * margin) / g.h)) + 1;
+  g.ny = static_cast<int>(std::ceil((hi.y - lo.y + 2 * margin) / g.h)) + 1;
+  const std::size_t n = static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ny);
+  g.d_exit.assign(n, 0.0);
+  g.phi.assign(n, 0.0);
+  g.inside.assign(n, 0);
+  return g;
+}
+
+inline void write_grid(const std::string& path, const Grid& g, std::vector<std::string> comments) {
+  comments.push_back("grid nx=" + std::to_string(g.nx) + " ny=" + std::to_string(g.ny) + " spacing_m=" +
+                     repro::format_full(g.h) + "; rows y-major (x varies fastest); phi in Pa, lengths in m");
+  repro::CsvWriter w(path, {"x", "y", "inside", "d_exit", "phi"}, comments);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const Vec2 p = g.at(i, j);
+      const std::size_t k = g.idx(i, j);
+      w.row({p.x, p.y, g.inside[k] ? 1.0 : 0.0, g.d_exit[k], g.phi[k]});
+    }
+  w.commit();
+}
+
+inline void write_outline(const std::string& path, const std::vector<Vec2>& pts, const std::vector<std::string>& comments) {
+  repro::CsvWriter w(path, {"vertex", "x", "y", "edge_length"}, comments);
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    w.row({static_cast<double>(i), pts[i].x, pts[i].y, dda::distance(pts[i], pts[(i + 1) % pts.size()])});
+  w.commit();
+}
+
+// ---- checks shared by both polygons -----------------------------------------
+
+// Max |phi| at points sampled along every edge (vertices included).
+template <class Phi>
+inline double boundary_max_abs(const std::vector<Vec2>& pts, Phi phi) {
+  double m = 0.0;
+  for (std::size_t e = 0; e < pts.size(); ++e)
+    for (int s = 0; s <= kBoundarySamples; ++s) {
+      const Vec2 p = dda::lerp(pts[e], pts[(e + 1) % pts.size()], static_cast<double>(s) / kBoundarySamples);
+      const double v = phi(p);
+      m = std::isfinite(v) ? std::max(m, std::fabs(v)) : std::numeric_limits<double>::infinity();
+    }
+  return m;
+}
+
+struct InteriorStats {
+  long interior = 0, undefined = 0;  // undefined: phi <= 0 or non-finite
+  double min_phi = std::numeric_limits<double>::infinity();
+  double max_phi = 0.0;
+};
+
+inline InteriorStats interior_stats(const Grid& g) {
+  InteriorStats s;
+  for (std::size_t k = 0; k < g.phi.size(); ++k) {
+    if (!g.inside[k]) continue;
+    ++s.interior;
+    const double v = g.phi[k];
+    if (!std::isfinite(v) || v <= 0.0) ++s.undefined;
+    if (std::isfinite(v)) {
+      s.min_phi = std::min(s.min_phi, v);
+      s.max_phi = std::max(s.max_phi, v);
+    }
+  }
+  return s;
+}
+
+// Largest |phi(neighbour) - phi| / spacing over horizontally and vertically
+// adjacent grid points (inside and outside): the continuity / slope check.
+inline double max_slope(const Grid& g) {
+  double m = 0.0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double v = g.phi[g.idx(i, j)];
+      if (i + 1 < g.nx) m = std::max(m, std::fabs(g.phi[g.idx(i + 1, j)] - v) / g.h);
+      if (j + 1 < g.ny) m = std::max(m, std::fabs(g.phi[g.idx(i, j + 1)] - v) / g.h);
+    }
+  return m;
+}
+
+inline std::string figure_tag(const std::string& fig) { return fig + " (reconstructed polygon)"; }
+
+inline void add_common_claims(std::vector<Claim>& claims, const std::string& fig, const Grid& g, double bmax) {
+  const InteriorStats s = interior_stats(g);
+  const double zero_tol = 1e-12 * kKn / kH;  // round-off of a unit-size coordinate difference
+  claims.push_back({kSection, figure_tag(fig) + ": potential is zero on the boundary and positive inside",
+                    "Eq. 12: phi = 0 outside, kn*d_exit/H inside; 'potential values of any points on polygon "
+                    "boundary should be equal'",
+                    "max |phi| on boundary = " + format_short(bmax, 3) + " Pa; min phi at " +
+                        std::to_string(s.interior) + " interior grid points = " + format_short(s.min_phi, 4) + " Pa",
+                    "boundary <= " + format_short(zero_tol, 2) + " Pa; interior min > 0",
+                    bmax <= zero_tol && s.interior > 0 && s.min_phi > 0.0});
+  claims.back().control = kFieldControl;
+  claims.push_back({kSection, figure_tag(fig) + ": every interior point has a defined potential (no undefined inner region)",
+                    "'the proposed definition ensures the potential value can be obtained for each point inside a "
+                    "polygon' (Fig. 4a's previous definition leaves a large inner part undefined)",
+                    std::to_string(s.undefined) + " of " + std::to_string(s.interior) +
+                        " interior grid points with phi <= 0 or non-finite",
+                    "0 points", s.interior > 0 && s.undefined == 0});
+  claims.back().control = kFieldControl;
+  const double slope = max_slope(g);
+  claims.push_back({kSection, figure_tag(fig) + ": phi is continuous with slope at most kn/H",
+                    "d_exit is a shortest distance, so it changes no faster than p moves (kn/H = 1 Pa/m)",
+                    "max |finite difference| over " + std::to_string(g.nx) + "x" + std::to_string(g.ny) +
+                        " grid = " + format_short(slope, 6) + " Pa/m",
+                    "<= kn/H * (1 + 1e-9)", slope <= (kKn / kH) * (1.0 + 1e-9)});
+  claims.back().control = kFieldControl;
+}
+
+}  // namespace potential_fields
