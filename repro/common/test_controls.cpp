@@ -15,6 +15,7 @@
 #include "repro/3_1_contact_statements/contact_statements.hpp"
 #include "repro/3_2_2_potential_fields/potential_fields.hpp"
 #include "repro/5_4_extreme_geometry/extreme_geometry.hpp"
+#include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
@@ -211,6 +212,35 @@ TEST_CASE("5.4 clean: FAIL on a damped, an asymmetric and a pierced run", "[cont
   INFO(f.verdict);
   CHECK_FALSE(f.clean);
   CHECK((f.flip || f.pierced));
+}
+
+// --- Sect. 6.2, toppling and slumping: the mechanism criteria ------------------
+TEST_CASE("6.2 toppling, slumping, premise: FAIL with locked joints, a rough base and a gentle friction",
+          "[controls][6.2]") {
+  // Each criterion of the 6.2 rows on a configuration that removes what it
+  // looks for (3.5 s, the paper's duration; about 5 s of runs).
+  const dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping();
+  // Joints locked (80 deg): nothing topples, and the joints carry no slip
+  // beyond what the same locked model does.
+  dda::Scene locked = ts.scene;
+  locked.contact.friction_deg = 80.0;
+  const topple::Control l = topple::run_control(ts, locked, ts.side, 1, "control: joints locked");
+  CHECK_FALSE(topple::topples(l.right, l.right));
+  CHECK_FALSE(topple::joints_carry_slip(l.left, l.left));
+  // A rough base (80 deg on the sliding base): the left slope cannot slide
+  // down it, so it does not slump.
+  dda::Scene rough = ts.scene;
+  rough.contact.friction_rules = {{dda::paper::kRockGroup, dda::paper::kBoundaryGroup, 80.0}};
+  const topple::Control r = topple::run_control(ts, rough, ts.side, 1, "control: rough base");
+  INFO("left base slip on a rough base " << r.left.base_slip << " m");
+  CHECK_FALSE(topple::slumps(r.left, r.right));
+  // Each slope as one block on a base with 20 deg friction (< the 30 deg
+  // slope): it slides, and the premise row must see it.
+  dda::Scene gentle = topple::one_block_per_slope(ts);
+  gentle.contact.friction_rules = {{dda::paper::kRockGroup, dda::paper::kBoundaryGroup, 20.0}};
+  const topple::Control g = topple::run_control(ts, gentle, {-1, +1}, 1, "control: base friction 20 deg");
+  INFO("one block per slope, base friction 20 deg: left slip " << g.left.base_slip << " m");
+  CHECK_FALSE(topple::stays(g));
 }
 
 // --- Sect. 4.1, two squares --------------------------------------------------
