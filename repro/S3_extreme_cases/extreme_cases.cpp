@@ -41,209 +41,13 @@
 // in ctest).
 //
 // Output: data/extreme_cases/table.csv, data/extreme_cases/guard_series.csv,
-// claims/S3_extreme_cases.csv.
-#include <cmath>
-#include <limits>
-#include <string>
+// claims/S3_extreme_cases.csv.#include <string>
 #include <vector>
 
-#include "dda/overlap.hpp"
-#include "dda/paper_scenes.hpp"
-#include "dda/potential.hpp"
-#include "dda/simulation.hpp"
-#include "repro/S_common/stability.hpp"
+#include "repro/S3_extreme_cases/extreme_cases.hpp"
 #include "repro/common/common.hpp"
 
-namespace {
-using dda::Vec2;
-using repro::format_short;
-using repro::stab::RunClass;
-
-std::string num(double x) { return repro::format_full(x); }
-
-std::vector<Vec2> rect(double x0, double y0, double w, double h) {
-  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
-
-struct Extreme {
-  std::string name, parameter;
-  dda::Scene scene;
-  double duration = 1.0;
-  double va_expected = 0.0, vb_expected = 0.0;  // x-velocities after the impact (rigid 1D elastic)
-  double v0 = 1.0;
-};
-
-// Out of line: GCC 12 warns (falsely, -Wmaybe-uninitialized) about Scene's
-// default member initialisers when the constructor is inlined into cases().
-[[gnu::noinline]] Extreme new_case() { return Extreme{}; }
-
-dda::Scene base_scene() {
-  dda::Scene s = dda::paper::two_squares();
-  s.blocks.clear();
-  return s;
-}
-
-dda::BlockSpec block(std::vector<Vec2> v, Vec2 vel, int material = 0) {
-  dda::BlockSpec b;
-  b.vertices = std::move(v);
-  b.velocity = vel;
-  b.material = material;
-  return b;
-}
-
-void set_expected(Extreme& e, double ma, double mb) {
-  e.va_expected = (ma - mb) / (ma + mb) * e.v0;
-  e.vb_expected = 2.0 * ma / (ma + mb) * e.v0;
-}
-
-std::vector<Extreme> cases() {
-  std::vector<Extreme> out;
-  for (double ratio : {1e4, 1e-4}) {
-    Extreme e = new_case();
-    e.name = "mass ratio";
-    e.parameter = "m_A / m_B = " + format_short(ratio);
-    e.scene = base_scene();
-    e.scene.materials = {{2000.0, 1e9, 0.25}, {2000.0 * ratio, 1e9, 0.25}};
-    e.scene.blocks = {block(rect(-1.1, -0.5, 1.0, 1.0), {1.0, 0.0}, 1), block(rect(0.0, -0.5, 1.0, 1.0), {}, 0)};
-    e.duration = 0.4;
-    set_expected(e, ratio, 1.0);
-    out.push_back(e);
-  }
-  for (double v : {1.0, 10.0, 100.0}) {
-    Extreme e = new_case();
-    e.name = "impact speed";
-    e.parameter = format_short(v) + " m/s";
-    e.scene = base_scene();
-    e.v0 = v;
-    e.scene.blocks = {block(rect(-1.001, -0.5, 1.0, 1.0), {v, 0.0}), block(rect(0.0, -0.5, 1.0, 1.0), {})};
-    e.duration = 0.1;
-    set_expected(e, 1.0, 1.0);
-    out.push_back(e);
-  }
-  {
-    Extreme e = new_case();
-    e.name = "size ratio";
-    e.parameter = "0.01 m square hits a 10 m square (1000 x)";
-    e.scene = base_scene();
-    e.scene.blocks = {block(rect(-0.0101, -0.005, 0.01, 0.01), {1.0, 0.0}), block(rect(0.0, -5.0, 10.0, 10.0), {})};
-    e.duration = 0.02;
-    set_expected(e, 1e-4, 100.0);  // masses in proportion to the areas, 1e-4 and 100 m^2
-    out.push_back(e);
-  }
-  {
-    Extreme e = new_case();
-    e.name = "sliver 100:1";
-    e.parameter = "1 m square hits the long side of a 0.01 m x 1 m sliver";
-    e.scene = base_scene();
-    e.scene.blocks = {block(rect(-1.001, -0.5, 1.0, 1.0), {1.0, 0.0}), block(rect(0.0, -0.5, 0.01, 1.0), {})};
-    e.duration = 0.05;
-    set_expected(e, 1.0, 0.01);
-    out.push_back(e);
-  }
-  {
-    Extreme e = new_case();
-    e.name = "sliver 100:1";
-    e.parameter = "1 m x 0.01 m sliver flies end-on into a 1 m square";
-    e.scene = base_scene();
-    e.scene.blocks = {block(rect(-1.001, -0.005, 1.0, 0.01), {1.0, 0.0}), block(rect(0.0, -0.5, 1.0, 1.0), {})};
-    e.duration = 0.3;
-    set_expected(e, 0.01, 1.0);
-    out.push_back(e);
-  }
-  {
-    Extreme e = new_case();
-    e.name = "deep penetration";
-    e.parameter = "two squares at 1 m/s, kn = 1e3 Pa (overlap to stop: 0.71 m)";
-    e.scene = base_scene();
-    e.scene.contact.kn = 1e3;
-    e.scene.blocks = {block(rect(-1.001, -0.5, 1.0, 1.0), {1.0, 0.0}), block(rect(0.0, -0.5, 1.0, 1.0), {})};
-    e.duration = 3.0;
-    set_expected(e, 1.0, 1.0);
-    out.push_back(e);
-  }
-  return out;
-}
-
-struct Outcome {
-  RunClass cls = RunClass::kStable;
-  double dt = 0.0, ratio0 = 0.0, ratio_max = 0.0;
-  double momentum_error = 0.0, energy_error = 0.0;
-  double va = 0.0, vb = 0.0, velocity_error = 0.0;
-  double overlap = 0.0;  // deepest overlap thickness / smaller inscribed diameter
-  double t_deep = -1.0, t_wrong = -1.0, t_swap = -1.0, t_soft = -1.0;
-  bool penetration_stop = false;  // the penetration guard stopped the run
-  std::string message;
-  const char* class_name() const { return penetration_stop ? "penetration guard stop" : repro::stab::class_name(cls); }
-};
-
-double inscribed_diameter(const dda::Polygon& p) { return 2.0 * dda::inscribed_circle(p).radius; }
-
-Outcome run(const Extreme& e, double dt_fraction) {
-  Outcome o;
-  dda::Scene s = e.scene;
-  s.duration = e.duration;
-  s.dt_fraction = dt_fraction;
-  dda::Simulation sim(s);
-  o.dt = sim.dt();
-  o.ratio0 = sim.dt() / sim.predicted_critical_step();
-  o.ratio_max = o.ratio0;
-  const double small = std::min(inscribed_diameter(sim.polygon(0)), inscribed_diameter(sim.polygon(1)));
-  const Vec2 p0 = sim.momentum();
-  const dda::Energy en0 = sim.energy();
-  const double e0 = en0.total(), ekin0 = en0.kinetic;
-  double max_growth = 0.0, prev_force = 0.0, prev_thick = 0.0;
-  const long steps = std::lround(e.duration / sim.dt());
-  try {
-    for (long k = 0; k < steps; ++k) {
-      sim.step();
-      const double t = sim.time();
-      o.momentum_error = std::max(o.momentum_error, dda::length(sim.momentum() - p0) / dda::length(p0));
-      max_growth = std::max(max_growth, (sim.energy().total() - e0) / ekin0);
-      if (sim.contacts().empty()) continue;
-      o.ratio_max = std::max(o.ratio_max, sim.dt() / sim.critical_time_step());
-      const dda::Polygon& a = sim.polygon(0);
-      const dda::Polygon& b = sim.polygon(1);
-      const double tol = dda::pair_tolerance(a, b);
-      const dda::Polygon ip = dda::intersection_polygon(a, b, tol);
-      const double thick = ip.count >= 3 ? inscribed_diameter(ip) : 0.0;
-      o.overlap = std::max(o.overlap, thick / small);
-      // Softening: the overlap grows while the normal force drops (negative
-      // contact stiffness: past the middle of a block the far side is nearer).
-      double force = 0.0;
-      for (const dda::ContactInfo& c : sim.contacts()) force += dda::length(c.normal_force);
-      if (o.t_soft < 0.0 && thick > prev_thick && force < prev_force && thick > 0.01 * small) o.t_soft = t;
-      prev_force = force;
-      prev_thick = thick;
-      if (o.t_deep < 0.0 && repro::stab::deep_penetration(a, b)) o.t_deep = t;
-      for (const dda::ContactInfo& c : sim.contacts()) {
-        const Vec2 towards = sim.centroid(c.tp) - sim.centroid(c.cp);
-        if (o.t_wrong < 0.0 && dda::dot(c.normal_force, towards) > 0.0) o.t_wrong = t;
-      }
-      if (o.t_swap < 0.0 && sim.centroid(1).x < sim.centroid(0).x) o.t_swap = t;
-    }
-  } catch (const dda::SimulationError& err) {
-    o.message = err.what();
-    if (sim.centroid(1).x < sim.centroid(0).x) o.t_swap = sim.time();  // stopped too late
-    o.penetration_stop = o.message.find("guards.max_penetration") != std::string::npos ||
-                         o.message.find("guards.max_approach_energy") != std::string::npos;
-    const bool motion = o.message.find("a vertex moved") != std::string::npos;
-    o.cls = motion && max_growth <= 0.01 ? RunClass::kFlipThrough : RunClass::kBlowUp;
-    return o;
-  }
-  if (o.t_swap < 0.0 && sim.centroid(1).x < sim.centroid(0).x) o.t_swap = sim.time();
-  o.energy_error = (sim.energy().total() - e0) / ekin0;
-  o.va = sim.velocity(0)[0];
-  o.vb = sim.velocity(1)[0];
-  o.velocity_error = (std::fabs(o.va - e.va_expected) + std::fabs(o.vb - e.vb_expected)) / e.v0;
-  if (o.t_swap >= 0.0) {
-    o.cls = RunClass::kFlipThrough;
-  } else if (o.energy_error > 0.01) {
-    o.cls = RunClass::kEnergyGrowth;
-  }
-  return o;
-}
-
-}  // namespace
+using namespace s3;
 
 int main(int argc, char** argv) {
   repro::check_command_line(argc, argv, "Extreme cases at the paper's dt and at 0.5 x the predicted critical step.");
@@ -288,29 +92,11 @@ int main(int argc, char** argv) {
         measured += "; force falls while the overlap grows from t = " + format_short(o.t_soft, 4) + " s";
       if (o.t_wrong >= 0.0) measured += "; wrong-way force at t = " + format_short(o.t_wrong, 4) + " s";
       if (o.t_swap >= 0.0) measured += "; centroids swapped at t = " + format_short(o.t_swap, 4) + " s";
-      // Expectation per case: a clean run (stable, velocities within 5 % of
-      // the rigid answer) at a dt below dt_crit, a guard stop above it; the
-      // deep cases (the contact cannot stop the blocks: their approach
-      // energy exceeds what the pair can store) must be stopped by the
-      // penetration guard before the blocks cross. A run in which the
-      // centroids swapped (the blocks passed through each other) never passes.
-      bool pass = false;
-      std::string tolerance;
-      const bool deep_case = e.name == "deep penetration" || e.parameter == "100 m/s";
-      if (deep_case) {
-        tolerance = "stopped by the penetration guard before the blocks cross";
-        pass = o.penetration_stop;
-      } else if (o.ratio0 > 1.0) {
-        tolerance = "dt above dt_crit: the solver stops with a message";
-        pass = !o.message.empty() && o.message.find("dt/dt_crit") != std::string::npos;
-      } else {
-        tolerance = "stable and |v - v_expected| < 5 % of the impact speed";
-        pass = o.cls == RunClass::kStable && o.velocity_error < 0.05;
-      }
-      pass = pass && o.t_swap < 0.0;
-      tolerance += "; the blocks never cross";
+      // Expectation per case: s3::row_verdict.
+      const auto [pass, tolerance] = row_verdict(e, o);
       claims.push_back({"S3 / " + e.name, e.parameter + " (" + setting + ")", "extreme case (not in the paper)",
                         measured, tolerance, pass});
+      claims.back().control = kRowControl;
     }
     progress(e.name + ", " + e.parameter + ": done");
   }

@@ -17,6 +17,7 @@
 #include "repro/5_4_extreme_geometry/extreme_geometry.hpp"
 #include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
+#include "repro/S3_extreme_cases/extreme_cases.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/4_3_incline/incline.hpp"
@@ -241,6 +242,31 @@ TEST_CASE("6.2 toppling, slumping, premise: FAIL with locked joints, a rough bas
   const topple::Control g = topple::run_control(ts, gentle, {-1, +1}, 1, "control: base friction 20 deg");
   INFO("one block per slope, base friction 20 deg: left slip " << g.left.base_slip << " m");
   CHECK_FALSE(topple::stays(g));
+}
+
+// --- S3 extreme cases: the row criterion ------------------------------------------
+TEST_CASE("S3 rows: FAIL with the penetration guard off and with the wrong expected velocities", "[controls][S3]") {
+  auto find = [](const std::string& name, const std::string& parameter) {
+    for (const s3::Extreme& e : s3::cases())
+      if (e.name == name && e.parameter == parameter) return e;
+    FAIL("no S3 case " << name << " / " << parameter);
+    return s3::Extreme{};
+  };
+  // 100 m/s: with the guards the run stops before the blocks cross (PASS);
+  // without the penetration and approach-energy checks they pass through.
+  s3::Extreme fast = find("impact speed", "100 m/s");
+  CHECK(s3::row_verdict(fast, s3::run(fast, 0.0)).first);
+  fast.scene.guards.max_penetration = 0.0;
+  fast.scene.guards.max_approach_energy = 0.0;
+  const s3::Outcome through = s3::run(fast, 0.0);
+  INFO("guard off: " << through.class_name() << ", centroids swapped at " << through.t_swap << " s");
+  CHECK_FALSE(s3::row_verdict(fast, through).first);
+  // 1 m/s: the velocities are exchanged (PASS); against the answer of a
+  // perfectly inelastic collision (both at v / 2) the same run must FAIL.
+  s3::Extreme slow = find("impact speed", "1 m/s");
+  CHECK(s3::row_verdict(slow, s3::run(slow, 0.0)).first);
+  slow.va_expected = slow.vb_expected = 0.5 * slow.v0;
+  CHECK_FALSE(s3::row_verdict(slow, s3::run(slow, 0.0)).first);
 }
 
 // --- Sect. 4.1, two squares --------------------------------------------------
