@@ -15,6 +15,7 @@
 #include "repro/3_1_contact_statements/contact_statements.hpp"
 #include "repro/3_2_2_potential_fields/potential_fields.hpp"
 #include "repro/5_4_extreme_geometry/extreme_geometry.hpp"
+#include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
@@ -267,6 +268,55 @@ TEST_CASE("S3 rows: FAIL with the penetration guard off and with the wrong expec
   CHECK(s3::row_verdict(slow, s3::run(slow, 0.0)).first);
   slow.va_expected = slow.vb_expected = 0.5 * slow.v0;
   CHECK_FALSE(s3::row_verdict(slow, s3::run(slow, 0.0)).first);
+}
+
+// --- Paper B Sect. 6, two prisms ---------------------------------------------------
+namespace {
+// The rows of a run of the prisms scene with geometry g, block j's material
+// made j_density_factor times as dense and j fixed if asked; the coarse run
+// beside it is the paper's scene without subdivision.
+std::vector<repro::Claim> prism_rows(const dda::cdem::PrismGeometry& g, double j_density_factor, bool j_fixed) {
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(2, {}, g);
+  if (j_density_factor != 1.0) {
+    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
+    s.materials.back().density *= j_density_factor;
+    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+  }
+  s.blocks[1].fixed = j_fixed;
+  dda::cdem::CdemOptions coarse;
+  coarse.subdivision = false;
+  return prisms::rows(prisms::simulate(s), prisms::simulate(dda::cdem::two_prisms(2, coarse)));
+}
+// The rows that name `control`, with their verdicts.
+std::vector<bool> verdicts_of(const std::vector<repro::Claim>& rows, const char* control) {
+  std::vector<bool> v;
+  for (const repro::Claim& c : rows)
+    if (c.control == control) v.push_back(c.pass);
+  return v;
+}
+}  // namespace
+
+TEST_CASE("B-6 touch: FAIL with the gap 0.1 m wider", "[controls][B-6]") {
+  const std::vector<bool> paper = verdicts_of(prism_rows({}, 1.0, false), prisms::kControlTouch);
+  REQUIRE(paper.size() == 2);
+  for (bool v : paper) CHECK(v);
+  dda::cdem::PrismGeometry g;
+  g.gap += 0.1;  // touch at 1.1 / 3 s
+  for (bool v : verdicts_of(prism_rows(g, 1.0, false), prisms::kControlTouch)) CHECK_FALSE(v);
+}
+
+TEST_CASE("B-6 exchange: FAIL with block j twice as dense", "[controls][B-6]") {
+  // Unequal masses: j leaves at 2 m / (m + M) v = 2 m/s, not i's 3 m/s.
+  const std::vector<bool> wrong = verdicts_of(prism_rows({}, 2.0, false), prisms::kControlExchange);
+  REQUIRE(wrong.size() == 2);
+  for (bool v : wrong) CHECK_FALSE(v);
+}
+
+TEST_CASE("B-6 momentum: FAIL with block j fixed", "[controls][B-6]") {
+  // A fixed j is a wall: i bounces back and the momentum is not conserved.
+  const std::vector<bool> wrong = verdicts_of(prism_rows({}, 1.0, true), prisms::kControlMomentum);
+  REQUIRE(wrong.size() == 1);
+  CHECK_FALSE(wrong[0]);
 }
 
 // --- Sect. 4.1, two squares --------------------------------------------------

@@ -1,0 +1,177 @@
+// Paper B Sect. 6, two prisms (two_prisms.cpp says what it reproduces): one
+// run of the two-scale model and the claim rows, here so that the negative
+// controls (repro/common/test_controls.cpp) apply the same criteria to
+// deliberately wrong configurations.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dda/cdem/model.hpp"
+#include "dda/cdem/scenes.hpp"
+#include "repro/common/common.hpp"
+
+namespace prisms {
+
+inline const char* const kRebuilt =
+    "prisms rebuilt (Fig. 12 lost): 7 m x 7 m isosceles triangles, 4 CST elements each";
+inline constexpr double kFig14cTime = 0.3400;  // s: Fig. 14c, where the paper reads j's 3.205 m/s
+
+// What the rows need from one run.
+struct Result {
+  double dt = 0.0, p0 = 0.0, e0 = 0.0, worst_momentum = 0.0, momentum_end = 0.0;
+  double peak_node_vj = 0.0, peak_node_vj_time = 0.0, peak_mean_vj = 0.0, peak_node_vj_at_fig14c = 0.0;
+  int max_substeps = 1;
+  dda::cdem::TouchRecord touch;  // the first touch
+  double t_sep = -1.0;           // first separation after the touch, s (-1: none)
+  std::string sep_kind = "none";
+  double vi = 0.0, vj = 0.0;     // block mean x-velocities at the end, m/s
+  dda::cdem::CdemEnergy e_end;
+  double impact = 0.0, remap = 0.0;  // Eq. 5 loss and patch-remap change, J/m
+};
+
+// Runs the scene to its duration; on_step(m) after construction and after
+// every step (outputs). Throws if nothing touches.
+inline Result simulate(const dda::cdem::CdemScene& scene,
+                       const std::function<void(const dda::cdem::Model&)>& on_step = {}) {
+  dda::cdem::Model m(scene);
+  Result r;
+  r.dt = m.dt();
+  r.p0 = m.momentum().x;
+  r.e0 = m.energy().total();
+  if (on_step) on_step(m);
+  while (m.time() < scene.duration - 0.5 * m.dt()) {
+    m.step();
+    r.worst_momentum = std::max(r.worst_momentum, std::fabs(m.momentum().x - r.p0) / std::fabs(r.p0));
+    if (m.block_max_velocity_x(1) > r.peak_node_vj) {
+      r.peak_node_vj = m.block_max_velocity_x(1);
+      r.peak_node_vj_time = m.time();
+    }
+    r.peak_mean_vj = std::max(r.peak_mean_vj, m.block_velocity(1).x);
+    r.max_substeps = std::max(r.max_substeps, m.patch_substeps());
+    if (std::fabs(m.time() - kFig14cTime) < 0.5 * m.dt()) r.peak_node_vj_at_fig14c = m.block_max_velocity_x(1);
+    if (on_step) on_step(m);
+  }
+  if (m.touches().empty()) throw std::runtime_error("B-6: no touch happened");
+  r.touch = m.touches().front();
+  for (const auto& s : m.separations())
+    if (s.time > r.touch.time) {
+      r.t_sep = s.time;
+      r.sep_kind = s.criterion == dda::cdem::SeparationCriterion::kTension ? "tension (Eq. 6)" : "shear (Eqs. 7-10)";
+    }
+  r.vi = m.block_velocity(0).x;
+  r.vj = m.block_velocity(1).x;
+  r.momentum_end = m.momentum().x;
+  r.e_end = m.energy();
+  r.impact = m.impact_energy_loss();
+  r.remap = m.remap_energy_change();
+  return r;
+}
+
+// The negative controls (test_controls.cpp) named by the rows.
+inline const char* const kControlTouch = "repro_controls: B-6 touch: FAIL with the gap 0.1 m wider";
+inline const char* const kControlExchange = "repro_controls: B-6 exchange: FAIL with block j twice as dense";
+inline const char* const kControlMomentum = "repro_controls: B-6 momentum: FAIL with block j fixed";
+
+// The claim rows of the subdivided run r, with the run without subdivision
+// (coarse clone nodes) beside it for the last row.
+inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
+  using repro::format_short;
+  const dda::cdem::TouchRecord& touch = r.touch;
+  const double e_loss = r.e0 - r.e_end.total();
+  const double residual = e_loss - r.impact + r.remap;
+  // Tolerances. Touch time: solved exactly on the straight collision path,
+  // so round-off (1e-12 s). Momentum: the clone impulse and all element
+  // forces are internal, remaps move momentum with the mass: round-off
+  // (1e-12). Final v_j: 'approximately equal' to 3.0 m/s read as within 5 %.
+  // Peak: the paper's 3.205 m/s exceeds 3.0, which no block-mean velocity
+  // can (energy), so it is a nodal value of its (unknown) mesh: we ask for a
+  // nodal overshoot above 3.0 m/s within 10 % of 3.205 m/s. Energy: 'a
+  // little loss' read as 0 < loss < 5 % of the initial energy, and the
+  // balance (impact loss of Eq. 5 + patch remaps) must close within 1 %.
+  const double dt = r.dt;
+  const double t_exact = 1.0 / 3.0;
+  const double step_start = std::floor(t_exact / dt) * dt;
+  std::vector<repro::Claim> claims;
+  claims.push_back({"B-6", "vertex A of block i touches block j's edge at the two-stage touch time",
+                    "0.3333 s (1 m at 3.0 m/s)",
+                    "t = " + format_short(touch.time, 10) + " s (dt1 = " + format_short(touch.dt1, 6) +
+                        " s free motion, dt2 = " + format_short(touch.dt2, 6) + " s contact); " + kRebuilt,
+                    "|t - 1/3| < 1e-12 s", std::fabs(touch.time - t_exact) < 1e-12});
+  claims.back().control = kControlTouch;
+  claims.push_back({"B-6", "the touch falls in the step printed by the paper", "'in the step from 0.3335 to 0.3340 s'",
+                    "touch in the step [" + format_short(touch.step_start, 5) + ", " + format_short(touch.step_end, 5) +
+                        "] s; the printed step does not contain the printed touch time 0.3333 s (with t0 = 0 and dt "
+                        "= 5e-4 s, 1/3 s lies in [0.3330, 0.3335]): NOT MATCHED, the paper's label looks one step off",
+                    "touch step = [0.3335, 0.3340] s",
+                    std::fabs(touch.step_start - 0.3335) < 1e-9 && std::fabs(touch.step_end - 0.3340) < 1e-9});
+  repro::explain_fail(claims.back(), repro::Cause::kMissingData,
+                      "the paper's printed step [0.3335, 0.3340] s does not contain its own printed touch time "
+                      "0.3333 s; with t0 = 0 and dt = 5e-4 s, 1/3 s lies in [0.3330, 0.3335] (analytic): the label "
+                      "is inconsistent with the paper's other data");
+  claims.push_back(
+      {"B-6", "the step containing the touch is split into dt1 + dt2 = dt", "Sect. 3 (Figs. 4-6)",
+       "step [" + format_short(touch.step_start, 5) + ", " + format_short(touch.step_end, 5) +
+           "] s, dt1 = " + format_short(touch.dt1, 6) + " s, dt2 = " + format_short(touch.dt2, 6) + " s",
+       "dt1 = 1/3 - " + format_short(step_start, 5) + " s to 1e-12, dt1 + dt2 = dt",
+       std::fabs(touch.dt1 - (t_exact - step_start)) < 1e-12 && std::fabs(touch.dt1 + touch.dt2 - dt) < 1e-15});
+  claims.back().control = kControlTouch;
+  const double r_expected = std::sqrt(40e9 / 2700.0) * touch.dt2;
+  claims.push_back({"B-6", "the contact zone is refined within c dt2 of the contact point (Sect. 5)",
+                    "radius c dt2, c = sqrt(E/rho)",
+                    "radius " + format_short(touch.radius) + " m (c dt2 = " + format_short(r_expected) + " m), " +
+                        std::to_string(touch.refined_elements) + " coarse elements refined " +
+                        std::to_string(touch.subdivision) + " x " + std::to_string(touch.subdivision) +
+                        ", patch step dt/" + std::to_string(r.max_substeps) + " while refined; clone masses " +
+                        format_short(touch.mass_main) + " / " + format_short(touch.mass_target) + " kg/m",
+                    "radius = c dt2 to 1e-12; >= 1 element refined",
+                    std::fabs(touch.radius - r_expected) < 1e-12 * r_expected && touch.refined_elements >= 1});
+  const double v14c = r.peak_node_vj_at_fig14c;
+  const bool peak_ok = v14c > 3.0 && std::fabs(v14c - 3.205) <= 0.1 * 3.205;
+  claims.push_back({"B-6", "block j speeds up to about 3.2 m/s during the collision",
+                    "'from 0.0 to 3.205 m/s' (Fig. 14c, 0.3400 s)",
+                    "largest nodal v_x of j at 0.3400 s: " + format_short(v14c) + " m/s (" +
+                        format_short(100.0 * (v14c - 3.205) / 3.205, 2) + " %); over the run " +
+                        format_short(r.peak_node_vj) + " m/s at " + format_short(r.peak_node_vj_time, 5) +
+                        " s; the block mean peaks at " + format_short(r.peak_mean_vj) +
+                        " m/s (a mean above 3.0 would break energy). Nodal peaks depend on the mesh (" + kRebuilt + ")",
+                    "nodal v_x at 0.3400 s > 3.0 m/s and within 10 % of 3.205 m/s", peak_ok});
+  claims.back().control = kControlExchange;
+  claims.push_back({"B-6", "the clone node separates after the collision", "Fig. 15a: separated at 0.3405 s",
+                    "separation at " + format_short(r.t_sep, 6) + " s by " + r.sep_kind +
+                        "; the rebuilt block size was chosen to match this time, so it is not an independent check",
+                    "within 2 steps of 0.3405 s", r.t_sep > 0.0 && std::fabs(r.t_sep - 0.3405) <= 2.0 * dt + 1e-12});
+  claims.push_back({"B-6", "block j ends with about block i's initial speed", "Fig. 16: slope of j ~ i's initial slope",
+                    "v_j(0.5 s) = " + format_short(r.vj) + " m/s, v_i = " + format_short(r.vi) + " m/s (3.0 before)",
+                    "|v_j - 3.0| < 5 % of 3.0", std::fabs(r.vj - 3.0) < 0.05 * 3.0});
+  claims.back().control = kControlExchange;
+  claims.push_back({"B-6", "momentum is conserved before and after the collision", "'momentum conservation applied'",
+                    "p_x before " + format_short(r.p0, 8) + " kg m/s/m, after " + format_short(r.momentum_end, 8) +
+                        "; max |p - p0| / p0 = " + format_short(r.worst_momentum, 3),
+                    "< 1e-12", r.worst_momentum < 1e-12});
+  claims.back().control = kControlMomentum;
+  claims.push_back({"B-6", "a little energy is lost in the collision", "'A little energy loss occurs'",
+                    "E before " + format_short(r.e0, 7) + " J/m, after " + format_short(r.e_end.total(), 7) +
+                        " J/m (kinetic " + format_short(r.e_end.kinetic, 6) + ", strain " +
+                        format_short(r.e_end.strain, 4) + "): loss " + format_short(100.0 * e_loss / r.e0, 3) +
+                        " % = clone impact (Eq. 5) " + format_short(r.impact, 4) + " + patch remaps " +
+                        format_short(-r.remap, 4) + " + integration " + format_short(residual, 3) + " J/m",
+                    "0 < loss < 5 % of E0; |integration residual| < 1 % of E0",
+                    e_loss > 0.0 && e_loss < 0.05 * r.e0 && std::fabs(residual) < 0.01 * r.e0});
+  claims.push_back({"B-6",
+                    "subdivision makes the clone's inelastic loss small (Eq. 5: it falls with the contact-point mass)",
+                    "Sect. 4.1: 'the loss decreases as the mass of the contact points decreases'",
+                    "with subdivision: clone masses " + format_short(touch.mass_main) + " + " +
+                        format_short(touch.mass_target) + " kg/m, loss " + format_short(touch.energy_loss) +
+                        " J/m; without (coarse nodes): " + format_short(coarse.touch.mass_main) + " + " +
+                        format_short(coarse.touch.mass_target) + " kg/m, loss " +
+                        format_short(coarse.touch.energy_loss) + " J/m; v_j(0.5 s) " + format_short(r.vj) + " vs " +
+                        format_short(coarse.vj) + " m/s",
+                    "loss with subdivision < loss without", touch.energy_loss < coarse.touch.energy_loss});
+  return claims;
+}
+
+}  // namespace prisms
