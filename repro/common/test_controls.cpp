@@ -16,6 +16,7 @@
 #include "repro/3_2_2_potential_fields/potential_fields.hpp"
 #include "repro/5_4_extreme_geometry/extreme_geometry.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
+#include "repro/B_7_contact_comparison/contact_comparison.hpp"
 #include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
@@ -317,6 +318,74 @@ TEST_CASE("B-6 momentum: FAIL with block j fixed", "[controls][B-6]") {
   const std::vector<bool> wrong = verdicts_of(prism_rows({}, 1.0, true), prisms::kControlMomentum);
   REQUIRE(wrong.size() == 1);
   CHECK_FALSE(wrong[0]);
+}
+
+// --- A against B on the same collisions (B-7): the squares at the base dt ---------
+namespace {
+compare::SceneDef squares() {
+  for (const compare::SceneDef& d : compare::scene_defs())
+    if (d.name == "squares") return d;
+  FAIL("no B-7 squares scene");
+  return {};
+}
+struct Runs {
+  std::vector<compare::Result> a, b, b0;
+};
+Runs base_runs(const compare::SceneDef& d) {
+  return {compare::run_sweep(d, "A", nullptr, true), compare::run_sweep(d, "B", nullptr, true),
+          compare::run_sweep(d, "B0", nullptr, true)};
+}
+}  // namespace
+
+TEST_CASE("B-7 touch: FAIL against a wrong time of impact", "[controls][B-7]") {
+  compare::SceneDef d = squares();
+  const Runs ok = base_runs(d);
+  CHECK(compare::touch_ok(ok.a, ok.b, ok.b0));
+  d.t_touch_exact = 0.45;  // s: the reference of a 0.45 m gap; the scene's is 0.5 m
+  const Runs wrong = base_runs(d);
+  CHECK_FALSE(compare::touch_ok(wrong.a, wrong.b, wrong.b0));
+}
+
+TEST_CASE("B-7 momentum: FAIL with block j fixed", "[controls][B-7]") {
+  compare::SceneDef d = squares();
+  const auto dda_scene = d.dda_scene;
+  const auto cdem_scene = d.cdem_scene;
+  d.dda_scene = [dda_scene] {
+    dda::Scene s = dda_scene();
+    s.blocks[1].fixed = true;
+    return s;
+  };
+  d.cdem_scene = [cdem_scene](bool sub) {
+    dda::cdem::CdemScene s = cdem_scene(sub);
+    s.blocks[1].fixed = true;
+    return s;
+  };
+  const Runs wrong = base_runs(d);
+  CHECK_FALSE(compare::momentum_ok(wrong.a, wrong.b, wrong.b0));
+}
+
+TEST_CASE("B-7 exchange: FAIL with block j twice as dense", "[controls][B-7]") {
+  compare::SceneDef d = squares();
+  const Runs ok = base_runs(d);
+  CHECK(compare::exchange_ok(ok.a.front(), ok.b.front()));
+  const auto dda_scene = d.dda_scene;
+  const auto cdem_scene = d.cdem_scene;
+  d.dda_scene = [dda_scene] {
+    dda::Scene s = dda_scene();
+    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
+    s.materials.back().density *= 2.0;
+    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+    return s;
+  };
+  d.cdem_scene = [cdem_scene](bool sub) {
+    dda::cdem::CdemScene s = cdem_scene(sub);
+    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
+    s.materials.back().density *= 2.0;
+    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+    return s;
+  };
+  const Runs wrong = base_runs(d);
+  CHECK_FALSE(compare::exchange_ok(wrong.a.front(), wrong.b.front()));
 }
 
 // --- Sect. 4.1, two squares --------------------------------------------------
