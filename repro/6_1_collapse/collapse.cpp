@@ -50,6 +50,7 @@
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/integrator_options.hpp"
 #include "repro/common/options.hpp"
 #include "repro/common/sim_output.hpp"
 #include "repro/common/vtk_output.hpp"

@@ -51,6 +51,7 @@
 #include "dda/simulation.hpp"
 #include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/integrator_options.hpp"
 #include "repro/common/options.hpp"
 #include "repro/common/sim_output.hpp"
 #include "repro/common/vtk_output.hpp"

@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "dda/scene.hpp"
 #include "repro/common/cli.hpp"
 
 namespace repro {
@@ -35,18 +34,6 @@ inline double option_number(int argc, char** argv, const std::string& name, doub
 // Like option_number, for a whole number.
 inline int option_int(int argc, char** argv, const std::string& name, int fallback) {
   return static_cast<int>(detail::option_value(argc, argv, name, static_cast<double>(fallback), true));
-}
-
-// --exact-rotation 0|1, shared by the drivers that offer it: 1 turns the
-// blocks' rigid part exactly (dda::RotationUpdate::kExact, not the paper's
-// linearised Eq. 1); the driver's claims must say so (kExactRotationNote).
-inline constexpr OptionHelp kExactRotationOption{
-    "--exact-rotation", "0|1", "1: exact rotation of the blocks' rigid part instead of the paper's linearised Eq. 1 (default 0)",
-    true};
-inline constexpr const char* kExactRotationNote = " [EXACT ROTATION: rotation update not the paper's Eq. 1]";
-inline dda::RotationUpdate rotation_option(int argc, char** argv) {
-  return option_int(argc, argv, kExactRotationOption.name, 0) != 0 ? dda::RotationUpdate::kExact
-                                                                    : dda::RotationUpdate::kPaperLinear;
 }
 
 }  // namespace repro
