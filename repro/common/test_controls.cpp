@@ -436,8 +436,22 @@ TEST_CASE("4.3 Eq. 30 with friction: FAIL with friction off", "[controls][4.3]")
     in.scene.contact.kt = 0.0;  // friction off: B slides as on a frictionless plane
     const repro::Claim c = incline::eq30_row(phi, incline::run(in, nullptr, phi, dda::FrictionUpdate::kPaper));
     CHECK_FALSE(c.pass);
-    CHECK(c.control == "repro_controls: 4.3 Eq. 30 with friction: FAIL with friction off");
+    CHECK(c.control == incline::kControlEq30Friction);
   }
+  // The other configurations whose rows name this control, each judged
+  // against Eq. 30 at phi = 20 deg without friction: H = 1 m, B starting
+  // just touching, and the start-up option (which needs kt > 0 to settle:
+  // there the friction angle is 0 instead).
+  const auto paper = dda::FrictionUpdate::kPaper;
+  dda::paper::Incline h1 = dda::paper::incline(20.0, 30.0, 1.0, true, 1.0);
+  h1.scene.contact.kt = 0.0;
+  CHECK_FALSE(incline::eq30_met(incline::run(h1, nullptr, 20.0, paper)));
+  dda::paper::Incline touching = dda::paper::incline(20.0, 30.0, 1.0, false);
+  touching.scene.contact.kt = 0.0;
+  CHECK_FALSE(incline::eq30_met(incline::run(touching, nullptr, 20.0, paper)));
+  CHECK_FALSE(incline::eq30_met(incline::run(incline::with_start_up(dda::paper::incline(0.0)), nullptr, 20.0, paper)));
+  CHECK_FALSE(incline::eq30_met(
+      incline::run(incline::with_start_up(dda::paper::incline(0.0, 30.0, 1.0, true, 1.0)), nullptr, 20.0, paper)));
 }
 
 TEST_CASE("4.3 Eq. 30 without friction: FAIL with friction on", "[controls][4.3]") {
@@ -455,6 +469,10 @@ TEST_CASE("4.3 rest: FAIL with friction off", "[controls][4.3]") {
       incline::rest_row(incline::run(in, nullptr, incline::kRestPhi, dda::FrictionUpdate::kPaper));
   CHECK_FALSE(c.pass);
   CHECK(c.control == std::string("repro_controls: ") + incline::kControlRest);
+  // The start-up option's row (settling needs kt > 0: friction angle 0 instead).
+  const repro::Claim s = incline::rest_row(incline::run(incline::with_start_up(dda::paper::incline(0.0)), nullptr,
+                                                        incline::kRestPhi, dda::FrictionUpdate::kPaper));
+  CHECK_FALSE(s.pass);
 }
 
 // --- Sect. 5.1, bouncing block ----------------------------------------------------
