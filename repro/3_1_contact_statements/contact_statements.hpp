@@ -127,6 +127,30 @@ inline repro::Claim entrance_row(const std::vector<Pair>& pairs, Variant variant
 // Eqs. 10-11: f_CP = -dE/dx_CP, against a central difference of the exact
 // contact energy with step kStep (its error ~ kStep^2 E''' / 6, below 1e-8
 // of f for these 1 m blocks; the energy is piecewise smooth).
+// Shared by the energy-derivative rows: kn / H (Pa / m; the 4.1 material's
+// order, the ratio is what matters) and the smallest overlap used.
+inline constexpr double kKnOverH = 1e6;  // Pa / m
+inline constexpr double kMinIpArea = 1e-3;  // m^2: overlaps shallower than this are left out (FD resolution)
+
+// The overlap of a pair, or none if it is shallower than kMinIpArea.
+struct Overlap {
+  double tol = 0.0;
+  dda::Polygon ip;
+  bool used = false;
+};
+inline Overlap overlap_of(const Pair& p) {
+  Overlap o;
+  o.tol = dda::pair_tolerance(p.a, p.b);
+  o.ip = dda::intersection_polygon(p.a, p.b, o.tol);
+  o.used = o.ip.count >= 3 && dda::area(o.ip) >= kMinIpArea;
+  return o;
+}
+// The exact contact energy (dda::contact_energy) with CP moved to `a`.
+inline double energy_with(const dda::Polygon& a, const dda::Polygon& b, double tol) {
+  const dda::PotentialSide side{&a, kKnOverH, 0.0}, target{&b, kKnOverH, 0.0};
+  return dda::contact_energy(side, target, dda::intersection_polygon(a, b, tol), tol);
+}
+
 struct GradientSample {
   double ip_area = 0.0;   // m^2
   double depth = 0.0;     // m: the IP's inscribed diameter (how deep the overlap is)
@@ -135,28 +159,24 @@ struct GradientSample {
 
 inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integration rule,
                                  Variant variant = Variant::kAsPublished, std::vector<GradientSample>* samples = nullptr) {
-  constexpr double kKn = 1e6, kH = 1.0;    // Pa, m: the 4.1 material's order; the ratio is what matters
   constexpr double kStep = 1e-5;           // m, central-difference step
-  constexpr double kMinArea = 1e-3;        // m^2: overlaps shallower than this are left out (FD resolution)
   constexpr double kTolerance = 1e-6;      // relative: 100 x the difference's error, far below a model error
   int used = 0, beyond = 0;
   double worst = 0.0;
   for (const Pair& p : pairs) {
-    const double tol = dda::pair_tolerance(p.a, p.b);
-    const dda::Polygon ip = dda::intersection_polygon(p.a, p.b, tol);
-    if (ip.count < 3 || dda::area(ip) < kMinArea) continue;
-    const dda::PotentialSide tp{&p.b, kKn / kH, 0.0};
+    const Overlap o = overlap_of(p);
+    if (!o.used) continue;
+    const double tol = o.tol;
+    const dda::Polygon& ip = o.ip;
     dda::Vec2 gradient{};
     for (int axis = 0; axis < 2; ++axis) {
       const dda::Vec2 d = axis == 0 ? dda::Vec2{kStep, 0.0} : dda::Vec2{0.0, kStep};
-      const dda::Polygon ap = dda::translated(p.a, d), am = dda::translated(p.a, -1.0 * d);
-      const dda::PotentialSide sp{&ap, kKn / kH, 0.0}, sm{&am, kKn / kH, 0.0};
-      const double ep = dda::contact_energy(sp, tp, dda::intersection_polygon(ap, p.b, tol), tol);
-      const double em = dda::contact_energy(sm, tp, dda::intersection_polygon(am, p.b, tol), tol);
-      (axis == 0 ? gradient.x : gradient.y) = (ep - em) / (2.0 * kStep);
+      (axis == 0 ? gradient.x : gradient.y) =
+          (energy_with(dda::translated(p.a, d), p.b, tol) - energy_with(dda::translated(p.a, -1.0 * d), p.b, tol)) /
+          (2.0 * kStep);
     }
-    const dda::PotentialSide cp{&p.a, kKn / kH, 0.0};
-    const dda::PotentialSide tp_force{&p.b, variant == Variant::kForceWithoutTargetPotential ? 0.0 : kKn / kH, 0.0};
+    const dda::PotentialSide cp{&p.a, kKnOverH, 0.0};
+    const dda::PotentialSide tp_force{&p.b, variant == Variant::kForceWithoutTargetPotential ? 0.0 : kKnOverH, 0.0};
     const dda::NormalForce f = dda::normal_contact_force(cp, tp_force, ip, rule, tol);
     const double e = dda::length(f.force + gradient) / dda::length(gradient);
     worst = std::max(worst, e);
@@ -180,29 +200,24 @@ inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integratio
 // central difference (step kTurn), relative to |f| sqrt(IP area).
 inline repro::Claim moment_row(const std::vector<Pair>& pairs, dda::Integration rule,
                                Variant variant = Variant::kAsPublished) {
-  constexpr double kKn = 1e6, kH = 1.0;  // Pa, m (as gradient_row)
   constexpr double kTurn = 1e-6;         // rad, central-difference step
-  constexpr double kMinArea = 1e-3;      // m^2 (as gradient_row)
   constexpr double kTolerance = 1e-6;    // relative: measured 2e-8 for the exact integration
   int used = 0, beyond = 0;
   double worst = 0.0;
   for (const Pair& p : pairs) {
-    const double tol = dda::pair_tolerance(p.a, p.b);
-    const dda::Polygon ip = dda::intersection_polygon(p.a, p.b, tol);
-    if (ip.count < 3 || dda::area(ip) < kMinArea) continue;
-    const dda::PotentialSide cp{&p.a, kKn / kH, 0.0}, tp{&p.b, kKn / kH, 0.0};
-    const dda::NormalForce f = dda::normal_contact_force(cp, tp, ip, rule, tol);
+    const Overlap o = overlap_of(p);
+    if (!o.used) continue;
+    const dda::PotentialSide cp{&p.a, kKnOverH, 0.0}, tp{&p.b, kKnOverH, 0.0};
+    const dda::NormalForce f = dda::normal_contact_force(cp, tp, o.ip, rule, o.tol);
     if (!f.valid) continue;
     const dda::Vec2 about = variant == Variant::kMomentAboutCentroid ? f.ip_centroid : f.point;
     auto energy_turned = [&](double t) {
       std::vector<dda::Vec2> v;
       for (int i = 0; i < p.a.count; ++i) v.push_back(about + dda::rotate(p.a.vertex(i) - about, t));
-      const dda::Polygon a = dda::make_polygon(v.data(), p.a.count);
-      const dda::PotentialSide side{&a, kKn / kH, 0.0};
-      return dda::contact_energy(side, tp, dda::intersection_polygon(a, p.b, tol), tol);
+      return energy_with(dda::make_polygon(v.data(), p.a.count), p.b, o.tol);
     };
     const double moment = -(energy_turned(kTurn) - energy_turned(-kTurn)) / (2.0 * kTurn);
-    const double e = std::fabs(moment) / (dda::length(f.force) * std::sqrt(dda::area(ip)));
+    const double e = std::fabs(moment) / (dda::length(f.force) * std::sqrt(dda::area(o.ip)));
     worst = std::max(worst, e);
     beyond += e > kTolerance;
     ++used;
