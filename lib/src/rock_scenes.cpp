@@ -112,4 +112,16 @@ TopplingSlumping toppling_slumping(double min_area, double duration, double heig
   return t;
 }
 
+Scene one_block_per_slope(const TopplingSlumping& ts) {
+  Scene whole = ts.scene;
+  whole.blocks.clear();
+  for (const auto* region : {&ts.left_region, &ts.right_region}) {
+    BlockSpec b;
+    b.vertices = *region;
+    b.group = kRockGroup;
+    whole.blocks.push_back(b);
+  }
+  return whole;
+}
+
 }  // namespace dda::paper

@@ -440,14 +440,7 @@ TEST_CASE("friction start-up: a corner that sticks with almost no normal force s
   // (settle_slip_time) the corners shed the shear while still damped
   // (measured 4e-6 m).
   const paper::TopplingSlumping ts = paper::toppling_slumping();
-  Scene whole = ts.scene;
-  whole.blocks.clear();
-  for (const auto* region : {&ts.left_region, &ts.right_region}) {
-    BlockSpec b;
-    b.vertices = *region;
-    b.group = paper::kRockGroup;
-    whole.blocks.push_back(b);
-  }
+  Scene whole = paper::one_block_per_slope(ts);
   whole.damping.mass = 10.0;  // 1/s: about the wedges' 9.5 rad/s stick mode
   whole.damping.settle_time = 2.0;
   whole.damping.settle_sticking = true;

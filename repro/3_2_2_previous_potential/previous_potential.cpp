@@ -37,6 +37,7 @@
 #include "dda/potential.hpp"
 #include "dda/robustness_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "repro/3_2_2_potential_fields/potential_fields.hpp"
 #include "repro/common/common.hpp"
 
 namespace {
@@ -45,29 +46,8 @@ using repro::format_short;
 constexpr double kKn = 1.0, kH = 1.0;
 constexpr int kGridCells = 300;
 
-// Copied from repro/3_2_2_potential_fields/potential_fields.cpp (Fig. 4b).
-std::vector<Vec2> cut_corner(const std::vector<Vec2>& pts, std::size_t i, double len) {
-  const std::size_t n = pts.size();
-  const Vec2 v = pts[i], a = pts[(i + n - 1) % n], b = pts[(i + 1) % n];
-  const Vec2 ua = dda::normalized(a - v), ub = dda::normalized(b - v);
-  const double t = len / dda::length(ua - ub);
-  std::vector<Vec2> out;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k == i) {
-      out.push_back(v + t * ua);
-      out.push_back(v + t * ub);
-    } else {
-      out.push_back(pts[k]);
-    }
-  }
-  return out;
-}
-std::vector<Vec2> small_edge_polygon() {
-  std::vector<Vec2> p = {{0.0, 0.0}, {1.0, -0.05}, {1.15, 0.55}, {0.55, 1.0}, {-0.1, 0.65}};
-  p = cut_corner(p, 3, 0.05);
-  p = cut_corner(p, 1, 0.03);
-  return p;
-}
+// The Fig. 4b polygon is potential_fields::small_edge_polygon (shared).
+using potential_fields::small_edge_polygon;
 
 // The reconstructed sub-polygons: sub[i] = {v_i, v_i+1, inner_i+1, inner_i}.
 struct SubPolygons {

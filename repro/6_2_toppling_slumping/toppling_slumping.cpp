@@ -235,15 +235,14 @@ int main(int argc, char** argv) try {
   }
 
   // ---- claims ------------------------------------------------------------
-  const double deg = 180.0 / kPi;
   const bool short_run = duration < full.scene.duration - 1e-9;
   const std::string run_note =
       (short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "") +
       (return_mapping ? " [RETURN MAPPING: friction update not the paper's Eq. 26]" : "") +
       (exact_rotation ? repro::kExactRotationNote : "");
   auto describe = [&](const SideState& s) {
-    return "outward rotation " + format_short(s.outward_rotation * deg, 3) + " deg (|rotation| " +
-           format_short(s.abs_rotation * deg, 3) + " deg, top travel from rotation " +
+    return "outward rotation " + format_short(s.outward_rotation * kDeg, 3) + " deg (|rotation| " +
+           format_short(s.abs_rotation * kDeg, 3) + " deg, top travel from rotation " +
            format_short(s.rotation_travel, 3) + " m), base slip down-dip " + format_short(s.base_slip, 3) +
            " m, centroid down-dip " + format_short(s.centroid_downdip, 3) + " m, mass rotated outward > 10 deg " +
            format_short(100.0 * s.toppled_share, 3) + " %";
@@ -272,7 +271,7 @@ int main(int argc, char** argv) try {
                     "Fig. 22 (3.5 s): \"the right part will fail with toppling pattern\"",
                     "right slope at t = " + format_short(sim.time(), 3) + " s: " + describe(right) +
                         "; with the joints locked (80 deg): outward rotation " +
-                        format_short(c_locked.right.outward_rotation * deg, 3) + " deg",
+                        format_short(c_locked.right.outward_rotation * kDeg, 3) + " deg",
                     "mean outward rotation > 10 deg, > 50 % of the mass rotated outward > 10 deg, top travel from "
                     "rotation > 2 x |base slip|, and outward rotation > 2 x the locked-joint control's",
                     topples(right, c_locked.right)});
@@ -302,7 +301,7 @@ int main(int argc, char** argv) try {
                     "left base slip at t = " + format_short(sim.time(), 3) + " s: " + format_short(left.base_slip, 3) +
                         " m with the joints at 22 deg, " + format_short(c_locked.left.base_slip, 3) +
                         " m with the joints locked at 80 deg (outward rotation " +
-                        format_short(c_locked.left.outward_rotation * deg, 3) + " deg); one block per slope: " +
+                        format_short(c_locked.left.outward_rotation * kDeg, 3) + " deg); one block per slope: " +
                         format_short(c_whole.left.base_slip, 3) + " m (next row)",
                     "base slip with free joints > 2 x with locked joints",
                     joints_carry_slip(left, c_locked.left)});
@@ -324,9 +323,9 @@ int main(int argc, char** argv) try {
                     "\"influenced by the joint set with a friction angle of 22 deg, the stable condition ... will be broken\"",
                     "left base slip at t = " + format_short(duration, 3) + " s: " + format_short(c_su.left.base_slip, 3) +
                         " m with the joints at 22 deg (mean |rotation| " +
-                        format_short(c_su.left.abs_rotation * deg, 3) + " deg), " +
+                        format_short(c_su.left.abs_rotation * kDeg, 3) + " deg), " +
                         format_short(c_locked_su.left.base_slip, 3) + " m with the joints locked at 80 deg; right "
-                        "outward rotation " + format_short(c_su.right.outward_rotation * deg, 3) + " deg",
+                        "outward rotation " + format_short(c_su.right.outward_rotation * kDeg, 3) + " deg",
                     "base slip with free joints > 2 x with locked joints, and > 0.01 m (beyond settling)",
                     joints_carry_slip(c_su.left, c_locked_su.left, 0.01)});
   claims.back().control = kControlMechanism;
@@ -353,9 +352,9 @@ int main(int argc, char** argv) try {
                     "\"both the left slope and right slope will keep stable as one unique block\"",
                     "one block per slope, same parameters, " + format_short(duration, 3) + " s: left slid " +
                         format_short(c_whole.left.base_slip, 3) + " m (rotation " +
-                        format_short(c_whole.left.outward_rotation * deg, 3) + " deg), right slid " +
+                        format_short(c_whole.left.outward_rotation * kDeg, 3) + " deg), right slid " +
                         format_short(c_whole.right.base_slip, 3) + " m (rotation " +
-                        format_short(c_whole.right.outward_rotation * deg, 3) + " deg)",
+                        format_short(c_whole.right.outward_rotation * kDeg, 3) + " deg)",
                     "|slip| < 0.05 m on both sides",
                     stays(c_whole)});
   claims.back().control = kControlMechanism;

@@ -165,18 +165,7 @@ inline Control run_control(const dda::paper::TopplingSlumping& ts, const dda::Sc
 }
 
 
-// The same scene with each slope as ONE block (the wedge outline itself).
-inline dda::Scene one_block_per_slope(const dda::paper::TopplingSlumping& ts) {
-  dda::Scene whole = ts.scene;
-  whole.blocks.clear();
-  for (const auto* region : {&ts.left_region, &ts.right_region}) {
-    dda::BlockSpec b;
-    b.vertices = *region;
-    b.group = dda::paper::kRockGroup;
-    whole.blocks.push_back(b);
-  }
-  return whole;
-}
+using dda::paper::one_block_per_slope;
 
 // ---- criteria of the claim rows (toppling_slumping.cpp says why) -----------
 inline constexpr double kDeg = 180.0 / kPi;

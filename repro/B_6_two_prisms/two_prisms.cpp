@@ -76,11 +76,6 @@ int main(int argc, char** argv) {
   dda::cdem::CdemOptions opt;
   opt.capture_touch_snapshots = true;
   const dda::cdem::CdemScene scene = dda::cdem::two_prisms(2, opt);
-  {
-    const Model m(scene);
-    progress("mesh: " + std::to_string(m.node_count()) + " nodes, critical step " + format_short(m.critical_dt()) +
-             " s (dt " + format_short(m.dt()) + " s)");
-  }
 
   repro::CsvWriter hist(dir + "history.csv", history_header(),
                         {std::string("Paper B Sect. 6, two prisms, clone node + subdivision; ") + kRebuilt});
@@ -105,6 +100,9 @@ int main(int argc, char** argv) {
   std::vector<dda::cdem::TouchRecord> touches;
   std::vector<dda::cdem::SeparationRecord> separations;
   const prisms::Result r = prisms::simulate(scene, [&](const Model& m) {
+    if (m.step_count() == 0)
+      progress("mesh: " + std::to_string(m.node_count()) + " nodes, critical step " + format_short(m.critical_dt()) +
+               " s (dt " + format_short(m.dt()) + " s)");
     if (before_separation && !m.separations().empty()) {
       before_separation = false;
       write_snapshot(tris, clones, shot_id++, "last step with the clone: " + format_short(previous.time, 5) + " s",

@@ -273,16 +273,20 @@ TEST_CASE("S3 rows: FAIL with the penetration guard off and with the wrong expec
 
 // --- Paper B Sect. 6, two prisms ---------------------------------------------------
 namespace {
-// The rows of a run of the prisms scene with geometry g, block j's material
-// made j_density_factor times as dense and j fixed if asked; the coarse run
-// beside it is the paper's scene without subdivision.
+// Block j (index 1) of a DDA or CDEM scene made `factor` times as dense,
+// through a material of its own.
+template <class SceneT>
+void make_j_denser(SceneT& s, double factor) {
+  s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
+  s.materials.back().density *= factor;
+  s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+}
+// The rows of a run of the prisms scene with geometry g, block j
+// j_density_factor times as dense and fixed if asked; the coarse run beside
+// it is the paper's scene without subdivision.
 std::vector<repro::Claim> prism_rows(const dda::cdem::PrismGeometry& g, double j_density_factor, bool j_fixed) {
   dda::cdem::CdemScene s = dda::cdem::two_prisms(2, {}, g);
-  if (j_density_factor != 1.0) {
-    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
-    s.materials.back().density *= j_density_factor;
-    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
-  }
+  if (j_density_factor != 1.0) make_j_denser(s, j_density_factor);
   s.blocks[1].fixed = j_fixed;
   dda::cdem::CdemOptions coarse;
   coarse.subdivision = false;
@@ -372,16 +376,12 @@ TEST_CASE("B-7 exchange: FAIL with block j twice as dense", "[controls][B-7]") {
   const auto cdem_scene = d.cdem_scene;
   d.dda_scene = [dda_scene] {
     dda::Scene s = dda_scene();
-    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
-    s.materials.back().density *= 2.0;
-    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+    make_j_denser(s, 2.0);
     return s;
   };
   d.cdem_scene = [cdem_scene](bool sub) {
     dda::cdem::CdemScene s = cdem_scene(sub);
-    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
-    s.materials.back().density *= 2.0;
-    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+    make_j_denser(s, 2.0);
     return s;
   };
   const Runs wrong = base_runs(d);

@@ -92,4 +92,8 @@ struct TopplingSlumping {
 TopplingSlumping toppling_slumping(double min_area = 0.5, double duration = 3.5, double height = 24.0,
                                    double valley_half_width = 8.0, double right_face_deg = 60.0);
 
+// The same scene with each slope as ONE block (its wedge outline): the
+// premise of Sect. 6.2, "both slopes keep stable as one unique block".
+Scene one_block_per_slope(const TopplingSlumping& ts);
+
 }  // namespace dda::paper
