@@ -24,6 +24,7 @@ Outcome attempt(const Case& c, double dt, bool motion_guard, dda::Integration in
   if (!motion_guard) s.guards.max_step_motion = 1e300;  // effectively off (the scene check wants a finite value)
   o.dt = dt;
   double min_push = 0.0, lowest = 1e300, max_up = 0.0;
+  double asym = c.asymmetry ? 0.0 : -1.0;
   try {
     dda::Simulation sim(s);
     o.dt_crit = sim.predicted_critical_step();
@@ -31,8 +32,11 @@ Outcome attempt(const Case& c, double dt, bool motion_guard, dda::Integration in
     for (int i = 0; i < sim.scene_block_count(); ++i)
       if (!sim.fixed(i)) o.dt_strain = std::min(o.dt_strain, sim.strain_critical_step(i));
     dda::paper::RunMonitor mon(sim, c.a, c.b);
-    double asym = c.asymmetry ? 0.0 : -1.0;
+    bool touched = false;
     auto watch = [&] {
+      if (!sim.contacts().empty()) touched = true;
+      if (touched && sim.contacts().empty() && o.first_release_asymmetry < 0.0 && c.asymmetry)
+        o.first_release_asymmetry = c.asymmetry(sim);
       for (const dda::ContactInfo& ci : sim.contacts()) {
         const Vec2 f = ci.cp == c.pushed ? ci.normal_force : (ci.tp == c.pushed ? -1.0 * ci.normal_force : Vec2{});
         min_push = std::min(min_push, f.y);
@@ -84,6 +88,7 @@ Outcome attempt(const Case& c, double dt, bool motion_guard, dda::Integration in
     }
   } catch (const dda::SimulationError& e) {
     o.verdict = std::string("stopped by the solver: ") + e.what();
+    o.asymmetry = asym;  // up to the stop
   } catch (const dda::SceneError& e) {
     o.verdict = std::string("scene rejected: ") + e.what();
   }

@@ -34,11 +34,12 @@ struct Outcome {
   double dt = 0.0, dt_crit = 0.0;
   double dt_strain = 0.0;  // stability limit of the blocks' own strain modes alone, s
   double energy_error = 0.0, energy_growth = 0.0;
-  double asymmetry = -1.0;  // -1: not applicable
+  double asymmetry = -1.0;  // largest, m (up to the stop for a run the solver stopped); -1: not applicable
   double thickness = 0.0, depth = 0.0;
   double min_push = 0.0;   // most negative normal force on the pushed block along y, N
   double below = 0.0;      // 5.1: how far A's base went below B's bottom, m (0 if never)
   double max_up = 0.0;     // largest upward velocity of the pushed block after the first contact, m/s
+  double first_release_asymmetry = -1.0;  // asymmetry when the first contact ends, m (-1: never / n/a)
   double seconds = 0.0;
   long steps = 0;
 };
