@@ -19,6 +19,7 @@
 #include "repro/B_7_contact_comparison/contact_comparison.hpp"
 #include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
+#include "repro/S2_stability_maps/maps.hpp"
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
@@ -570,4 +571,38 @@ TEST_CASE("5.3 energy: FAIL with mass damping", "[controls][5.3]") {
   const auto rows = small_edge_rows(si);
   CHECK_FALSE(rows[1].pass);
   CHECK(rows[1].control == std::string("repro_controls: ") + small_edges::kControlDamped);
+}
+
+// --- S2, stability maps ----------------------------------------------------------
+
+TEST_CASE("S2 no blow-up: FAIL against a bound 4 times too large", "[controls][S2]") {
+  // A dt above the true limit counts against a bound that claims it is safe:
+  // the run must be a blow-up (not hidden as an energy-budget stop), so the
+  // row comes out FAIL. Below the true limit the same cell is no blow-up.
+  const s2::MapScene m = s2::two_squares_map();
+  const double kn = 1e8;
+  dda::Scene s = m.scene;
+  s.contact.kn = kn;
+  const double predicted = dda::Simulation(s).predicted_critical_step();
+  const double wrong_bound = 4.0 * predicted;
+  const s2::MapRun over = s2::map_run(m, kn, 3.0 * predicted);
+  INFO(over.message);
+  CHECK(s2::blowup_at_or_below(over, 3.0 * predicted, wrong_bound));
+  CHECK_FALSE(s2::blowup_at_or_below(over, 3.0 * predicted, predicted));
+  const s2::MapRun under = s2::map_run(m, kn, 0.5 * predicted);
+  CHECK_FALSE(s2::blowup_at_or_below(under, 0.5 * predicted, wrong_bound));
+}
+
+TEST_CASE("S2 classification: an energy-budget stop that stays bounded is not a blow-up", "[controls][S2]") {
+  // The cell that was called a blow-up at 0.78 x predicted: 5.1 case 1 with
+  // the inscribed-radius H at kn = 10^11.5 Pa, dt = 1e-5 s. The energy-budget
+  // guard stops it; with the guard off the contact lasts a few steps and A
+  // leaves with about a fifth more energy, then flies on: energy growth.
+  const s2::MapScene m = s2::bouncing_map(dda::HRule::kInscribedRadius);
+  const s2::MapRun r = s2::map_run(m, std::pow(10.0, 11.5), 1e-5);
+  INFO(r.message);
+  CHECK(r.cls == repro::stab::RunClass::kEnergyGrowth);
+  CHECK(r.message.find("energy-budget guard stopped it") != std::string::npos);
+  CHECK(r.energy_change > 0.1);
+  CHECK(r.energy_change < 0.5);
 }
