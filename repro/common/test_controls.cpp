@@ -20,6 +20,8 @@
 #include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/S2_stability_maps/maps.hpp"
+#include "repro/S2_stability_maps/resting.hpp"
+#include "repro/S_common/stability.hpp"
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
@@ -605,4 +607,36 @@ TEST_CASE("S2 classification: an energy-budget stop that stays bounded is not a 
   CHECK(r.message.find("energy-budget guard stopped it") != std::string::npos);
   CHECK(r.energy_change > 0.1);
   CHECK(r.energy_change < 0.5);
+}
+
+TEST_CASE("S2 dt_crit: FAIL when the linearised limit is taken at 4 times the contact's kn", "[controls][S2]") {
+  // The independent linearised limit of the wrong system (kn four times the
+  // resting contact's: omega doubles, the limit halves) must not match the
+  // empirical limit of the real one.
+  const s2::RestCase rc = s2::resting(1e8, false, false, false);
+  dda::Scene stiffer = rc.scene;
+  stiffer.contact.kn *= 4.0;
+  const double wrong_lin = repro::stab::linearized_critical_step(dda::Simulation(stiffer)).dt_crit;
+  const double emp = s2::empirical_limit(rc.scene, wrong_lin);
+  INFO("empirical " << emp << " s, linearised at 4 kn " << wrong_lin << " s");
+  CHECK_FALSE(s2::linearised_is_empirical(std::fabs(emp / wrong_lin - 1.0)));
+  // The right one passes (the row's configuration).
+  const double lin = repro::stab::linearized_critical_step(dda::Simulation(rc.scene)).dt_crit;
+  CHECK(s2::linearised_is_empirical(std::fabs(s2::empirical_limit(rc.scene, lin) / lin - 1.0)));
+}
+
+TEST_CASE("S2 dt_crit: FAIL for critical steps taken at a sixteenth of the contact's kn", "[controls][S2]") {
+  // The solver's current and predicted steps of a softer contact (kn / 16:
+  // steps four times as long; a quarter would not do, the solver's steps
+  // keep a factor-2 margin below this rigid case's limit) are not safe for
+  // the real one.
+  const s2::RestCase rc = s2::resting(1e8, false, false, false);
+  dda::Scene softer = rc.scene;
+  softer.contact.kn /= 16.0;
+  const dda::Simulation real(rc.scene), soft(softer);
+  const double lin = repro::stab::linearized_critical_step(real).dt_crit;
+  const double cur = soft.critical_time_step() / lin, pred = soft.predicted_critical_step() / lin;
+  INFO("current / linearised " << cur << ", predicted / linearised " << pred);
+  CHECK_FALSE(s2::solver_steps_are_safe(cur, pred));
+  CHECK(s2::solver_steps_are_safe(real.critical_time_step() / lin, real.predicted_critical_step() / lin));
 }
