@@ -141,14 +141,14 @@ int main(int argc, char** argv) {
                           " cases (kn 1e6..1e9, rigid and deformable, unified and inscribed H, one and two free "
                           "blocks) = " + format_short(worst_emp, 3),
                       "< " + format_short(kEmpiricalTolerance), linearised_is_empirical(worst_emp)});
-    claims.back().control = kControlEmpirical;
+    claims.back().control = repro::control_test(kControlEmpirical);
     claims.push_back({"S2 / dt_crit", "the solver's critical_time_step() never exceeds the linearised limit",
                       "a critical step must be safe",
                       "current / linearised in [" + format_short(best_cur, 3) + ", " + format_short(worst_cur, 3) +
                           "]; predicted / linearised <= " + format_short(worst_pred, 3) +
                           "; the per-block estimate 2 kn L_max / H reached " + format_short(worst_old, 3),
                       "current and predicted <= 1.0", solver_steps_are_safe(worst_cur, worst_pred)});
-    claims.back().control = kControlSafe;
+    claims.back().control = repro::control_test(kControlSafe);
     progress("dt_crit check done");
   }
 
@@ -215,7 +215,7 @@ int main(int argc, char** argv) {
                           format_short(max_blowup_ratio, 3) + " x predicted over kn; per-block estimate 2 kn L_max / H: " +
                           std::to_string(old_blowups_below) + " blow-ups at or below it",
                       "0 blow-ups at dt <= predicted", blowups_below == 0});
-    claims.back().control = kControlBlowUp;
+    claims.back().control = repro::control_test(kControlBlowUp);
     repro::explain_fail(claims.back(), repro::Cause::kImplementation,
                         "the solver's a-priori dt_crit (Simulation::predicted_critical_step) is not a bound for this "
                         "scene: a run blows up below it; open, needs an issue note");

@@ -231,4 +231,34 @@ inline std::pair<bool, std::string> row_verdict(const Extreme& e, const Outcome&
 inline const char* const kRowControl =
     "repro_controls: S3 rows: FAIL with the penetration guard off and with the wrong expected velocities";
 
+// ---- the guard row: a too-large dt is stopped with a full message ----------
+
+// Two squares at 1 m/s, 1 mm apart, kn 1e10 Pa, dt = dt_fraction x the
+// predicted critical step (the row: 3), the energy checked every step so
+// that the stop comes during the impact.
+inline dda::Scene guard_scene(double dt_fraction) {
+  dda::Scene s = dda::paper::two_squares();
+  s.blocks[0].vertices = rect(-1.001, -0.5, 1.0, 1.0);
+  s.contact.kn = 1e10;
+  s.dt_fraction = dt_fraction;
+  s.duration = 0.2;
+  s.guards.energy_check_every = 1;
+  return s;
+}
+
+// The row's criterion: the solver stopped the run with a message naming the
+// step, the time, the block, the pair, dt/dt_crit and what was exceeded (a
+// guard limit, or a non-finite or collapsed state), and at least one row
+// was written before the stop.
+inline bool guard_stop_complete(const std::string& message, long rows_kept) {
+  bool names_all = !message.empty();
+  for (const char* word : {"step ", "(t = ", " s)", "block ", "pair (", "dt/dt_crit = "})
+    names_all = names_all && message.find(word) != std::string::npos;
+  names_all = names_all && (message.find("more than") != std::string::npos ||
+                            message.find("non-finite") != std::string::npos ||
+                            message.find("collapsed") != std::string::npos);
+  return names_all && rows_kept >= 1;
+}
+inline constexpr const char* kControlGuardStop = "S3 guard stop: FAIL below the critical step and on a bare message";
+
 }  // namespace s3

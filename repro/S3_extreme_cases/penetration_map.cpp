@@ -30,104 +30,12 @@
 
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
-#include "repro/S_common/stability.hpp"
+#include "repro/S3_extreme_cases/penetration_cells.hpp"
 #include "repro/common/common.hpp"
 
 namespace {
-using dda::Vec2;
 using repro::format_short;
-
-constexpr double kGap = 0.02;                      // A's face to B's at t = 0, m
-constexpr double kOffset = 0.2;                    // B's centre above A's, m: not a symmetric hit
-constexpr double kOblique = 0.5235987755982988;    // 30 deg off the face normal, rad
-constexpr double kPaperDt = 1e-4;                  // Sect. 4.1's time step, s
-constexpr double kSoftKn = 1e5;                    // Pa: the v-dt map's penalty, 1 % of Sect. 4.1's
-const std::vector<double> kSpeeds{0.5, 1, 2, 4, 8, 16, 32, 64};  // m/s
-const std::vector<double> kKns{1e4, 1e5, 1e6, 1e7, 1e8};         // Pa
-const std::vector<double> kDts{1e-5, 3e-5, 1e-4, 3e-4, 1e-3};    // s
-
-enum class Cell { kBounced, kGuardStop, kOtherStop, kPassed, kStuck, kMissed };
-const char* name(Cell c) {
-  switch (c) {
-    case Cell::kBounced: return "bounced";
-    case Cell::kGuardStop: return "guard stop";
-    case Cell::kOtherStop: return "other stop";
-    case Cell::kPassed: return "passed";
-    case Cell::kStuck: return "stuck";
-    case Cell::kMissed: return "missed";
-  }
-  return "?";
-}
-
-struct Setup {
-  std::string map;
-  bool oblique = false;
-  double speed = 0.0, kn = 0.0, dt = 0.0;
-};
-
-std::vector<Vec2> square(Vec2 c) {
-  return {c + Vec2{-0.5, -0.5}, c + Vec2{0.5, -0.5}, c + Vec2{0.5, 0.5}, c + Vec2{-0.5, 0.5}};
-}
-
-dda::Scene scene(const Setup& c, bool guarded) {
-  dda::Scene s = dda::paper::two_squares();
-  s.contact.kn = c.kn;
-  s.dt = c.dt;
-  s.blocks[0].vertices = square({-0.5 - kGap, 0.0});
-  s.blocks[1].vertices = square({0.5, kOffset});
-  s.blocks[0].velocity = c.oblique ? c.speed * Vec2{std::cos(kOblique), std::sin(kOblique)} : Vec2{c.speed, 0.0};
-  if (!guarded) s.guards.max_penetration = s.guards.max_approach_energy = 0.0;
-  // Long enough to cross the gap and both blocks (2 m) or to finish a
-  // bounce: 4 x the half period pi sqrt(m_eff / k) of the pair's spring
-  // k = 2 kn (face contact, H = 1 m), m_eff = 1000 kg/m.
-  s.duration = (kGap + 2.5) / c.speed + 4.0 * 3.14159 * std::sqrt(1000.0 / (2.0 * c.kn));
-  return s;
-}
-
-struct Result {
-  Cell cls = Cell::kBounced;
-  double ratio = 0.0;  // dt / predicted dt_crit at the start
-  std::string message;
-  std::vector<double> final_state;  // vertex coordinates at the end (bounces only)
-};
-
-Result run(const Setup& c, bool guarded) {
-  Result r;
-  dda::Simulation sim(scene(c, guarded));
-  r.ratio = sim.dt() / sim.predicted_critical_step();
-  const auto steps = static_cast<long>(std::ceil(sim.scene().duration / sim.dt()));
-  bool touched = false;
-  try {
-    for (long k = 0; k < steps; ++k) {
-      sim.step();
-      if (!sim.contacts().empty()) touched = true;
-      else if (touched) break;  // the contact is over: bounced or through
-    }
-  } catch (const dda::SimulationError& e) {
-    r.message = e.what();
-    const bool penetration = r.message.find("max_penetration") != std::string::npos ||
-                             r.message.find("max_approach_energy") != std::string::npos;
-    r.cls = penetration ? Cell::kGuardStop : Cell::kOtherStop;
-  }
-  const bool crossed = sim.centroid(0).x > sim.centroid(1).x;
-  if (r.message.empty())
-    r.cls = crossed ? Cell::kPassed : !touched ? Cell::kMissed : !sim.contacts().empty() ? Cell::kStuck : Cell::kBounced;
-  else if (crossed) r.cls = Cell::kPassed;  // a stop after the blocks crossed is too late
-  if (r.cls == Cell::kBounced) r.final_state = repro::stab::vertex_state(sim);
-  return r;
-}
-
-bool has(const std::string& text, const char* part) { return text.find(part) != std::string::npos; }
-
-// The guard's message names what a user needs to act on: where (step,
-// time, pair), the bound (a depth bound, or the energy the pair can store),
-// dt/dt_crit and what to change (kn).
-bool actionable(const std::string& m) {
-  for (const char* part : {"step ", "(t = ", "pair (", "dt/dt_crit", "contact.kn"})
-    if (!has(m, part)) return false;
-  return has(m, "(bound ") || has(m, "the pair can store");
-}
-
+using namespace s3map;
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,7 +58,7 @@ int main(int argc, char** argv) {
       bounces_identical = 0, false_stops = 0, other_stops = 0;
   std::string first_through, first_false;
   for (const Setup& c : cells) {
-    const Result on = run(c, true), off = run(c, false);
+    const Result on = run(scene(c, true)), off = run(scene(c, false));
     const bool identical = on.cls == Cell::kBounced && off.cls == Cell::kBounced && on.final_state == off.final_state;
     const std::string where = c.map + " at v = " + format_short(c.speed) + " m/s, kn = " + format_short(c.kn) +
                               " Pa, dt = " + format_short(c.dt) + " s";
@@ -196,11 +104,13 @@ int main(int argc, char** argv) {
   claims.push_back({sec, "the guard does not touch a bounce: every guarded bounce ends bit for bit as without it",
                     "the suite: a guard observes, it does not change the trajectory",
                     std::to_string(bounces_identical) + " of " + std::to_string(bounces) + " bounces identical",
-                    "all, and at least one bounce", bounces > 0 && bounces_identical == bounces});
+                    "all, and at least one bounce", bounces_untouched(bounces, bounces_identical)});
+  claims.back().control = repro::control_test(kControlUntouched);
   claims.push_back({sec, "every penetration-guard stop names step, time, pair, the bound, dt/dt_crit and what to change",
                     "the suite: a message a user can act on",
                     std::to_string(stops_actionable) + " of " + std::to_string(stops) + " stop messages complete",
-                    "all, and at least one stop", stops > 0 && stops_actionable == stops});
+                    "all, and at least one stop", s3map::stops_actionable(stops, stops_actionable)});
+  claims.back().control = repro::control_test(kControlActionable);
   claims.push_back({sec, "cells the guard stops although the unguarded run bounces (the guard's margin)",
                     "measurement: the guard stops at half the depth of no return",
                     std::to_string(false_stops) + " of " + std::to_string(stops) + " guard stops" +

@@ -42,6 +42,10 @@ struct Claim {
   std::string control{};       // name of the ctest that is this check's negative control, if any
 };
 
+// The `control` of a check whose negative control is the repro_controls test
+// case `test_case` (its exact name).
+inline std::string control_test(const std::string& test_case) { return "repro_controls: " + test_case; }
+
 // A measurement row: a number with no verdict; `note` says what it shows.
 Claim measurement(std::string section, std::string claim, std::string paper, std::string measured,
                   std::string note);
