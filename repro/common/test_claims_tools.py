@@ -7,6 +7,8 @@ Writes small claim files in a temporary directory and checks that
    without a negative control is listed with the measurements),
  - a FAIL shows its cause, a FAIL without a cause is a problem,
  - figures appear inline (markdown image), claims.json holds every row,
+ - verdicts.py compare fails on a row naming a control test case that does
+   not exist;
  - verdicts.py write + compare round-trips, and compare fails, naming the
    row, on a changed verdict, a new row, a missing row and a FAIL without a
    cause.
@@ -79,6 +81,16 @@ def main(src):
         expected = os.path.join(tmp, "expected.csv")
         run([verdicts, "write", claims, expected], 0)
         run([verdicts, "compare", claims, expected], 0)
+        # A row naming a repro_controls test case that does not exist.
+        tests = os.path.join(tmp, "control_tests.txt")
+        with open(tests, "w", encoding="utf-8") as f:
+            f.write("4.1 real control\n")
+        write(os.path.join(claims, "S1_work_precision.csv"), [row("S1:x", control="repro_controls: 4.1 real control")])
+        run([verdicts, "compare", claims, expected, tests], 0)
+        write(os.path.join(claims, "S1_work_precision.csv"), [row("S1:x", control="repro_controls: no such test")])
+        out = run([verdicts, "compare", claims, expected, tests], 1)
+        check("names control 'no such test', not a test case of repro_controls" in out, "missing control test named")
+        write(os.path.join(claims, "S1_work_precision.csv"), [row("S1:x")])
         # A changed verdict, a new row, a missing row.
         write(os.path.join(claims, "S1_work_precision.csv"),
               [row("S1:x", status="FAIL", cause="implementation", text="bug"), row("S1:new")])

@@ -1,6 +1,6 @@
 """Expected verdicts of every claim row: compare a run with the committed list, or rewrite it.
 
-usage: verdicts.py compare CLAIMS_DIR EXPECTED_CSV
+usage: verdicts.py compare CLAIMS_DIR EXPECTED_CSV [CONTROL_TESTS]
        verdicts.py write   CLAIMS_DIR EXPECTED_CSV
 
 CLAIMS_DIR holds the drivers' <driver>.csv files (repro/common/claims.hpp).
@@ -12,7 +12,10 @@ FAIL's cause (empty for a PASS or a measurement).
 compare exits 1, listing the rows, when a row's kind, verdict or cause
 differs from the list, a listed row is missing, a row is new, an id repeats,
 or a failing check has no cause (issue 21: every FAIL is explained); it
-exits 0 otherwise. write replaces EXPECTED_CSV with the run's verdicts
+exits 0 otherwise. With CONTROL_TESTS (a file with the test-case names of
+repro_controls_tests, one per line: its --list-test-names-only), a row whose
+control reads "repro_controls: <name>" must name one of them: a control that
+does not exist controls nothing. write replaces EXPECTED_CSV with the run's verdicts
 (make expected-verdicts); commit that change on its own, saying why.
 """
 import csv
@@ -58,8 +61,27 @@ def show(v):
     return "absent" if v is None else (v[0] if v[1] == "-" else f"{v[1]}" + (f" ({v[2]})" if v[2] else ""))
 
 
-def compare(claims_dir, expected_path):
+def control_problems(claims_dir, tests_path):
+    """Rows naming a repro_controls test case that does not exist."""
+    with open(tests_path, encoding="utf-8") as f:
+        tests = {line.strip() for line in f if line.strip()}
+    problems = []
+    for path in sorted(glob.glob(os.path.join(claims_dir, "*.csv"))):
+        driver = os.path.splitext(os.path.basename(path))[0]
+        with open(path, newline="", encoding="utf-8") as f:
+            for rec in csv.DictReader(f):
+                control = rec.get("control") or ""
+                prefix = "repro_controls: "
+                if control.startswith(prefix) and control[len(prefix):] not in tests:
+                    problems.append(f"{driver} {rec['id']}: names control '{control[len(prefix):]}', "
+                                    f"not a test case of repro_controls")
+    return problems
+
+
+def compare(claims_dir, expected_path, tests_path=None):
     got, problems = run_verdicts(claims_dir)
+    if tests_path:
+        problems += control_problems(claims_dir, tests_path)
     want = read_expected(expected_path)
     changed = []
     for key in sorted(set(got) | set(want)):
@@ -101,9 +123,11 @@ def write(claims_dir, expected_path):
 
 
 def main(argv):
-    if len(argv) != 4 or argv[1] not in ("compare", "write"):
-        raise SystemExit(__doc__)
-    return (compare if argv[1] == "compare" else write)(argv[2], argv[3])
+    if argv[1:2] == ["compare"] and len(argv) in (4, 5):
+        return compare(*argv[2:])
+    if argv[1:2] == ["write"] and len(argv) == 4:
+        return write(argv[2], argv[3])
+    raise SystemExit(__doc__)
 
 
 if __name__ == "__main__":
