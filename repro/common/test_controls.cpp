@@ -463,7 +463,22 @@ TEST_CASE("4.3 Eq. 30 without friction: FAIL with friction on", "[controls][4.3]
   const repro::Claim c =
       incline::eq30_row(0.0, incline::run(dda::paper::incline(10.0), nullptr, 0.0, dda::FrictionUpdate::kPaper));
   CHECK_FALSE(c.pass);
-  CHECK(c.control == "repro_controls: 4.3 Eq. 30 without friction: FAIL with friction on");
+  CHECK(c.control == repro::control_test(incline::kControlEq30Frictionless));
+  // The phi = 0 start-up option's row, on the option's run with 10 deg friction.
+  CHECK_FALSE(incline::eq30_met(incline::run(incline::with_start_up(dda::paper::incline(10.0)), nullptr, 0.0,
+                                             dda::FrictionUpdate::kPaper)));
+}
+
+TEST_CASE("4.3 creep: FAIL on a slope steeper than the friction angle", "[controls][4.3]") {
+  // With a friction angle of 15 deg on the 20 deg slope B never stops: it
+  // accelerates downhill at g (sin 20 - cos 20 tan 15) = 0.88 m/s^2, so the
+  // "creep" after the would-be stop is a slide, with either update.
+  for (dda::FrictionUpdate u : {dda::FrictionUpdate::kPaper, dda::FrictionUpdate::kReturnMapping}) {
+    const incline::Creep c = incline::creep(u, 15.0);
+    INFO("rate " << c.rate << " m/s");
+    CHECK_FALSE(incline::creep_stopped(c));
+  }
+  CHECK(incline::creep_stopped(incline::creep(dda::FrictionUpdate::kReturnMapping)));
 }
 
 TEST_CASE("4.3 rest: FAIL with friction off", "[controls][4.3]") {
