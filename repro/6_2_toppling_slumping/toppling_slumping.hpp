@@ -192,6 +192,30 @@ inline constexpr double kStaysSlip = 0.05;  // m: elastic and penalty settling i
 inline bool stays(const Control& whole) {
   return std::fabs(whole.left.base_slip) < kStaysSlip && std::fabs(whole.right.base_slip) < kStaysSlip;
 }
+// The model runs below the stability limit and its energy only dissipates:
+// dt / the current critical step stays below 1 and the total energy never
+// rises above its start by more than 1e-3 of |E(0)|. Sampled by the driver
+// every 0.01 s.
+struct Health {
+  double e0 = 0.0, rise = 0.0, ratio_max = 0.0;
+  bool started = false;
+  void sample(const dda::Simulation& sim) {
+    const double e = sim.energy().total();
+    if (!started) e0 = e;
+    started = true;
+    rise = std::max(rise, e - e0);
+    ratio_max = std::max(ratio_max, sim.dt() / sim.critical_time_step());
+  }
+};
+inline bool runs_stably(const Health& h) { return h.ratio_max < 1.0 && h.rise < 1e-3 * std::fabs(h.e0); }
+inline constexpr const char* kControlHealth = "6.2 stable run: FAIL at twice the critical step";
+// Diagnosis row: the slip in the second half of the run with the
+// elastic-plastic update is below a quarter of that with the paper's rule.
+inline bool ratchet_explains(double late_return_mapping, double late_paper) {
+  return std::fabs(late_return_mapping) < 0.25 * std::fabs(late_paper);
+}
+inline constexpr const char* kControlRatchet = "6.2 ratchet diagnosis: FAIL when both runs use the paper's update";
+
 // The negative controls (test_controls.cpp) named by the rows.
 inline const char* const kControlMechanism =
     "repro_controls: 6.2 toppling, slumping, premise: FAIL with locked joints, a rough base and a gentle friction";

@@ -250,6 +250,38 @@ TEST_CASE("6.2 toppling, slumping, premise: FAIL with locked joints, a rough bas
   CHECK_FALSE(topple::stays(g));
 }
 
+TEST_CASE("6.2 stable run: FAIL at twice the critical step", "[controls][6.2]") {
+  // The valley model at dt = 2 x the predicted critical step for 200 steps
+  // (or until a guard stops it): the stability row must see it.
+  const dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping();
+  dda::Scene over = ts.scene;
+  over.dt_fraction = 2.0;
+  topple::Health h;
+  try {
+    dda::Simulation sim(over);
+    h.sample(sim);
+    for (int k = 0; k < 200; ++k) {
+      sim.step();
+      h.sample(sim);
+    }
+  } catch (const dda::SimulationError& e) {
+    INFO("stopped: " << e.what());
+  }
+  INFO("dt/dt_crit at most " << h.ratio_max << ", energy rise " << h.rise << " J/m of " << h.e0);
+  CHECK_FALSE(topple::runs_stably(h));
+}
+
+TEST_CASE("6.2 ratchet diagnosis: FAIL when both runs use the paper's update", "[controls][6.2]") {
+  // The diagnosis compares the late slip of the elastic-plastic update with
+  // the paper's rule; with the paper's rule on both sides (each slope as one
+  // block, 3.5 s) the two are the same and the row must FAIL.
+  const dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping();
+  const topple::Control c = topple::run_control(ts, topple::one_block_per_slope(ts), {-1, +1}, 1, "control: ratchet");
+  const double late = c.left.base_slip - c.left_half.base_slip;
+  INFO("late slip, paper rule " << late << " m");
+  CHECK_FALSE(topple::ratchet_explains(late, late));
+}
+
 // --- S3 extreme cases: the row criterion ------------------------------------------
 TEST_CASE("S3 rows: FAIL with the penetration guard off and with the wrong expected velocities", "[controls][S3]") {
   auto find = [](const std::string& name, const std::string& parameter) {
