@@ -115,11 +115,28 @@ bool order_met(const repro::stab::Order& order, double expected, double tol);
 bool roundoff_met(double max_error, double level);
 // The fitted errors within a factor 1.5 (a model error dt does not reduce).
 bool plateau_met(const repro::stab::Order& order);
+// phi = 20 deg: the Eq. 30 error (relative, at the paper's dt) is the
+// model's, not dt's: as a distance (x kInclineDistance) it is more than
+// 100 x the trajectory error at the same dt.
+inline constexpr double kInclineDistance = 0.9;  // m, about the slide at t = 1 s
+inline bool model_error_dominates(double eq30_rel_error, double trajectory_error) {
+  return eq30_rel_error * kInclineDistance > 100.0 * trajectory_error;
+}
+// Within 1 % of Eq. 30 at every dt that ran.
+inline bool within_eq30(double max_rel_error) { return max_rel_error < 0.01; }
+// The resting block placed at `sunk` (the static penetration of the rows)
+// stays there: the largest |delta - sunk| over the run, m.
+double resting_deviation(dda::HRule h, double sunk);
+inline bool stays_at(double deviation, double static_pen) { return deviation < 1e-6 * static_pen; }
+
 // The negative controls (test_controls.cpp) named by the rows.
 inline const char* const kControlOrder2 = "repro_controls: S1 order 2: FAIL on a first-order configuration";
 inline const char* const kControlOrder1 = "repro_controls: S1 order 1: FAIL on a second-order configuration";
 inline const char* const kControlRoundoff = "repro_controls: S1 round-off: FAIL on a first-order configuration";
 inline const char* const kControlPlateau = "repro_controls: S1 plateau: FAIL on a converging curve";
+inline const char* const kControlModelError = "S1 model error: FAIL with the friction start-up option";
+inline const char* const kControlEq30 = "S1 Eq. 30 at every dt: FAIL with the paper's start";
+inline const char* const kControlStatic = "S1 static penetration: FAIL at the other H rule's penetration";
 
 std::vector<repro::Claim> claim_rows(const std::vector<CurveSummary>& curves, const References& references);
 
