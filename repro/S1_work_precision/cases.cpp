@@ -60,20 +60,6 @@ struct Conservation {
   double momentum_error() const { return dp / dda::length(p0); }
 };
 
-// The energy budget (Energy::balance_error) of a run with friction: the
-// largest |kinetic + gravity + strain + contact + friction springs +
-// dissipated - initial| over the run, relative to the largest energy turned
-// over (kinetic + strain + contact + friction springs + dissipated).
-struct Budget {
-  double worst = 0.0, turned_over = 0.0;
-  void step(const dda::Simulation& sim) {
-    const dda::Energy e = sim.energy();
-    worst = std::max(worst, std::fabs(e.balance_error()));
-    turned_over = std::max(turned_over, e.kinetic + e.strain + e.contact + e.friction_spring + e.dissipated);
-  }
-  double error() const { return turned_over > 0.0 ? worst / turned_over : 0.0; }
-};
-
 std::vector<Case> two_squares_cases() {
   std::vector<Case> out;
   struct Opt {

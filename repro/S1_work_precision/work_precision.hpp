@@ -4,6 +4,7 @@
 // here so that the negative controls (repro/common/test_controls.cpp) apply
 // the same ones to a deliberately wrong configuration.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -129,6 +130,25 @@ inline bool within_eq30(double max_rel_error) { return max_rel_error < 0.01; }
 double resting_deviation(dda::HRule h, double sunk);
 inline bool stays_at(double deviation, double static_pen) { return deviation < 1e-6 * static_pen; }
 
+// The energy budget (Energy::balance_error) of a run with friction: the
+// largest |kinetic + gravity + strain + contact + friction springs +
+// dissipated - initial| over the run, relative to the largest energy turned
+// over (kinetic + strain + contact + friction springs + dissipated).
+// count_dissipated false leaves the dissipated work out (a control).
+struct Budget {
+  bool count_dissipated = true;
+  double worst = 0.0, turned_over = 0.0;
+  void step(const dda::Simulation& sim) {
+    const dda::Energy e = sim.energy();
+    const double off = e.balance_error() - (count_dissipated ? 0.0 : e.dissipated);
+    worst = std::max(worst, std::fabs(off));
+    turned_over = std::max(turned_over, e.kinetic + e.strain + e.contact + e.friction_spring + e.dissipated);
+  }
+  double error() const { return turned_over > 0.0 ? worst / turned_over : 0.0; }
+};
+// The budget rows: below 1e-3 of the energy turned over at every dt that ran.
+inline bool budget_closes(double max_error) { return max_error < 1e-3; }
+
 // The negative controls (test_controls.cpp) named by the rows.
 inline const char* const kControlOrder2 = "repro_controls: S1 order 2: FAIL on a first-order configuration";
 inline const char* const kControlOrder1 = "repro_controls: S1 order 1: FAIL on a second-order configuration";
@@ -137,6 +157,7 @@ inline const char* const kControlPlateau = "repro_controls: S1 plateau: FAIL on 
 inline const char* const kControlModelError = "S1 model error: FAIL with the friction start-up option";
 inline const char* const kControlEq30 = "S1 Eq. 30 at every dt: FAIL with the paper's start";
 inline const char* const kControlStatic = "S1 static penetration: FAIL at the other H rule's penetration";
+inline const char* const kControlBudget = "S1 energy budget: FAIL without the dissipated sliding work";
 
 std::vector<repro::Claim> claim_rows(const std::vector<CurveSummary>& curves, const References& references);
 

@@ -234,6 +234,30 @@ TEST_CASE("S1 static penetration: FAIL at the other H rule's penetration", "[con
   CHECK(s1::stays_at(s1::resting_deviation(dda::HRule::kMinMaxEdge, unified), unified));
 }
 
+TEST_CASE("S1 energy budget: FAIL without the dissipated sliding work", "[controls][S1]") {
+  // The budget rows' criterion on the sliding block with friction, at the
+  // paper's dt: with the sliding work in the budget it closes; without it,
+  // the energy friction took is missing and the row must FAIL.
+  for (const char* phi : {"phi = 10 deg", "phi = 20 deg, paper"}) {
+    const s1::Case c = s1_case("4.3 incline", phi);
+    dda::Scene sc = c.sc;
+    sc.dt = c.paper_dt;
+    dda::Simulation sim(sc);
+    s1::Budget with, without;
+    without.count_dissipated = false;
+    with.step(sim);
+    without.step(sim);
+    while (sim.time() < sc.duration - 0.5 * sim.dt()) {
+      sim.step();
+      with.step(sim);
+      without.step(sim);
+    }
+    INFO(phi << ": budget error " << with.error() << " with, " << without.error() << " without the sliding work");
+    CHECK(s1::budget_closes(with.error()));
+    CHECK_FALSE(s1::budget_closes(without.error()));
+  }
+}
+
 // --- 5.4 extreme geometry: the "clean" criterion -----------------------------------
 namespace {
 extreme::Case extreme_case(const std::string& label) {
