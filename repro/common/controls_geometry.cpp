@@ -13,6 +13,7 @@
 #include "dda/robustness_scenes.hpp"
 #include "repro/3_2_2_potential_fields/potential_fields.hpp"
 #include "repro/3_2_2_previous_potential/previous_potential.hpp"
+#include "repro/5_3_small_edges/small_edges.hpp"
 #include "repro/5_5_segmentation/segmentation.hpp"
 #include "repro/common/claims.hpp"
 
@@ -234,4 +235,20 @@ TEST_CASE("3.2.2 Fig. 5 edge lines fail on the concave polygon: FAIL on the conv
   const repro::Claim c = pf::concave_lines_row(convex, pf::convex_grid(convex));
   CHECK_FALSE(c.pass);
   CHECK(c.control == control_name(pf::kControlConcaveLines));
+}
+
+// --- 5.3, mirror symmetry of case 1 ---------------------------------------------------
+
+TEST_CASE("5.3 mirror symmetry: FAIL when the square also moves 1 mm/s sideways", "[controls][5.3]") {
+  // Case 1 with the upper square given 1 mm/s along x besides its 1 m/s
+  // fall: the impact is no longer symmetric about x = 0 (the centroid
+  // drifts and the off-centre hit on the 0.01 m edge turns the square, about
+  // 1 cm of asymmetry), far above the 1e-9 m the row allows.
+  dda::paper::SmallEdgeImpact si = dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge);
+  REQUIRE(si.mirror_symmetric);
+  CHECK(small_edges::mirror_row("5.3", "control", small_edges::run(si, 1, nullptr, nullptr)).pass);
+  si.scene.blocks[static_cast<std::size_t>(si.upper)].velocity.x += 1e-3;
+  const repro::Claim c = small_edges::mirror_row("5.3", "control", small_edges::run(si, 1, nullptr, nullptr));
+  CHECK_FALSE(c.pass);
+  CHECK(c.control == control_name(small_edges::kControlMirror));
 }
