@@ -1,7 +1,8 @@
 // Paper A Sect. 3.2.2 (potential_fields.cpp says what it reproduces): the
 // reconstructed polygons, the potential grids and the checks shared by both
-// figures, here so that the negative controls (repro/common/test_controls.cpp)
-// apply the same criteria to a deliberately wrong field.
+// figures and the criteria of every check row, here so that the negative
+// controls (repro/common/test_controls.cpp, controls_geometry.cpp) apply the
+// same criteria to a deliberately wrong field or polygon.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -28,6 +29,18 @@ const char* const kSection = "3.2.2";
 // The negative control of the checks every field gets (add_common_claims).
 const char* const kFieldControl =
     "repro_controls: 3.2.2 potential field: FAIL on an offset, a shifted and a doubled field";
+// The negative controls of the figure-specific rows (controls_geometry.cpp).
+inline const char* const kControlPenetration = "3.2.2 Fig. 4b equal penetration: FAIL with H set to each edge's length";
+inline const char* const kControlEdgeLines =
+    "3.2.2 Fig. 4b edge lines = shortest distance: FAIL on the concave Fig. 5 polygon";
+inline const char* const kControlInscribed = "3.2.2 Fig. 4b largest potential: FAIL with H halved in the field";
+inline const char* const kControlNearest =
+    "3.2.2 Fig. 5 nearest boundary point: FAIL with the edge-line formula as the field";
+inline const char* const kControlConcaveLines =
+    "3.2.2 Fig. 5 edge lines fail on the concave polygon: FAIL on the convex Fig. 4b polygon";
+constexpr double kPenetrationTolerance = 1e-9;  // relative
+constexpr double kLineTolerance = 1e-12;        // m
+constexpr double kSampleSpacing = 5e-4;         // m: boundary samples of the nearest-point check
 
 // ---- geometry -------------------------------------------------------------
 
@@ -249,6 +262,167 @@ inline void add_common_claims(std::vector<Claim>& claims, const std::string& fig
                         " grid = " + format_short(slope, 6) + " Pa/m",
                     "<= kn/H * (1 + 1e-9)", slope <= (kKn / kH) * (1.0 + 1e-9)});
   claims.back().control = kFieldControl;
+}
+
+// ---- figure-specific checks --------------------------------------------------
+
+// Fig. 4b field: Eqs. 13-14 (dda::exit_distance, dda::potential) on the
+// convex polygon pts; inside from dda::locate_point.
+inline Grid convex_grid(const std::vector<Vec2>& pts) {
+  const dda::Polygon poly = dda::make_polygon(pts.data(), static_cast<int>(pts.size()));
+  Grid g = make_grid(pts);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const Vec2 p = g.at(i, j);
+      const std::size_t k = g.idx(i, j);
+      g.inside[k] = dda::locate_point(poly, p) == dda::PointLocation::kInside;
+      g.d_exit[k] = dda::exit_distance(poly, p);
+      g.phi[k] = dda::potential(poly, p, kKn, kH);
+    }
+  return g;
+}
+
+// Fig. 5 field: d_exit = shortest distance to the boundary segments (signed,
+// negative outside), phi = kn d_exit / H inside, 0 outside.
+inline Grid concave_grid(const std::vector<Vec2>& pts) {
+  Grid g = make_grid(pts);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const Vec2 p = g.at(i, j);
+      const std::size_t k = g.idx(i, j);
+      const double dist = boundary_distance(pts, p);
+      const bool in = inside_simple(pts, p) && dist > 0.0;
+      g.inside[k] = in;
+      g.d_exit[k] = in ? dist : -dist;
+      g.phi[k] = in ? kKn * dist / kH : 0.0;
+    }
+  return g;
+}
+
+// Eqs. 13-14 applied to any polygon (edge lines): min_i n_i . (v_i - p).
+inline double edge_line_distance(const std::vector<Vec2>& pts, Vec2 p) {
+  double dl = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < pts.size(); ++e) {
+    const Vec2 a = pts[e], b = pts[(e + 1) % pts.size()];
+    dl = std::min(dl, dda::dot(dda::normalized(dda::perp_right(b - a)), a - p));
+  }
+  return dl;
+}
+
+// Fig. 4b: phi at depth delta = min edge / 4 below every edge midpoint
+// equals kn delta / H (relative deviation <= 1e-9).
+template <class Phi>
+inline Claim equal_penetration_row(const dda::Polygon& poly, Phi phi) {
+  double min_edge = std::numeric_limits<double>::infinity(), max_edge = 0.0;
+  for (int i = 0; i < poly.count; ++i) {
+    min_edge = std::min(min_edge, dda::length(poly.edge(i)));
+    max_edge = std::max(max_edge, dda::length(poly.edge(i)));
+  }
+  const double delta = 0.25 * min_edge;
+  double worst_rel = 0.0;
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec2 mid = 0.5 * (poly.vertex(i) + poly.vertex(poly.next(i)));
+    const double v = phi(mid - delta * poly.normal(i));
+    worst_rel = std::max(worst_rel, std::fabs(v - kKn * delta / kH) / (kKn * delta / kH));
+  }
+  Claim c{kSection, figure_tag("Fig. 4b") + ": the same penetration below any edge, small edges included, gives the same potential",
+          "'with the same H value ... the contact potential of the points with the same penetrations keeps equal'",
+          "max relative deviation from kn*delta/H at delta = " + format_short(delta, 3) + " m below the " +
+              std::to_string(poly.count) + " edge midpoints (edges " + format_short(min_edge, 3) + " to " +
+              format_short(max_edge, 3) + " m) = " + format_short(worst_rel, 3),
+          "<= 1e-9", worst_rel <= kPenetrationTolerance};
+  c.control = std::string("repro_controls: ") + kControlPenetration;
+  return c;
+}
+
+// Fig. 4b: the grid's d_exit (Eqs. 13-14) equals the distance to the boundary
+// segments of pts at every interior grid point (<= 1e-12 m).
+inline Claim edge_lines_row(const std::vector<Vec2>& pts, const Grid& g) {
+  double line_vs_segment = 0.0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const std::size_t k = g.idx(i, j);
+      if (g.inside[k])
+        line_vs_segment = std::max(line_vs_segment, std::fabs(g.d_exit[k] - boundary_distance(pts, g.at(i, j))));
+    }
+  Claim c{kSection, figure_tag("Fig. 4b") + ": Eqs. 13-14 (edge lines) equal the shortest distance to the boundary",
+          "Eq. 13: d_exit = min |d_eip| over the edges for a convex polygon",
+          "max |d_exit - distance to boundary segments| at interior grid points = " + format_short(line_vs_segment, 3) +
+              " m",
+          "<= 1e-12 m", line_vs_segment <= kLineTolerance};
+  c.control = std::string("repro_controls: ") + kControlEdgeLines;
+  return c;
+}
+
+// Fig. 4b: the grid's largest phi lies within one grid step (kn h / H) below
+// kn r / H, r the inscribed radius of poly, and phi(centre) = kn r / H.
+template <class Phi>
+inline Claim inscribed_row(const dda::Polygon& poly, const Grid& g, Phi phi) {
+  const dda::InscribedCircle ic = dda::inscribed_circle(poly);
+  const double phi_max_grid = interior_stats(g).max_phi, phi_ic = kKn * ic.radius / kH;
+  const double phi_at_centre = phi(ic.centre);
+  const bool ic_ok = phi_max_grid <= phi_ic * (1 + 1e-12) && phi_max_grid >= phi_ic - kKn * g.h / kH &&
+                     std::fabs(phi_at_centre - phi_ic) <= 1e-12;
+  Claim c{kSection, figure_tag("Fig. 4b") + ": the largest potential is kn*r/H at the inscribed-circle centre",
+          "follows from Eqs. 12-14 (max of d_exit = inscribed radius r)",
+          "r = " + format_short(ic.radius, 6) + " m; phi(centre) = " + format_short(phi_at_centre, 6) +
+              " Pa; grid max = " + format_short(phi_max_grid, 6) + " Pa",
+          "grid max in [kn*r/H - kn*h/H, kn*r/H], h = " + format_short(g.h, 3) + " m", ic_ok};
+  c.control = std::string("repro_controls: ") + kControlInscribed;
+  return c;
+}
+
+// Fig. 5: the grid's phi equals kn/H times the distance to a dense sampling
+// of the boundary of pts (spacing <= kSampleSpacing) at every third interior
+// grid point, within kn/H times half the sample spacing: an independent
+// evaluation of the nearest boundary point.
+inline Claim nearest_point_row(const std::vector<Vec2>& pts, const Grid& g) {
+  std::vector<Vec2> samples;
+  double max_seg = 0.0;  // largest gap between consecutive samples
+  for (std::size_t e = 0; e < pts.size(); ++e) {
+    const Vec2 a = pts[e], b = pts[(e + 1) % pts.size()];
+    const int n = std::max(1, static_cast<int>(std::ceil(dda::distance(a, b) / kSampleSpacing)));
+    max_seg = std::max(max_seg, dda::distance(a, b) / n);
+    for (int s = 0; s < n; ++s) samples.push_back(dda::lerp(a, b, static_cast<double>(s) / n));
+  }
+  double worst_sample = 0.0;
+  long checked = 0;
+  for (int j = 0; j < g.ny; j += 3)
+    for (int i = 0; i < g.nx; i += 3) {
+      const std::size_t k = g.idx(i, j);
+      if (!g.inside[k]) continue;
+      double ds = std::numeric_limits<double>::infinity();
+      for (Vec2 q : samples) ds = std::min(ds, dda::distance(g.at(i, j), q));
+      worst_sample = std::max(worst_sample, std::fabs(kKn * ds / kH - g.phi[k]));
+      ++checked;
+    }
+  Claim c{kSection, figure_tag("Fig. 5") + ": phi equals kn/H times the distance to the nearest boundary point",
+          "Eq. 12: 'a point penetrated in a polygon will always be pushed out along the shortest path'",
+          "max |phi - kn/H * distance to " + std::to_string(samples.size()) + " boundary samples| at " +
+              std::to_string(checked) + " interior points = " + format_short(worst_sample, 3) + " Pa",
+          "<= kn/H * half the sample spacing = " + format_short(kKn * max_seg / (2 * kH), 3) + " Pa",
+          checked > 0 && worst_sample <= kKn * max_seg / (2 * kH) * (1 + 1e-9)};
+  c.control = std::string("repro_controls: ") + kControlNearest;
+  return c;
+}
+
+// Fig. 5: Eqs. 13-14 applied blindly to pts give d_exit <= 0 at some interior
+// grid point of g (so the shortest-distance evaluation is needed).
+inline Claim concave_lines_row(const std::vector<Vec2>& pts, const Grid& g) {
+  long fails = 0, interior = 0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      if (!g.inside[g.idx(i, j)]) continue;
+      ++interior;
+      if (edge_line_distance(pts, g.at(i, j)) <= 0.0) ++fails;
+    }
+  Claim c{kSection, figure_tag("Fig. 5") + ": Eqs. 13-14 (edge lines) alone do not give the concave potential",
+          "Eq. 13 is stated for convex polygons; the paper decomposes the concave polygon into convex parts",
+          std::to_string(fails) + " of " + std::to_string(interior) +
+              " interior grid points get d_exit <= 0 from the edge-line formula",
+          "> 0 points (the convex formula fails, so the shortest-distance evaluation is needed)", fails > 0};
+  c.control = std::string("repro_controls: ") + kControlConcaveLines;
+  return c;
 }
 
 }  // namespace potential_fields

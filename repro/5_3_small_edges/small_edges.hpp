@@ -1,6 +1,6 @@
 // Paper A Sect. 5.3: one small-edge impact and its claim rows, shared by the
 // driver (small_edges.cpp) and the negative controls
-// (repro/common/test_controls.cpp).
+// (repro/common/test_controls.cpp, controls_geometry.cpp).
 #pragma once
 #include <algorithm>
 #include <string>
@@ -17,6 +17,9 @@ namespace small_edges {
 inline const char* const kControlFlip = "5.3 sane: FAIL when kn is 1000 times too soft and the guards are off";
 inline const char* const kControlSoft = "5.3 penetration: FAIL when kn is 100 times too soft";
 inline const char* const kControlDamped = "5.3 energy: FAIL with mass damping";
+inline const char* const kControlMirror =  // in repro/common/controls_geometry.cpp
+    "5.3 mirror symmetry: FAIL when the square also moves 1 mm/s sideways";
+constexpr double kMirrorTolerance = 1e-9;  // m
 using dda::Vec2;
 using repro::format_short;
 using dda::paper::SmallEdgeCase;
@@ -107,6 +110,16 @@ inline void add_claims(std::vector<repro::Claim>& claims, const std::string& sec
                         format_short(r.stats.peak_vertex_depth, 3) + " m",
                     "< 0.05 m, a twentieth of the block", r.stats.peak_vertex_depth < 0.05});
   claims.back().control = std::string("repro_controls: ") + kControlSoft;
+}
+
+// Case 1 only (the configuration is mirror symmetric about x = 0): the
+// upper block's mirror asymmetry stays below kMirrorTolerance.
+inline repro::Claim mirror_row(const std::string& section, const std::string& name, const Result& r) {
+  repro::Claim c{section, name + ": the impact stays mirror symmetric about x = 0", "(symmetric configuration)",
+                 "max |x_c| and |rotation| * radius of the upper block = " + format_short(r.mirror, 3) + " m",
+                 "< 1e-9 m", r.mirror < kMirrorTolerance};
+  c.control = std::string("repro_controls: ") + kControlMirror;
+  return c;
 }
 
 }  // namespace small_edges
