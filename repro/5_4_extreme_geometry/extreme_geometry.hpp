@@ -3,12 +3,14 @@
 // negative controls (repro/common/test_controls.cpp) apply the same one.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dda/contact.hpp"
 #include "dda/scene.hpp"
 #include "dda/simulation.hpp"
+#include "repro/common/claims.hpp"
 
 namespace extreme {
 
@@ -59,5 +61,33 @@ std::vector<Case> make_cases();
 // Summary of one outcome for the report row; pm: 3 significant digits.
 std::string describe(const Outcome& o);
 std::string pm(double x);
+
+// The negative control of the "clean" criterion (repro/common/test_controls.cpp).
+inline constexpr const char* kCleanControl =
+    "repro_controls: 5.4 clean: FAIL on a damped, an asymmetric and a pierced run";
+
+// ---- diagnosis of a run that is not clean (diagnosis.cpp) -------------------
+
+// Why a run that is not clean at the paper's dt fails, derived from the
+// diagnoses: d1 = stable step (<= 0.5 dt_crit) with the step-motion guard
+// off, d2 = d1 with the exact integration, d3 = d1 with dt / 10. Every
+// statement carries the numbers it rests on; `brief` is the same in a few
+// words (the figure's table).
+struct Cause {
+  std::string text, brief;
+};
+Cause cause(const Case& c, const Outcome& o, const Outcome& d1, const Outcome& d2, const Outcome& d3);
+
+// The option beside a FAIL at the paper's settings, as its own row (the
+// paper's method stays the row above it):
+//  - a failure a smaller step removes (d1 or d3 clean): that step with every
+//    guard on, beyond the paper's fixed dt;
+//  - a 5.1 failure no step removes (the penalty of Eq. 12 at the paper's kn
+//    cannot stop A within B's half thickness: the guard's message): the
+//    stiff-contact option, beyond the paper's kn (diagnosis.cpp); a run too
+//    long for this suite is costed, not run (a measurement row).
+// None for the rest (a failure of neither kind has no option to show).
+// `total` accumulates the simulated seconds.
+std::optional<repro::Claim> option_row(const Case& c, const Outcome& d1, const Outcome& d3, double& total);
 
 }  // namespace extreme
