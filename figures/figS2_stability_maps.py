@@ -6,8 +6,8 @@ usage: figS2_stability_maps.py DATA_DIR OUT_PNG
   and dt_crit_check.csv.
 
 Left three panels: one per map, a marker per run (stable, energy growth
-> 1 %, flip-through, blow-up), the solver's predicted dt_crit (after this
-issue's fix), the estimate before it, and the linearised 2/omega_max at
+> 1 %, flip-through, blow-up), the solver's predicted dt_crit, the
+simpler per-block estimate 2 kn L_max / H, and the linearised 2/omega_max at
 the peak contact force (independent check). Right panel: the dt_crit check
 on resting contacts, each estimate divided by the linearised limit.
 """
