@@ -11,7 +11,7 @@ FUZZ_CASES ?= 1000000
 
 # Debian packages the project needs (tool chain first, then libraries, then Python).
 DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
-            libbenchmark-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil
+            libbenchmark-dev libbox2d-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil
 
 BIN := $(BUILD)/bin
 
@@ -108,6 +108,7 @@ fuzz: build
 # collapse's steps per second and the block-count scaling table (1-2 min).
 bench: build
 	$(BIN)/bench_geometry
+	$(BIN)/bench_pair_cost
 	$(BIN)/bench_collapse
 	@mkdir -p $(OUT)/bench
 	$(BIN)/bench_collapse --scaling --csv $(OUT)/bench/scaling.csv
