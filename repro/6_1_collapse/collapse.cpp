@@ -114,6 +114,7 @@ int main(int argc, char** argv) try {
            ") from the live contacts during the run",
        "dt/dt_crit < 0.6 at start (against the a-priori bound predicted_critical_step) and < 1 throughout (live contacts); dropped area < 1 % of the region",
        generator_ok(a)});
+  claims.back().control = control(kControlGenerator);
   for (const CaseResult& r : runs) {
     const EnergyBudget e = energy_budget(r);
     claims.push_back(

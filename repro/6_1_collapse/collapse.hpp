@@ -110,4 +110,9 @@ bool runs_out_further(const Sample& a, const Sample& b);
 // Round-off: runs_out_further(case 1, case 2) in every numbering.
 bool ordering_survives(const Ends& ends);
 
+// ---- the negative controls (repro/common/controls_6_1.cpp) named by the rows
+inline constexpr const char* kControlGenerator =
+    "6.1 generator: FAIL without the sliver filter and with the joint spacings a third";
+inline std::string control(const char* name) { return std::string("repro_controls: ") + name; }
+
 }  // namespace collapse61
