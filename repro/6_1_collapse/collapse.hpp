@@ -113,6 +113,7 @@ bool ordering_survives(const Ends& ends);
 // ---- the negative controls (repro/common/controls_6_1.cpp) named by the rows
 inline constexpr const char* kControlGenerator =
     "6.1 generator: FAIL without the sliver filter and with the joint spacings a third";
+inline constexpr const char* kControlStable = "6.1 stable run: FAIL with dt 5 times the critical step";
 inline std::string control(const char* name) { return std::string("repro_controls: ") + name; }
 
 }  // namespace collapse61

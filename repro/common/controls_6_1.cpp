@@ -27,6 +27,17 @@ void names_this_test(const char* control_name) {
   CHECK(control(control_name) == "repro_controls: " + Catch::getResultCapture().getCurrentTestName());
 }
 
+// Both cases to kShort, with the paper's friction angles (run once).
+const std::vector<CaseResult>& short_runs() {
+  static const std::vector<CaseResult> runs = [] {
+    std::vector<CaseResult> r;
+    for (int k = 1; k <= 2; ++k)
+      r.push_back(run_case(k, scene(kFrictions[k - 1], kShort, dda::RotationUpdate::kPaperLinear), 1, ""));
+    return r;
+  }();
+  return runs;
+}
+
 // A few steps of the column `col` (no output): the generator row's measures.
 CaseResult few_steps(const dda::paper::Collapse& col) { return run_case(1, col, 1, ""); }
 
@@ -55,4 +66,45 @@ TEST_CASE("6.1 generator: FAIL without the sliver filter and with the joint spac
   INFO("spacings a third: " << small.blocks << " blocks, " << small.dropped_area << " m^2 dropped, dt/dt_crit "
                             << small.dt_ratio0 << " at start, at most " << small.dt_ratio_max);
   CHECK_FALSE(generator_ok(small));
+}
+
+TEST_CASE("6.1 stable run: FAIL with dt 5 times the critical step", "[controls][6.1]") {
+  names_this_test(kControlStable);
+  dda::paper::Collapse col = scene(kFrictions[0], 0.2, dda::RotationUpdate::kPaperLinear);
+  // The paper's dt passes over the same 0.2 s (the check is not failing everything).
+  CHECK(energy_budget(run_case(1, col, 1, "")).pass);
+  // dt from 0.55 to 5 times the a-priori critical step: velocity Verlet is
+  // unstable above it, the contact springs' energy grows by a factor each
+  // step, and the row ("without a stability guard tripping; energy only
+  // dissipates") must fail: here by the step-motion guard's stop (measured:
+  // after 9 steps) ...
+  col.scene.dt = 5.0 * dda::Simulation(col.scene).predicted_critical_step();
+  const CaseResult guarded = run_case(1, col, 1, "");
+  INFO("guards on: stopped '" << guarded.stopped << "' after " << guarded.steps << " steps");
+  CHECK_FALSE(guarded.stopped.empty());
+  CHECK_FALSE(energy_budget(guarded).pass);
+  // ... and with every guard a scene can switch off switched off: the blocks
+  // turn inside out (the solver's area check, which cannot be switched off,
+  // stops it after 10 steps); the run does not reach its end.
+  col.scene.guards.max_step_motion = 1e9;
+  col.scene.guards.max_balance_error = 0.0;
+  col.scene.guards.energy_check_every = 0;
+  col.scene.guards.max_penetration = 0.0;
+  col.scene.guards.max_approach_energy = 0.0;
+  const CaseResult unguarded = run_case(1, col, 1, "");
+  INFO("guards off: stopped '" << unguarded.stopped << "' after " << unguarded.steps << " steps");
+  CHECK_FALSE(energy_budget(unguarded).pass);
+  // The energy branch of the criterion: both unstable runs stop within a
+  // few steps, before the first sample (every 0.05 s), so they never reach
+  // it; a sharp instability always does (dt 1.35 x the predicted step runs
+  // 0.2 s cleanly, 1.4 x stops after about 110 steps). So, synthetic: the
+  // 1.5 s run of case 1 with energy gained between two samples, 2 % of the
+  // potential energy it releases (what an unstable contact pumping energy
+  // into the rock would show), must fail too.
+  CaseResult pumped = short_runs()[0];
+  const EnergyBudget clean = energy_budget(pumped);
+  CHECK(clean.pass);
+  for (std::size_t i = pumped.series.size() / 2; i < pumped.series.size(); ++i)
+    pumped.series[i].total = pumped.series.front().total + 0.02 * clean.released;
+  CHECK_FALSE(energy_budget(pumped).pass);
 }
