@@ -153,6 +153,7 @@ int main(int argc, char** argv) try {
              " of " + std::to_string(lead.compared) + " samples after 0.5 s (" + fronts + ")",
          "case 1's mean drop > 1.1 x case 2's and its front > case 2's + 2.5 m at 2.5 s",
          collapses_faster(p1, p2)});
+    claims.back().control = control(kControlFaster);
     const Sample& e1 = c1.at(duration);
     const Sample& e2 = c2.at(duration);
     claims.push_back(

@@ -108,3 +108,20 @@ TEST_CASE("6.1 stable run: FAIL with dt 5 times the critical step", "[controls][
     pumped.series[i].total = pumped.series.front().total + 0.02 * clean.released;
   CHECK_FALSE(energy_budget(pumped).pass);
 }
+
+TEST_CASE("6.1 faster collapse: FAIL with the friction swapped between the cases", "[controls][6.1]") {
+  names_this_test(kControlFaster);
+  const std::vector<CaseResult>& runs = short_runs();
+  const Sample& p15 = runs[0].at(faster_time(kShort));
+  const Sample& p30 = runs[1].at(faster_time(kShort));
+  INFO("at " << p15.t << " s: mean drop " << p15.mean_drop << " vs " << p30.mean_drop << " m, front " << p15.front_x
+             << " vs " << p30.front_x << " m");
+  // The paper's assignment (case 1 at 15 deg) passes at 1.5 s already ...
+  CHECK(collapses_faster(p15, p30));
+  // ... and with the friction angles swapped between the cases (case 1 at
+  // 30 deg, case 2 at 15 deg) the claimed faster case is the slower one: the
+  // criterion must fail.
+  CHECK_FALSE(collapses_faster(p30, p15));
+  // Equal friction (both cases the 15 deg run): no lead at all, must fail.
+  CHECK_FALSE(collapses_faster(p15, p15));
+}
