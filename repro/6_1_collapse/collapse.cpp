@@ -167,6 +167,7 @@ int main(int argc, char** argv) try {
              " %, mean drop " + format_short(e1.mean_drop, 3) + " vs " + format_short(e2.mean_drop, 3) + " m",
          "case 1's front > case 2's + 2.5 m (one joint spacing) and its runout mass > case 2's",
          runs_out_further(e1, e2)});
+    claims.back().control = control(kControlRunout);
   }
   if (renumber) {
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};

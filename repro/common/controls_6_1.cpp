@@ -125,3 +125,20 @@ TEST_CASE("6.1 faster collapse: FAIL with the friction swapped between the cases
   // Equal friction (both cases the 15 deg run): no lead at all, must fail.
   CHECK_FALSE(collapses_faster(p15, p15));
 }
+
+TEST_CASE("6.1 runout: FAIL with the friction swapped between the cases", "[controls][6.1]") {
+  names_this_test(kControlRunout);
+  const std::vector<CaseResult>& runs = short_runs();
+  const Sample& e15 = runs[0].at(kShort);
+  const Sample& e30 = runs[1].at(kShort);
+  INFO("at " << e15.t << " s: front " << e15.front_x << " vs " << e30.front_x << " m, runout mass "
+             << e15.runout_mass << " vs " << e30.runout_mass);
+  CHECK(runs_out_further(e15, e30));
+  // Case 1 at 30 deg, case 2 at 15 deg: case 1 runs out less far, with less mass.
+  CHECK_FALSE(runs_out_further(e30, e15));
+  // The same front but no more runout mass: a lead of the front alone (one
+  // block ahead) is not a larger runout mass.
+  Sample ahead_only = e30;
+  ahead_only.front_x = e15.front_x + 10.0;
+  CHECK_FALSE(runs_out_further(ahead_only, e30));
+}
