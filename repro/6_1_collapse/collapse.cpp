@@ -189,6 +189,7 @@ int main(int argc, char** argv) try {
              format_short(hi[1] - lo[1], 3) + " m (case 2)",
          "in every numbering case 1's front > case 2's + 2.5 m and its runout mass > case 2's",
          ordering_survives(ends)});
+    claims.back().control = control(kControlRenumbered);
   }
   repro::write_claims(repro::claims_path(out, "6_1_collapse"), claims);
   return 0;

@@ -116,6 +116,8 @@ inline constexpr const char* kControlGenerator =
 inline constexpr const char* kControlStable = "6.1 stable run: FAIL with dt 5 times the critical step";
 inline constexpr const char* kControlFaster = "6.1 faster collapse: FAIL with the friction swapped between the cases";
 inline constexpr const char* kControlRunout = "6.1 runout: FAIL with the friction swapped between the cases";
+inline constexpr const char* kControlRenumbered =
+    "6.1 renumbering: FAIL when the cases' order flips in one numbering";
 inline std::string control(const char* name) { return std::string("repro_controls: ") + name; }
 
 }  // namespace collapse61

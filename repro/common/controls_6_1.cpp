@@ -142,3 +142,24 @@ TEST_CASE("6.1 runout: FAIL with the friction swapped between the cases", "[cont
   ahead_only.front_x = e15.front_x + 10.0;
   CHECK_FALSE(runs_out_further(ahead_only, e30));
 }
+
+TEST_CASE("6.1 renumbering: FAIL when the cases' order flips in one numbering", "[controls][6.1]") {
+  names_this_test(kControlRenumbered);
+  const std::vector<CaseResult>& runs = short_runs();
+  const Sample& e15 = runs[0].series.back();
+  const Sample& e30 = runs[1].series.back();
+  // All three numberings with the paper's assignment: holds at 1.5 s.
+  const Ends same = {{{e15, e30}, {e15, e30}, {e15, e30}}};
+  CHECK(ordering_survives(same));
+  // The y numbering's end states swapped between the cases: the ordering
+  // flips under a renumbering (what a chaotic run can do), and the row must
+  // fail even though the generator numbering still holds.
+  const Ends flipped = {{{e15, e30}, {e15, e30}, {e30, e15}}};
+  CHECK(runs_out_further(flipped[0][0], flipped[0][1]));
+  CHECK_FALSE(ordering_survives(flipped));
+  // A real renumbered rerun (blocks by centroid x) with the friction swapped.
+  const Sample x30 = rerun_renumbered(1, scene(kFrictions[1], kShort, dda::RotationUpdate::kPaperLinear), 1, 0);
+  const Ends rerun = {{{e15, e30}, {x30, e30}, {e15, e30}}};
+  INFO("x-numbered rerun of case 1 at 30 deg: front " << x30.front_x << " m, runout mass " << x30.runout_mass);
+  CHECK_FALSE(ordering_survives(rerun));
+}
