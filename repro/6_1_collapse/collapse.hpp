@@ -11,6 +11,7 @@
 #include "dda/joint_sets.hpp"
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "repro/common/claims.hpp"
 
 namespace collapse61 {
 
@@ -118,6 +119,6 @@ inline constexpr const char* kControlFaster = "6.1 faster collapse: FAIL with th
 inline constexpr const char* kControlRunout = "6.1 runout: FAIL with the friction swapped between the cases";
 inline constexpr const char* kControlRenumbered =
     "6.1 renumbering: FAIL when the cases' order flips in one numbering";
-inline std::string control(const char* name) { return std::string("repro_controls: ") + name; }
+inline std::string control(const char* name) { return repro::control_test(name); }
 
 }  // namespace collapse61
