@@ -48,12 +48,6 @@ struct Start {
   }
 };
 
-std::string time_tag(double t) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", t);
-  return b;
-}
-
 // The output files of one case (run_case with a directory).
 struct Files {
   repro::CsvWriter series, frames, states;
@@ -68,6 +62,12 @@ struct Files {
 };
 
 }  // namespace
+
+std::string time_tag(double t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", t);
+  return b;
+}
 
 const Sample& CaseResult::at(double t) const {
   const Sample* best = &series.front();

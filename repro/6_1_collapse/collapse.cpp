@@ -56,14 +56,6 @@
 using namespace collapse61;
 using repro::format_short;
 
-namespace {
-std::string time_tag(double t) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", t);
-  return b;
-}
-}  // namespace
-
 int main(int argc, char** argv) try {
   repro::check_command_line(argc, argv, "Paper A Sect. 6.1 (Figs. 19-20, geometry reconstructed): frictional collapse of a jointed rock mass, cases 1 and 2.",
                             {{"--duration", "S", "simulated seconds per case (default 7.5: the paper's)", false},

@@ -47,6 +47,9 @@ struct CaseResult {
   const Sample& at(double t) const;
 };
 
+// "%.1f" of a time (file names and row texts).
+std::string time_tag(double t);
+
 // The scene of case k's friction, run to `duration`, with the rotation update.
 dda::paper::Collapse scene(double friction, double duration, dda::RotationUpdate rotation);
 
