@@ -117,7 +117,7 @@ bool ordering_survives(const Ends& ends);
 // ---- the negative controls (repro/common/controls_6_1.cpp) named by the rows
 inline constexpr const char* kControlGenerator =
     "6.1 generator: FAIL without the sliver filter and with the joint spacings a third";
-inline constexpr const char* kControlStable = "6.1 stable run: FAIL with dt 5 times the critical step";
+inline constexpr const char* kControlStable = "6.1 stable run: FAIL with dt twice the critical step";
 inline constexpr const char* kControlFaster = "6.1 faster collapse: FAIL with the friction swapped between the cases";
 inline constexpr const char* kControlRunout = "6.1 runout: FAIL with the friction swapped between the cases";
 inline constexpr const char* kControlRenumbered =
