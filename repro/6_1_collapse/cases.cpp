@@ -1,0 +1,308 @@
+// Paper A Sect. 6.1: runs, measures, output files and criteria (collapse.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <utility>
+
+#include "dda/polygon.hpp"
+#include "repro/6_1_collapse/collapse.hpp"
+#include "repro/common/common.hpp"
+#include "repro/common/sim_output.hpp"
+#include "repro/common/vtk_output.hpp"
+
+namespace collapse61 {
+namespace {
+using repro::format_short;
+
+// The rock's start (centroids and total mass) and the geometric measures
+// of a state against it: front, mean drop, travel, runout mass (a Sample
+// without its energies).
+struct Start {
+  std::vector<dda::Vec2> c0;
+  double mass = 0.0;
+  explicit Start(const dda::Simulation& sim) {
+    for (int i = 0; i < sim.scene_block_count(); ++i) {
+      c0.push_back(sim.centroid(i));
+      mass += sim.mass(i);
+    }
+  }
+  Sample measure(const dda::Simulation& sim, double column_width) const {
+    Sample s;
+    s.t = sim.time();
+    s.front_x = -1e300;
+    s.front_cx = -1e300;
+    double drop = 0.0, out = 0.0;
+    for (int i = 0; i < sim.scene_block_count(); ++i) {
+      const dda::Polygon& p = sim.polygon(i);
+      for (int v = 0; v < p.count; ++v) s.front_x = std::max(s.front_x, p.vertex(v).x);
+      const dda::Vec2 c = sim.centroid(i), start = c0[static_cast<std::size_t>(i)];
+      s.front_cx = std::max(s.front_cx, c.x);
+      drop += sim.mass(i) * (start.y - c.y);
+      s.max_travel = std::max(s.max_travel, dda::length(c - start));
+      if (c.x > column_width) out += sim.mass(i);
+    }
+    s.mean_drop = drop / mass;
+    s.runout_mass = out / mass;
+    return s;
+  }
+};
+
+// The output files of one case (run_case with a directory).
+struct Files {
+  repro::CsvWriter series, frames, states;
+  Files(const std::string& cdir, const std::string& note)
+      : series(cdir + "/series.csv",
+               {"time", "front_x", "front_cx", "mean_drop", "max_travel", "runout_mass", "E_kinetic", "E_gravity",
+                "E_total", "dt_over_dt_crit"},
+               {note}),
+        frames(cdir + "/frames.csv", repro::snapshot_header(), {note}),
+        states(cdir + "/blocks.csv", {"time", "block", "cx", "cy", "vx", "vy", "speed", "dx", "dy", "rotation"},
+               {note}) {}
+};
+
+}  // namespace
+
+std::string time_tag(double t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", t);
+  return b;
+}
+
+const Sample& CaseResult::at(double t) const {
+  const Sample* best = &series.front();
+  for (const Sample& s : series)
+    if (std::fabs(s.t - t) < std::fabs(best->t - t)) best = &s;
+  return *best;
+}
+
+dda::paper::Collapse scene(double friction, double duration, dda::RotationUpdate rotation) {
+  dda::paper::Collapse col = dda::paper::collapse(friction, 0.5, duration);
+  col.scene.rotation_update = rotation;
+  return col;
+}
+
+CaseResult run_case(int k, const dda::paper::Collapse& col, int threads, const std::string& dir) {
+  const double friction = col.scene.contact.friction_deg, duration = col.scene.duration;
+  const repro::Progress progress("6.1 collapse case " + std::to_string(k));
+  dda::Simulation sim(col.scene);
+  sim.set_threads(threads);
+  const int n = sim.scene_block_count();
+  CaseResult r;
+  r.index = k;
+  r.friction = friction;
+  r.blocks = n;
+  r.dropped = col.dropped;
+  r.dropped_area = col.dropped_area;
+  r.region_area = col.width * col.height;
+  r.h = sim.potential_length(0);
+  r.dt = sim.dt();
+  r.dt_ratio0 = sim.dt() / sim.predicted_critical_step();
+  r.duration = duration;
+  progress(std::to_string(n) + " blocks (" + std::to_string(col.dropped) + " slivers dropped, " +
+           format_short(col.dropped_area, 3) + " m^2), H = " + format_short(r.h, 4) +
+           " m, dt/dt_crit = " + format_short(r.dt_ratio0, 3) + " at start, " + std::to_string(threads) +
+           " thread(s)");
+
+  const Start start(sim);
+  const std::string cdir = dir + "/case" + std::to_string(k);
+  const std::string note = "Paper A Sect. 6.1, geometry reconstructed (Fig. 19 lost); joint friction " +
+                           format_short(friction, 3) + " deg, boundary 35 deg";
+  std::unique_ptr<Files> files;
+  if (!dir.empty()) files = std::make_unique<Files>(cdir, note);
+
+  auto sample = [&] {
+    Sample s = start.measure(sim, col.width);
+    const dda::Energy e = sim.energy();
+    s.kinetic = e.kinetic;
+    s.gravity = e.gravity;
+    s.total = e.total();
+    s.dt_ratio = sim.dt() / sim.critical_time_step();
+    r.dt_ratio_max = std::max(r.dt_ratio_max, s.dt_ratio);
+    if (files)
+      files->series.row({s.t, s.front_x, s.front_cx, s.mean_drop, s.max_travel, s.runout_mass, s.kinetic, s.gravity,
+                         s.total, s.dt_ratio});
+    r.series.push_back(s);
+  };
+  auto frame = [&] {
+    if (!files) return;
+    repro::write_snapshot(files->frames, sim);
+    for (int i = 0; i < n; ++i) {
+      const dda::Vec6& v = sim.velocity(i);
+      const dda::Vec6& d = sim.displacement(i);
+      files->states.row({sim.time(), static_cast<double>(i), sim.centroid(i).x, sim.centroid(i).y, v[0], v[1],
+                         std::hypot(v[0], v[1]), d[0], d[1], d[2]});
+    }
+  };
+  auto vtk = [&](double t) {
+    if (!files) return;
+    repro::write_vtk_polydata(dir + "/vtk/case" + std::to_string(k) + "_t" + time_tag(t) + ".vtk", sim,
+                              "Paper A 6.1 collapse case " + std::to_string(k) + " (joint friction " +
+                                  format_short(friction, 3) + " deg) t = " + time_tag(sim.time()) + " s",
+                              true);
+  };
+
+  const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
+  const auto series_every = std::max(1LL, static_cast<long long>(std::llround(kSeriesEvery / sim.dt())));
+  const auto frame_every = std::max(1LL, static_cast<long long>(std::llround(kFrameEvery / sim.dt())));
+  std::vector<long long> vtk_steps = {0};
+  for (double t : kPaperTimes)
+    if (t <= duration + 0.5 * sim.dt()) vtk_steps.push_back(std::llround(t / sim.dt()));
+  sample();
+  frame();
+  vtk(0.0);
+  const repro::Progress clock("");
+  double last_report = 0.0;
+  // Steps between outputs run as one Simulation::advance (one thread team).
+  auto next_output = [&](long long s) {
+    long long next = std::min({steps, (s / series_every + 1) * series_every, (s / frame_every + 1) * frame_every});
+    for (long long v : vtk_steps)
+      if (v > s) next = std::min(next, v);
+    return next;
+  };
+  try {
+    for (long long s = 0; s < steps;) {
+      const long long to = next_output(s);
+      sim.advance(to - s);
+      s = to;
+      if (s % series_every == 0 || s == steps) sample();
+      if (s % frame_every == 0 || s == steps) frame();
+      if (std::find(vtk_steps.begin(), vtk_steps.end(), s) != vtk_steps.end()) vtk(sim.time());
+      if (s % series_every == 0 && clock.elapsed_seconds() - last_report > 5.0) {
+        last_report = clock.elapsed_seconds();
+        const Sample& x = r.series.back();
+        progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, " +
+                 format_short(static_cast<double>(s) / last_report, 4) + " steps/s, front " +
+                 format_short(x.front_x, 4) + " m, mean drop " + format_short(x.mean_drop, 3) + " m");
+      }
+    }
+  } catch (const dda::SimulationError& e) {
+    r.stopped = e.what();  // the series ends at the last sample before the stop
+    progress("stopped by a stability guard: " + r.stopped);
+  }
+  r.wall = clock.elapsed_seconds();
+  r.steps = sim.step_count();
+  if (files) {
+    files->series.commit();
+    files->frames.commit();
+    files->states.commit();
+  }
+  progress("done: " + std::to_string(r.steps) + " steps in " + format_short(r.wall, 4) + " s (" +
+           format_short(static_cast<double>(r.steps) / r.wall, 4) + " steps/s), front " +
+           format_short(r.series.back().front_x, 4) + " m");
+  return r;
+}
+
+Sample rerun_renumbered(int k, dda::paper::Collapse col, int threads, int axis) {
+  const double duration = col.scene.duration;
+  std::vector<std::pair<double, dda::BlockSpec>> keyed;
+  for (dda::BlockSpec& b : col.scene.blocks) {
+    const dda::Vec2 c = dda::area_centroid(b.vertices.data(), static_cast<int>(b.vertices.size())).centroid;
+    keyed.emplace_back(axis == 0 ? c.x : c.y, std::move(b));
+  }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 0; i < keyed.size(); ++i) col.scene.blocks[i] = std::move(keyed[i].second);
+  dda::Simulation sim(col.scene);
+  sim.set_threads(threads);
+  const Start start(sim);
+  const repro::Progress progress("6.1 collapse case " + std::to_string(k) + ", blocks numbered by " +
+                                 kNumberings[axis + 1]);
+  const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
+  const long long chunk = static_cast<long long>(std::llround(1.0 / sim.dt()));  // progress every simulated second
+  for (long long s = 0; s < steps; s += chunk) {
+    sim.advance(std::min(chunk, steps - s));
+    progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s");
+  }
+  const Sample end = start.measure(sim, col.width);
+  progress("done: front " + format_short(end.front_x, 4) + " m");
+  return end;
+}
+
+dda::paper::Collapse recut(dda::paper::Collapse col, const std::vector<dda::JointSet>& sets, double min_area) {
+  const dda::GeneratedBlocks g = dda::generate_blocks(col.region, sets, min_area);
+  col.joint_sets = sets;
+  col.min_area = min_area;
+  col.dropped = g.dropped;
+  col.dropped_area = g.dropped_area;
+  col.scene.blocks.clear();
+  for (const dda::Polygon& p : g.blocks) {
+    dda::BlockSpec b;
+    b.vertices.assign(p.v.begin(), p.v.begin() + p.count);
+    b.group = dda::paper::kRockGroup;
+    col.scene.blocks.push_back(std::move(b));
+  }
+  return col;
+}
+
+void write_summary(const std::string& dir, const std::vector<CaseResult>& runs) {
+  repro::CsvWriter summary(dir + "/summary.csv",
+                           {"case", "joint_friction_deg", "blocks", "dropped", "dropped_area", "H", "dt",
+                            "dt_over_dt_crit_start", "dt_over_dt_crit_max", "duration", "steps", "wall_s",
+                            "steps_per_s", "front_x_end", "runout_mass_end"});
+  for (const CaseResult& r : runs)
+    summary.row({static_cast<double>(r.index), r.friction, static_cast<double>(r.blocks),
+                 static_cast<double>(r.dropped), r.dropped_area, r.h, r.dt, r.dt_ratio0, r.dt_ratio_max, r.duration,
+                 static_cast<double>(r.steps), r.wall, static_cast<double>(r.steps) / r.wall,
+                 r.series.back().front_x, r.series.back().runout_mass});
+  summary.commit();
+}
+
+void write_boundaries(const std::string& dir) {
+  const dda::paper::Collapse col = dda::paper::collapse(kFrictions[0]);
+  repro::CsvWriter b(dir + "/boundaries.csv", {"ax", "ay", "bx", "by", "depth"},
+                     {"boundary segments, solid on the right of a -> b"});
+  for (const dda::BoundarySegment& s : col.scene.boundaries) b.row({s.a.x, s.a.y, s.b.x, s.b.y, s.depth});
+  b.commit();
+}
+
+void write_renumbered(const std::string& dir, const Ends& ends) {
+  repro::CsvWriter rn(dir + "/renumbered.csv", {"case", "order", "front_x_end", "runout_mass_end", "mean_drop_end"},
+                      {"Paper A Sect. 6.1 reconstructed: each case with its blocks numbered by the generator, by "
+                       "centroid x and by centroid y (order: 0 generator, 1 x, 2 y), end of the run"});
+  for (int o = 0; o < 3; ++o)
+    for (int c = 0; c < 2; ++c) {
+      const Sample& e = ends[static_cast<std::size_t>(o)][static_cast<std::size_t>(c)];
+      rn.row({c + 1.0, static_cast<double>(o), e.front_x, e.runout_mass, e.mean_drop});
+    }
+  rn.commit();
+}
+
+// ---- criteria ------------------------------------------------------------------
+bool generator_ok(const CaseResult& r) {
+  return r.dt_ratio0 < kStartRatio && r.dt_ratio_max < 1.0 && r.dropped_area < kDroppedShare * r.region_area;
+}
+
+EnergyBudget energy_budget(const CaseResult& r) {
+  EnergyBudget b;
+  for (const Sample& s : r.series) b.rise = std::max(b.rise, s.total - r.series.front().total);
+  b.released = r.series.front().gravity - r.series.back().gravity;
+  b.change = r.series.back().total - r.series.front().total;
+  b.pass = r.stopped.empty() && b.released > 0.0 && b.rise < kEnergyRise * b.released;
+  return b;
+}
+
+bool collapses_faster(const Sample& a, const Sample& b) {
+  return a.mean_drop > kDropFactor * b.mean_drop && a.front_x > b.front_x + kLead;
+}
+
+FrontLead front_lead(const CaseResult& a, const CaseResult& b) {
+  FrontLead f;
+  for (std::size_t i = 0; i < std::min(a.series.size(), b.series.size()); ++i) {
+    if (a.series[i].t < kStanding) continue;
+    ++f.compared;
+    if (a.series[i].front_x >= b.series[i].front_x) ++f.ahead;
+  }
+  return f;
+}
+
+bool runs_out_further(const Sample& a, const Sample& b) {
+  return a.front_x > b.front_x + kLead && a.runout_mass > b.runout_mass;
+}
+
+bool ordering_survives(const Ends& ends) {
+  bool holds = true;
+  for (const auto& end : ends) holds = holds && runs_out_further(end[0], end[1]);
+  return holds;
+}
+
+}  // namespace collapse61
