@@ -16,7 +16,7 @@
 // bit-identical (every vertex and velocity component compared bit for bit).
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
-// blocks; a table of blocks, pairs per step, us per step, ns per block-step
+// blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each); a table of blocks, pairs per step, us per step, ns per block-step
 // and ns per candidate pair with 1 and 2 threads, and the fitted exponent p of
 // cost ~ blocks^p. --csv FILE also writes the table as CSV. Shapes:
 //   wide   (default) the collapse's 50 m height, width grown: every block sees
@@ -38,6 +38,7 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <malloc.h>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -61,7 +62,8 @@ constexpr int kSampleEvery = 50;               // steps per advance() call betwe
 constexpr int kThreadCounts[] = {1, 2};         // the machine's cores; results must not depend on them
 
 // Scaling runs.
-constexpr int kTargetBlocks[] = {100, 300, 1000, 3000, 10000};  // ~10^2 .. 10^4, half-decade steps
+constexpr int kTargetBlocks[] = {100, 300, 1000, 3000, 10000, 30000, 100000};  // ~10^2 .. 10^5, half-decade steps
+constexpr int kDefaultMaxBlocks = 10000;  // the rows above it (minutes each) run with --max-blocks 100000
 constexpr double kBlockStepBudget = 2e6;  // blocks x steps timed per scene: ~seconds at ~us per block-step
 constexpr int kMinScalingSteps = 200;     // enough steps for a mean even on the biggest scene
 constexpr int kMaxScalingSteps = 1000;    // small scenes: cap so the table stays quick
@@ -76,7 +78,7 @@ struct Options {
   int warmup = kDefaultWarmup;
   bool scaling = false;
   Shape shape = Shape::kWide;
-  int max_blocks = kTargetBlocks[std::size(kTargetBlocks) - 1];
+  int max_blocks = kDefaultMaxBlocks;
   std::string csv;
 };
 
@@ -206,19 +208,33 @@ std::int64_t x_overlap_pairs(const dda::Simulation& sim) {
 
 // One run per thread count on the same scene; `same` says whether all final
 // states equal the first one bit for bit.
+// Heap bytes in use (glibc's mallinfo2): what the process has allocated and
+// not freed, independent of pages the allocator keeps for reuse.
+double heap_bytes() { return static_cast<double>(mallinfo2().uordblks); }
+
 struct ThreadRuns {
   std::vector<RunStats> runs;
   bool same = true;
   std::int64_t x_pairs = 0;
+  // Memory of the first (1-thread) simulation: heap bytes per scene block
+  // when constructed (polygons, the 6-DOF state, mass matrices, bisectors,
+  // broad-phase boxes), and the heap growth over the warm-up and the timed
+  // steps per touching pair at the end (the contacts' state and buffers).
+  double bytes_per_block = 0.0, growth_per_touching = 0.0;
 };
 
 ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps) {
   ThreadRuns out;
   std::unique_ptr<dda::Simulation> first;
   for (int threads : kThreadCounts) {
+    const double before = heap_bytes();
     auto sim = std::make_unique<dda::Simulation>(scene);
+    const double built = heap_bytes();
     out.runs.push_back(timed_run(*sim, threads, warmup, steps));
     if (!first) {
+      out.bytes_per_block = (built - before) / sim->scene_block_count();
+      const double touching = static_cast<double>(sim->contacts().size());
+      out.growth_per_touching = touching > 0.0 ? (heap_bytes() - built) / touching : 0.0;
       out.x_pairs = x_overlap_pairs(*sim);
       first = std::move(sim);
     } else {
@@ -397,14 +413,16 @@ void write_csv(const std::string& path, const std::vector<ScalingRow>& rows, Sha
     std::ofstream f(tmp);
     if (!f) throw std::runtime_error("cannot write " + tmp);
     f << "shape,blocks,width_m,height_m,threads,warmup_steps,steps,wall_s,candidates_per_step,touching_per_step,"
-         "x_overlap_pairs,cpu_per_wall,us_per_step,ns_per_block_step,ns_per_candidate,ns_per_touching,identical_1_2\n";
+         "x_overlap_pairs,cpu_per_wall,us_per_step,ns_per_block_step,ns_per_candidate,ns_per_touching,identical_1_2,"
+         "bytes_per_block,growth_bytes_per_touching\n";
     f.precision(9);
     for (const ScalingRow& r : rows)
       for (const RunStats& s : r.t.runs)
         f << (shape == Shape::kWide ? "wide" : "column") << ',' << s.blocks << ',' << r.width << ',' << r.height
           << ',' << s.threads << ',' << r.warmup << ',' << s.steps << ',' << s.wall_s << ',' << s.candidates_per_step << ','
           << s.touching_per_step << ',' << r.t.x_pairs << ',' << s.cpu_per_wall() << ',' << s.us_per_step() << ',' << s.ns_per_block_step()
-          << ',' << s.ns_per_candidate() << ',' << s.ns_per_touching() << ',' << (r.t.same ? 1 : 0) << '\n';
+          << ',' << s.ns_per_candidate() << ',' << s.ns_per_touching() << ',' << (r.t.same ? 1 : 0) << ','
+          << r.t.bytes_per_block << ',' << r.t.growth_per_touching << '\n';
     if (!f) throw std::runtime_error("error writing " + tmp);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename " + tmp + " to " + path);
@@ -417,19 +435,22 @@ int run_scaling(const Options& o) {
               o.shape == Shape::kWide ? "50 m high, widening" : "20:50 columns, scaled", openmp_note());
   std::printf("   warm-up %d steps, then %g / blocks steps (%d to %d); %s\n", o.warmup, kBlockStepBudget,
               kMinScalingSteps, kMaxScalingSteps, load_note().c_str());
-  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %11s %8s %8s %5s\n", "blocks", "region m", "thr", "steps",
+  std::printf("   sizeof(dda::Polygon) = %zu bytes (capacity %d vertices and normals)\n", sizeof(dda::Polygon),
+              dda::kMaxVertices);
+  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %11s %8s %8s %5s %8s %8s\n", "blocks", "region m", "thr", "steps",
               "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "ns/blk-step", "ns/cand", "ns/touch",
-              "same");
+              "same", "kB/block", "B/touch");
   std::vector<ScalingRow> rows;
   for (int target : kTargetBlocks) {
     if (target > o.max_blocks) continue;
     rows.push_back(scaling_row(base, o.shape, target, o.warmup));
     const ScalingRow& r = rows.back();
     for (const RunStats& s : r.t.runs)
-      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %11.1f %8.1f %8.1f %5s\n", s.blocks,
-                  r.width, r.height, s.threads, static_cast<long long>(s.steps), s.cpu_per_wall(), s.candidates_per_step,
-                  s.touching_per_step, static_cast<long long>(r.t.x_pairs), s.us_per_step(), s.ns_per_block_step(),
-                  s.ns_per_candidate(), s.ns_per_touching(), r.t.same ? "yes" : "NO");
+      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %11.1f %8.1f %8.1f %5s %8.2f %8.0f\n",
+                  s.blocks, r.width, r.height, s.threads, static_cast<long long>(s.steps), s.cpu_per_wall(),
+                  s.candidates_per_step, s.touching_per_step, static_cast<long long>(r.t.x_pairs), s.us_per_step(),
+                  s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(), r.t.same ? "yes" : "NO",
+                  r.t.bytes_per_block / 1e3, r.t.growth_per_touching);
     std::fflush(stdout);
   }
   bool all_same = true;
@@ -439,7 +460,8 @@ int run_scaling(const Options& o) {
       std::printf("   %d thread(s): us/step ~ blocks^%.2f (least squares over the rows)\n", kThreadCounts[k],
                   growth_exponent(rows, k));
   std::printf("   x-overlap: pairs whose x-intervals overlap at the end (one x sort-and-sweep pass visits them);"
-              " same: 1- and 2-thread final states bit-identical\n");
+              " same: 1- and 2-thread final states bit-identical;\n   kB/block: heap per block of the constructed "
+              "simulation; B/touch: heap growth over the run per touching pair at its end (mallinfo2)\n");
   if (!o.csv.empty()) {
     write_csv(o.csv, rows, o.shape);
     std::printf("   wrote %s\n", o.csv.c_str());
