@@ -15,26 +15,12 @@
 
 #include "dda/overlap.hpp"
 #include "dda/polygon.hpp"
+#include "pair_bench.hpp"
 
 namespace {
 
 constexpr std::size_t kPairs = 1024;  // power of two: index with a mask
-constexpr double kPi = 3.14159265358979323846;
-
-// A random convex n-gon: jittered angles on a random ellipse (any points on a
-// convex curve in angular order are convex), validated by the library.
-dda::Polygon random_convex(int n, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (;;) {
-    const double ax = 0.5 + 0.5 * u(rng), ay = 0.5 + 0.5 * u(rng), rot = 2 * kPi * u(rng), phase = 2 * kPi * u(rng);
-    std::vector<dda::Vec2> p(static_cast<std::size_t>(n));
-    for (int k = 0; k < n; ++k) {
-      const double t = phase + 2 * kPi * (k + 0.7 * (u(rng) - 0.5)) / n;
-      p[static_cast<std::size_t>(k)] = dda::rotate({ax * std::cos(t), ay * std::sin(t)}, rot);
-    }
-    if (dda::validate_polygon(p.data(), n).ok()) return dda::make_polygon(p.data(), n);
-  }
-}
+using bench::kPi;
 
 struct Pair {
   dda::Polygon a, b;
@@ -48,21 +34,14 @@ const std::vector<Pair>& pairs(int n) {
   std::mt19937_64 rng(0x5eed0000u + static_cast<unsigned>(n));
   std::uniform_real_distribution<double> u(0.0, 1.0);
   while (v.size() < kPairs) {
-    const dda::Polygon a = random_convex(n, rng);
+    const dda::Polygon a = bench::random_convex(n, rng);
     const double ang = 2 * kPi * u(rng), dist = 1.2 * u(rng);
-    const dda::Polygon b = dda::translated(random_convex(n, rng), {dist * std::cos(ang), dist * std::sin(ang)});
+    const dda::Polygon b = dda::translated(bench::random_convex(n, rng), {dist * std::cos(ang), dist * std::sin(ang)});
     if (dda::overlap_state(a, b) == dda::OverlapState::kOverlapping &&
         !dda::intersection_polygon(a, b).empty())
       v.push_back({a, b});
   }
   return v;
-}
-
-void report(benchmark::State& state) {
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
-  // Seconds per pair; the console shows it with an SI prefix (printed as e.g. "650ns").
-  state.counters["sec_per_pair"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // Overlap test, then the intersection polygon when the pair overlaps.
@@ -76,7 +55,7 @@ void BM_OverlapAndIntersection(benchmark::State& state) {
       benchmark::DoNotOptimize(ip);
     }
   }
-  report(state);
+  bench::report_per_pair(state);
 }
 
 // The two parts alone, to see where the time goes.
@@ -88,7 +67,7 @@ void BM_OverlapOnly(benchmark::State& state) {
     dda::OverlapState s = dda::overlap_state(p.a, p.b);
     benchmark::DoNotOptimize(s);
   }
-  report(state);
+  bench::report_per_pair(state);
 }
 
 void BM_IntersectionOnly(benchmark::State& state) {
@@ -99,7 +78,7 @@ void BM_IntersectionOnly(benchmark::State& state) {
     dda::Polygon ip = dda::intersection_polygon(p.a, p.b);
     benchmark::DoNotOptimize(ip);
   }
-  report(state);
+  bench::report_per_pair(state);
 }
 
 BENCHMARK(BM_OverlapAndIntersection)->Arg(4)->Arg(6)->Arg(8);

@@ -37,28 +37,15 @@
 #include "dda/overlap.hpp"
 #include "dda/polygon.hpp"
 #include "dda/potential.hpp"
+#include "pair_bench.hpp"
 
 namespace {
 
 constexpr std::size_t kPairs = 1024;  // power of two: index with a mask
-constexpr double kPi = 3.14159265358979323846;
+using bench::kPi;
 constexpr double kKn = 1e9;                // Pa: a rock joint's penalty (Sect. 6)
 constexpr double kH = 1.0;                 // m: H of Eq. 12 for blocks of this size
 constexpr double kSmallEdgeFraction = 0.05;  // of H: the library's default (ContactParams)
-
-// A random convex n-gon on a jittered ellipse, validated by the library.
-dda::Polygon random_convex(int n, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (;;) {
-    const double ax = 0.5 + 0.5 * u(rng), ay = 0.5 + 0.5 * u(rng), rot = 2 * kPi * u(rng), phase = 2 * kPi * u(rng);
-    std::vector<dda::Vec2> p(static_cast<std::size_t>(n));
-    for (int k = 0; k < n; ++k) {
-      const double t = phase + 2 * kPi * (k + 0.7 * (u(rng) - 0.5)) / n;
-      p[static_cast<std::size_t>(k)] = dda::rotate({ax * std::cos(t), ay * std::sin(t)}, rot);
-    }
-    if (dda::validate_polygon(p.data(), n).ok()) return dda::make_polygon(p.data(), n);
-  }
-}
 
 b2PolygonShape to_box2d(const dda::Polygon& p) {
   std::array<b2Vec2, b2_maxPolygonVertices> v{};
@@ -109,9 +96,9 @@ std::vector<Pair>& pairs(int n, bool overlapping) {
   std::mt19937_64 rng(0x5eed0000u + static_cast<unsigned>(n) + (overlapping ? 0u : 100u));
   std::uniform_real_distribution<double> u(0.0, 1.0);
   while (v.size() < kPairs) {
-    const dda::Polygon a = random_convex(n, rng);
+    const dda::Polygon a = bench::random_convex(n, rng);
     const double ang = 2 * kPi * u(rng), dist = (overlapping ? 1.2 : 2.0) * u(rng);
-    const dda::Polygon b = dda::translated(random_convex(n, rng), {dist * std::cos(ang), dist * std::sin(ang)});
+    const dda::Polygon b = dda::translated(bench::random_convex(n, rng), {dist * std::cos(ang), dist * std::sin(ang)});
     const dda::OverlapState s = dda::overlap_state(a, b);
     const bool keep = overlapping ? s == dda::OverlapState::kOverlapping
                                   : s == dda::OverlapState::kSeparate && boxes_overlap(a, b);
@@ -124,12 +111,6 @@ std::vector<Pair>& pairs(int n, bool overlapping) {
     }
   }
   return v;
-}
-
-void per_pair(benchmark::State& state) {
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
-  state.counters["sec_per_pair"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // Ours, overlapping pairs: Sect. 3.1 overlap + IP, Sect. 3.2 normal force,
@@ -148,7 +129,7 @@ void BM_DdaNormalContact(benchmark::State& state) {
       benchmark::DoNotOptimize(nf);
     }
   }
-  per_pair(state);
+  bench::report_per_pair(state);
 }
 
 // Ours, separated candidates: the overlap test alone.
@@ -160,7 +141,7 @@ void BM_DdaSeparated(benchmark::State& state) {
     dda::OverlapState s = dda::overlap_state(p.a.poly, p.b.poly);
     benchmark::DoNotOptimize(s);
   }
-  per_pair(state);
+  bench::report_per_pair(state);
 }
 
 // Box2D's manifold on the same pairs (identity transforms).
@@ -174,7 +155,7 @@ void box2d_manifold(benchmark::State& state, bool overlapping) {
     b2CollidePolygons(&m, &p.a.b2, identity, &p.b.b2, identity);
     benchmark::DoNotOptimize(m);
   }
-  per_pair(state);
+  bench::report_per_pair(state);
 }
 void BM_Box2dOverlapping(benchmark::State& state) { box2d_manifold(state, true); }
 void BM_Box2dSeparated(benchmark::State& state) { box2d_manifold(state, false); }
