@@ -7,12 +7,15 @@
 // (the main is in test_controls.cpp).
 #include <catch2/catch.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "dda/cdem/model.hpp"
 #include "dda/cdem/scenes.hpp"
+#include "dda/scene.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
+#include "repro/B_7_contact_comparison/contact_comparison.hpp"
 #include "repro/common/claims.hpp"
 
 // --- B-6, two prisms -------------------------------------------------------------
@@ -99,4 +102,93 @@ TEST_CASE(prisms::kTestSubdivisionLoss, "[controls][B-6]") {
   // The 'subdivided' run with coarse clone nodes too: the same masses, the
   // same loss, nothing smaller.
   CHECK_FALSE(prisms::subdivision_reduces_loss(prisms_run(no_subdivision()), coarse));
+}
+
+// --- B-7, A against B on the same collisions: one run per model at the base dt ---
+namespace {
+compare::SceneDef scene_def(const std::string& name) {
+  for (const compare::SceneDef& d : compare::scene_defs())
+    if (d.name == name) return d;
+  FAIL("no B-7 scene " << name);
+  return {};
+}
+compare::Result base_run(const compare::SceneDef& d, const std::string& model) {
+  return compare::run_sweep(d, model, nullptr, true).front();
+}
+// d with its Paper A (DDA) scene changed by f.
+compare::SceneDef with_dda(const compare::SceneDef& d, const std::function<void(dda::Scene&)>& f) {
+  compare::SceneDef w = d;
+  const auto make = d.dda_scene;
+  w.dda_scene = [make, f] {
+    dda::Scene s = make();
+    f(s);
+    return s;
+  };
+  return w;
+}
+// d with its Paper B (CDEM) scenes changed by f.
+compare::SceneDef with_cdem(const compare::SceneDef& d, const std::function<void(dda::cdem::CdemScene&)>& f) {
+  compare::SceneDef w = d;
+  const auto make = d.cdem_scene;
+  w.cdem_scene = [make, f](bool sub) {
+    dda::cdem::CdemScene s = make(sub);
+    f(s);
+    return s;
+  };
+  return w;
+}
+// Every material of a CDEM scene a quarter as stiff: c = sqrt(E / rho) halved.
+void quarter_stiffness(dda::cdem::CdemScene& s) {
+  for (dda::Material& m : s.materials) m.young /= 4.0;
+}
+}  // namespace
+
+TEST_CASE(compare::kTestEnergy, "[controls][B-7]") {
+  for (const std::string name : {"prisms", "squares"}) {
+    INFO(name);
+    const compare::SceneDef d = scene_def(name);
+    const compare::Result b = base_run(d, "B");
+    CHECK(compare::energy_ok(base_run(d, "A"), b));
+    // Mass damping 1/s in A's blocks: A loses 78 % (prisms) / 86 % (squares)
+    // of E0, far more than B's 1.1 % / 1.6 %.
+    const compare::SceneDef damped = with_dda(d, [](dda::Scene& s) { s.damping.mass = 1.0; });
+    CHECK_FALSE(compare::energy_ok(base_run(damped, "A"), b));
+  }
+}
+
+TEST_CASE(compare::kTestPrismsDuration, "[controls][B-7]") {
+  const compare::SceneDef d = scene_def("prisms");
+  const compare::Result a = base_run(d, "A"), b = base_run(d, "B");
+  CHECK(compare::prisms_duration_ok(a, b));  // A 0.21 s, B 6.7 ms
+  // B's prisms a quarter as stiff: the wave takes twice as long, the clone
+  // holds 13.3 ms (the window is 7.2 +- 2 ms).
+  CHECK_FALSE(compare::prisms_duration_ok(a, base_run(with_cdem(d, quarter_stiffness), "B")));
+  // A's kn 10^4 times stiffer (4e12 Pa): A's contact lasts 10 ms, less
+  // than 3 x B's 6.7 ms.
+  const compare::SceneDef stiff = with_dda(d, [](dda::Scene& s) { s.contact.kn *= 1e4; });
+  CHECK_FALSE(compare::prisms_duration_ok(base_run(stiff, "A"), b));
+}
+
+TEST_CASE(compare::kTestSquaresDuration, "[controls][B-7]") {
+  const compare::SceneDef d = scene_def("squares");
+  const double t_ref = compare::squares_wave_time();  // 2.83 ms
+  const compare::Result a = base_run(d, "A");
+  CHECK(compare::squares_duration_ok(a, base_run(d, "B"), t_ref));  // B 2.97 ms, A 22 ms
+  // B's squares a quarter as stiff: B's contact lasts 5.9 ms, twice 2 L / c
+  // of the paper's material.
+  CHECK_FALSE(compare::squares_duration_ok(a, base_run(with_cdem(d, quarter_stiffness), "B"), t_ref));
+}
+
+TEST_CASE(compare::kTestKn, "[controls][B-7]") {
+  const compare::SceneDef d = scene_def("prisms");
+  const std::vector<double> factors = {1.0, 10.0, 100.0};
+  CHECK(compare::kn_dependence_ok(compare::kn_sweep(d, factors), d.v0));
+  // Block j twice as dense: A leaves j at 2 m / (m + M) v0 = 2 m/s at every
+  // kn, not the exchanged 3 m/s.
+  const compare::SceneDef dense = with_dda(d, [](dda::Scene& s) {
+    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
+    s.materials.back().density *= 2.0;
+    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
+  });
+  CHECK_FALSE(compare::kn_dependence_ok(compare::kn_sweep(dense, factors), d.v0));
 }
