@@ -1,7 +1,7 @@
 // Paper B Sect. 6, two prisms (two_prisms.cpp says what it reproduces): one
 // run of the two-scale model and the claim rows, here so that the negative
-// controls (repro/common/test_controls.cpp) apply the same criteria to
-// deliberately wrong configurations.
+// controls (repro/common/test_controls.cpp, controls_paper_b.cpp) apply the
+// same criteria to deliberately wrong configurations.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -75,14 +75,62 @@ inline Result simulate(const dda::cdem::CdemScene& scene,
 inline const char* const kControlTouch = "repro_controls: B-6 touch: FAIL with the gap 0.1 m wider";
 inline const char* const kControlExchange = "repro_controls: B-6 exchange: FAIL with block j twice as dense";
 inline const char* const kControlMomentum = "repro_controls: B-6 momentum: FAIL with block j fixed";
+// The negative controls in repro/common/controls_paper_b.cpp: their exact
+// test-case names (a row names one with repro::control_test).
+inline const char* const kTestPrintedStep =
+    "B-6 printed step: PASS with the gap 1.25 mm wider, FAIL with the paper's gap and 0.1 m wider";
+inline const char* const kTestRefined =
+    "B-6 refinement within c dt2: FAIL without subdivision and with a quarter of E (c halved)";
+inline const char* const kTestSeparation = "B-6 separation: FAIL with prisms twice as long";
+inline const char* const kTestLittleLoss = "B-6 little loss: FAIL without subdivision and with mass damping";
+inline const char* const kTestSubdivisionLoss =
+    "B-6 subdivision loss: FAIL when the subdivided run has coarse clone nodes too";
+
+// ---- criteria of the rows (shared with the negative controls) ----------------
+// The touch step as printed by the paper, s.
+inline constexpr double kPrintedStepStart = 0.3335, kPrintedStepEnd = 0.3340;
+inline bool in_printed_step(const dda::cdem::TouchRecord& t) {
+  return std::fabs(t.step_start - kPrintedStepStart) < 1e-9 && std::fabs(t.step_end - kPrintedStepEnd) < 1e-9;
+}
+// Sect. 5: the refinement radius is c dt2 with c = sqrt(E/rho) of the paper's
+// material (E 40 GPa, rho 2700 kg/m3), and at least one element is refined.
+inline double expected_radius(const dda::cdem::TouchRecord& t) { return std::sqrt(40e9 / 2700.0) * t.dt2; }
+inline bool refined_within_c_dt2(const dda::cdem::TouchRecord& t) {
+  const double r_expected = expected_radius(t);
+  return std::fabs(t.radius - r_expected) < 1e-12 * r_expected && t.refined_elements >= 1;
+}
+// Fig. 15a: the clone node separated at 0.3405 s; within 2 steps.
+inline constexpr double kFig15aTime = 0.3405;
+inline bool separates_at_fig15a(const Result& r) {
+  return r.t_sep > 0.0 && std::fabs(r.t_sep - kFig15aTime) <= 2.0 * r.dt + 1e-12;
+}
+// The energy lost over the run and the part of it neither the clone impact
+// (Eq. 5) nor the patch remaps explain (the integration residual), J/m.
+struct EnergyLoss {
+  double loss = 0.0, residual = 0.0;
+};
+inline EnergyLoss energy_loss(const Result& r) {
+  const double e_loss = r.e0 - r.e_end.total();
+  return {e_loss, e_loss - r.impact + r.remap};
+}
+// 'A little energy loss': 0 < loss < 5 % of E0, the balance closing to 1 %.
+inline bool little_loss(const Result& r) {
+  const EnergyLoss l = energy_loss(r);
+  return l.loss > 0.0 && l.loss < 0.05 * r.e0 && std::fabs(l.residual) < 0.01 * r.e0;
+}
+// Sect. 4.1: the clone's inelastic loss is smaller with subdivision.
+inline bool subdivision_reduces_loss(const Result& r, const Result& coarse) {
+  return r.touch.energy_loss < coarse.touch.energy_loss;
+}
 
 // The claim rows of the subdivided run r, with the run without subdivision
 // (coarse clone nodes) beside it for the last row.
 inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
   using repro::format_short;
   const dda::cdem::TouchRecord& touch = r.touch;
-  const double e_loss = r.e0 - r.e_end.total();
-  const double residual = e_loss - r.impact + r.remap;
+  const EnergyLoss lost = energy_loss(r);
+  const double e_loss = lost.loss;
+  const double residual = lost.residual;
   // Tolerances. Touch time: solved exactly on the straight collision path,
   // so round-off (1e-12 s). Momentum: the clone impulse and all element
   // forces are internal, remaps move momentum with the mass: round-off
@@ -106,8 +154,8 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
                     "touch in the step [" + format_short(touch.step_start, 5) + ", " + format_short(touch.step_end, 5) +
                         "] s; the printed step does not contain the printed touch time 0.3333 s (with t0 = 0 and dt "
                         "= 5e-4 s, 1/3 s lies in [0.3330, 0.3335]): NOT MATCHED, the paper's label looks one step off",
-                    "touch step = [0.3335, 0.3340] s",
-                    std::fabs(touch.step_start - 0.3335) < 1e-9 && std::fabs(touch.step_end - 0.3340) < 1e-9});
+                    "touch step = [0.3335, 0.3340] s", in_printed_step(touch)});
+  claims.back().control = repro::control_test(kTestPrintedStep);
   repro::explain_fail(claims.back(), repro::Cause::kMissingData,
                       "the paper's printed step [0.3335, 0.3340] s does not contain its own printed touch time "
                       "0.3333 s; with t0 = 0 and dt = 5e-4 s, 1/3 s lies in [0.3330, 0.3335] (analytic): the label "
@@ -119,7 +167,7 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
        "dt1 = 1/3 - " + format_short(step_start, 5) + " s to 1e-12, dt1 + dt2 = dt",
        std::fabs(touch.dt1 - (t_exact - step_start)) < 1e-12 && std::fabs(touch.dt1 + touch.dt2 - dt) < 1e-15});
   claims.back().control = kControlTouch;
-  const double r_expected = std::sqrt(40e9 / 2700.0) * touch.dt2;
+  const double r_expected = expected_radius(touch);
   claims.push_back({"B-6", "the contact zone is refined within c dt2 of the contact point (Sect. 5)",
                     "radius c dt2, c = sqrt(E/rho)",
                     "radius " + format_short(touch.radius) + " m (c dt2 = " + format_short(r_expected) + " m), " +
@@ -127,8 +175,8 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
                         std::to_string(touch.subdivision) + " x " + std::to_string(touch.subdivision) +
                         ", patch step dt/" + std::to_string(r.max_substeps) + " while refined; clone masses " +
                         format_short(touch.mass_main) + " / " + format_short(touch.mass_target) + " kg/m",
-                    "radius = c dt2 to 1e-12; >= 1 element refined",
-                    std::fabs(touch.radius - r_expected) < 1e-12 * r_expected && touch.refined_elements >= 1});
+                    "radius = c dt2 to 1e-12; >= 1 element refined", refined_within_c_dt2(touch)});
+  claims.back().control = repro::control_test(kTestRefined);
   const double v14c = r.peak_node_vj_at_fig14c;
   const bool peak_ok = v14c > 3.0 && std::fabs(v14c - 3.205) <= 0.1 * 3.205;
   claims.push_back({"B-6", "block j speeds up to about 3.2 m/s during the collision",
@@ -143,7 +191,8 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
   claims.push_back({"B-6", "the clone node separates after the collision", "Fig. 15a: separated at 0.3405 s",
                     "separation at " + format_short(r.t_sep, 6) + " s by " + r.sep_kind +
                         "; the rebuilt block size was chosen to match this time, so it is not an independent check",
-                    "within 2 steps of 0.3405 s", r.t_sep > 0.0 && std::fabs(r.t_sep - 0.3405) <= 2.0 * dt + 1e-12});
+                    "within 2 steps of 0.3405 s", separates_at_fig15a(r)});
+  claims.back().control = repro::control_test(kTestSeparation);
   claims.push_back({"B-6", "block j ends with about block i's initial speed", "Fig. 16: slope of j ~ i's initial slope",
                     "v_j(0.5 s) = " + format_short(r.vj) + " m/s, v_i = " + format_short(r.vi) + " m/s (3.0 before)",
                     "|v_j - 3.0| < 5 % of 3.0", std::fabs(r.vj - 3.0) < 0.05 * 3.0});
@@ -159,8 +208,8 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
                         format_short(r.e_end.strain, 4) + "): loss " + format_short(100.0 * e_loss / r.e0, 3) +
                         " % = clone impact (Eq. 5) " + format_short(r.impact, 4) + " + patch remaps " +
                         format_short(-r.remap, 4) + " + integration " + format_short(residual, 3) + " J/m",
-                    "0 < loss < 5 % of E0; |integration residual| < 1 % of E0",
-                    e_loss > 0.0 && e_loss < 0.05 * r.e0 && std::fabs(residual) < 0.01 * r.e0});
+                    "0 < loss < 5 % of E0; |integration residual| < 1 % of E0", little_loss(r)});
+  claims.back().control = repro::control_test(kTestLittleLoss);
   claims.push_back({"B-6",
                     "subdivision makes the clone's inelastic loss small (Eq. 5: it falls with the contact-point mass)",
                     "Sect. 4.1: 'the loss decreases as the mass of the contact points decreases'",
@@ -170,7 +219,8 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
                         format_short(coarse.touch.mass_target) + " kg/m, loss " +
                         format_short(coarse.touch.energy_loss) + " J/m; v_j(0.5 s) " + format_short(r.vj) + " vs " +
                         format_short(coarse.vj) + " m/s",
-                    "loss with subdivision < loss without", touch.energy_loss < coarse.touch.energy_loss});
+                    "loss with subdivision < loss without", subdivision_reduces_loss(r, coarse)});
+  claims.back().control = repro::control_test(kTestSubdivisionLoss);
   return claims;
 }
 

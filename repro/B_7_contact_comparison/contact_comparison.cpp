@@ -128,8 +128,8 @@ int main(int argc, char** argv) {
              format_short(bc.energy_err_end, 3) + "; smallest |error| over the sweep: A " +
              format_short(best(a, &Result::energy_err_end), 3) + ", B " +
              format_short(best(b, &Result::energy_err_end), 3) + ". A BETTER",
-         "|A| < 1e-3 and |A| < |B|",
-         std::fabs(a0.energy_err_end) < 1e-3 && std::fabs(a0.energy_err_end) < std::fabs(bb.energy_err_end)});
+         "|A| < 1e-3 and |A| < |B|", energy_ok(a0, bb)});
+    claims.back().control = repro::control_test(kTestEnergy);
     claims.push_back({sec,
                       "post-impact velocities: A exchanges them like rigid blocks, B leaves some energy in vibration",
                       "equal rigid blocks exchange velocities (v_i -> 0, v_j -> " + format_short(def.v0) + " m/s)",
@@ -141,27 +141,29 @@ int main(int argc, char** argv) {
                           "of the rigid reference alone)",
                       "|v_j - v0| / v0: A < 1e-3, B < 10 %", exchange_ok(a0, bb)});
     claims.back().control = kControlExchange;
-    // dt convergence at equal work: which is better for the same run time.
-    claims.push_back({sec, "error against run time over the dt sweep (figure B_comparison)", "work-precision",
-                      "run time at the base dt: A " + format_short(a0.wall, 3) + " s, B " + format_short(bb.wall, 3) +
-                          " s, B0 " + format_short(bc.wall, 3) + " s; at the smallest dt: A " +
-                          format_short(a.back().wall, 3) + " s, B " + format_short(b.back().wall, 3) +
-                          " s. v_j change from the base to the smallest dt: A " + format_short(a0.vj_err_self, 3) +
-                          ", B " + format_short(bb.vj_err_self, 3) +
-                          " (of v0). A is cheaper per run (6 DOF per "
-                          "block) and converges in v_j; B's touch time is exact at every cost",
-                      "every run finite and monotone in cost (smaller dt costs more)",
-                      a.back().wall > a0.wall && b.back().wall > bb.wall});
+    // dt convergence at equal work: which is better for the same run time. A
+    // measurement: its former criterion (the smallest dt costs more wall time
+    // than the base dt) holds by construction (8 to 16 times the steps) and
+    // says nothing about the error; the figure shows the trade-off.
+    claims.push_back(repro::measurement(
+        sec, "error against run time over the dt sweep (figure B_comparison)", "work-precision",
+        "run time at the base dt: A " + format_short(a0.wall, 3) + " s, B " + format_short(bb.wall, 3) + " s, B0 " +
+            format_short(bc.wall, 3) + " s; at the smallest dt: A " + format_short(a.back().wall, 3) + " s, B " +
+            format_short(b.back().wall, 3) + " s. v_j change from the base to the smallest dt: A " +
+            format_short(a0.vj_err_self, 3) + ", B " + format_short(bb.vj_err_self, 3) +
+            " (of v0). A is cheaper per run (6 DOF per "
+            "block) and converges in v_j; B's touch time is exact at every cost",
+        "no verdict: a smaller dt costs more by construction (more steps); the figure shows error against run "
+        "time"));
     if (def.name == "squares") {
-      const dda::Material mat = dda::paper::two_squares().materials.front();
-      const double c = std::sqrt(mat.young / mat.density), t_ref = 2.0 * 1.0 / c;
+      const double t_ref = squares_wave_time();
       const double da = a0.contact_end - a0.contact_start, db = bb.contact_end - bb.contact_start;
       claims.push_back({sec, "contact duration: B's follows the elastic wave, A's follows kn",
                         "two elastic bars of length L: 2 L / c = " + format_short(t_ref, 4) + " s",
                         "A " + format_short(da, 4) + " s (kn = 10 MPa), B " + format_short(db, 4) + " s, B0 " +
                             format_short(bc.contact_end - bc.contact_start, 4) + " s. B BETTER",
-                        "|B - 2L/c| < 25 %; A farther from 2L/c than B",
-                        std::fabs(db - t_ref) < 0.25 * t_ref && std::fabs(da - t_ref) > std::fabs(db - t_ref)});
+                        "|B - 2L/c| < 25 %; A farther from 2L/c than B", squares_duration_ok(a0, bb, t_ref)});
+      claims.back().control = repro::control_test(kTestSquaresDuration);
     } else {
       claims.push_back({sec, "contact duration on the prisms", "Paper B Figs. 14-15: about 7 ms (0.3333 to 0.3405 s)",
                         "A " + format_short(a0.contact_end - a0.contact_start, 4) + " s (kn = 0.4 GPa), B " +
@@ -169,8 +171,8 @@ int main(int argc, char** argv) {
                             format_short(bc.contact_end - bc.contact_start, 4) +
                             " s. The penalty contact lasts 30 times longer than the wave-governed one",
                         "B within 2 ms of 7.2 ms (the rebuilt size was fitted to it); A > 3 x B",
-                        std::fabs(bb.contact_end - bb.contact_start - 0.0072) < 0.002 &&
-                            a0.contact_end - a0.contact_start > 3.0 * (bb.contact_end - bb.contact_start)});
+                        prisms_duration_ok(a0, bb)});
+      claims.back().control = repro::control_test(kTestPrismsDuration);
     }
   }
   // Paper A's contact depends on kn, Paper B's has no such parameter: the
@@ -178,19 +180,10 @@ int main(int argc, char** argv) {
   {
     const SceneDef& def = scenes.front();
     std::string text;
-    std::vector<double> durations;
-    bool ok = true;
-    for (double factor : {1.0, 10.0, 100.0}) {
-      SceneDef d = def;
-      d.dda_scene = [def, factor] {
-        dda::Scene s = def.dda_scene();
-        s.contact.kn *= factor;
-        return s;
-      };
-      const Result r = run_dda(d, def.dts.front(), nullptr);
-      durations.push_back(r.contact_end - r.contact_start);
-      ok = ok && std::fabs(r.v_j - def.v0) < 1e-2 * def.v0 && r.mom_err < 1e-12;
-      text += (text.empty() ? "" : "; ") + std::string("kn ") + format_short(0.4e9 * factor, 2) + " Pa: contact " +
+    const std::vector<KnRun> runs = kn_sweep(def, {1.0, 10.0, 100.0});
+    for (const KnRun& k : runs) {
+      const Result& r = k.result;
+      text += (text.empty() ? "" : "; ") + std::string("kn ") + format_short(0.4e9 * k.factor, 2) + " Pa: contact " +
               format_short(r.contact_end - r.contact_start, 3) + " s, v_j " + format_short(r.v_j, 5) + " m/s";
     }
     const Result& b = pick("prisms", "B").front();
@@ -200,7 +193,8 @@ int main(int argc, char** argv) {
                           " s with no spring. B BETTER (no parameter); A's outcome (exchange) is robust to kn, its "
                           "duration is not",
                       "A's duration falls with kn (x1 > x10 > x100) and every run exchanges v within 1 %",
-                      ok && durations[0] > durations[1] && durations[1] > durations[2]});
+                      kn_dependence_ok(runs, def.v0)});
+    claims.back().control = repro::control_test(kTestKn);
   }
   repro::write_claims(repro::claims_path(out, kDriver), claims);
   progress("done");

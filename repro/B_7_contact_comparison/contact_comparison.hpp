@@ -1,8 +1,8 @@
 // Paper A against Paper B on the same collisions (contact_comparison.cpp
 // says what it compares): the scenes, one run per model and dt, and the
 // criteria of the rows, here so that the negative controls
-// (repro/common/test_controls.cpp) apply the same criteria to deliberately
-// wrong configurations.
+// (repro/common/test_controls.cpp, controls_paper_b.cpp) apply the same
+// criteria to deliberately wrong configurations.
 #pragma once
 #include <algorithm>
 #include <chrono>
@@ -219,9 +219,73 @@ inline bool momentum_ok(const std::vector<Result>& a, const std::vector<Result>&
 inline bool exchange_ok(const Result& a0, const Result& b0) {
   return a0.vj_err_exchange < 1e-3 && b0.vj_err_exchange < 0.10;
 }
+// Energy at the base dt: A's elastic penalty keeps it to 1e-3, better than B.
+inline bool energy_ok(const Result& a0, const Result& b0) {
+  return std::fabs(a0.energy_err_end) < 1e-3 && std::fabs(a0.energy_err_end) < std::fabs(b0.energy_err_end);
+}
+// Contact duration of the prisms at the base dt: B within 2 ms of Paper B's
+// 7.2 ms (0.3333 to 0.3405 s; the rebuilt size was fitted to it), A's
+// penalty contact more than 3 times as long.
+inline bool prisms_duration_ok(const Result& a0, const Result& b0) {
+  return std::fabs(b0.contact_end - b0.contact_start - 0.0072) < 0.002 &&
+         a0.contact_end - a0.contact_start > 3.0 * (b0.contact_end - b0.contact_start);
+}
+// The contact time of two elastic bars of length L = 1 m of the squares'
+// material: 2 L / c, c = sqrt(E / rho), s.
+inline double squares_wave_time() {
+  const dda::Material mat = dda::paper::two_squares().materials.front();
+  const double c = std::sqrt(mat.young / mat.density);
+  return 2.0 * 1.0 / c;
+}
+// Contact duration of the squares at the base dt: B's within 25 % of 2 L / c,
+// A's farther from it than B's.
+inline bool squares_duration_ok(const Result& a0, const Result& b0, double t_ref) {
+  const double da = a0.contact_end - a0.contact_start, db = b0.contact_end - b0.contact_start;
+  return std::fabs(db - t_ref) < 0.25 * t_ref && std::fabs(da - t_ref) > std::fabs(db - t_ref);
+}
+// A on a scene with its penalty kn scaled by each factor, at the base dt.
+struct KnRun {
+  double factor = 1.0;
+  Result result;
+};
+inline std::vector<KnRun> kn_sweep(const SceneDef& def, const std::vector<double>& factors) {
+  std::vector<KnRun> runs;
+  for (double factor : factors) {
+    SceneDef d = def;
+    d.dda_scene = [def, factor] {
+      dda::Scene s = def.dda_scene();
+      s.contact.kn *= factor;
+      return s;
+    };
+    runs.push_back({factor, run_dda(d, def.dts.front(), nullptr)});
+  }
+  return runs;
+}
+// A's collision depends on kn: its contact duration falls strictly as kn
+// grows (factors in increasing order), while every run exchanges the
+// velocities within 1 % of v0 and conserves momentum to round-off.
+inline bool kn_dependence_ok(const std::vector<KnRun>& runs, double v0) {
+  bool ok = true;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const Result& r = runs[i].result;
+    ok = ok && std::fabs(r.v_j - v0) < 1e-2 * v0 && r.mom_err < 1e-12;
+    if (i > 0) {
+      const Result& q = runs[i - 1].result;
+      ok = ok && q.contact_end - q.contact_start > r.contact_end - r.contact_start;
+    }
+  }
+  return ok;
+}
 // The negative controls (test_controls.cpp) named by the rows.
 inline const char* const kControlTouch = "repro_controls: B-7 touch: FAIL against a wrong time of impact";
 inline const char* const kControlMomentum = "repro_controls: B-7 momentum: FAIL with block j fixed";
 inline const char* const kControlExchange = "repro_controls: B-7 exchange: FAIL with block j twice as dense";
+// The negative controls in repro/common/controls_paper_b.cpp: their exact
+// test-case names (a row names one with repro::control_test).
+inline const char* const kTestEnergy = "B-7 energy: FAIL with mass damping in A";
+inline const char* const kTestPrismsDuration =
+    "B-7 prisms contact duration: FAIL with B a quarter as stiff and with A's kn 10^4 times stiffer";
+inline const char* const kTestSquaresDuration = "B-7 squares contact duration: FAIL with B a quarter as stiff";
+inline const char* const kTestKn = "B-7 kn dependence: FAIL with block j twice as dense";
 
 }  // namespace compare
