@@ -25,6 +25,7 @@
 // claims in
 // <out>/claims/B_6_two_prisms.csv.
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@
 #include "dda/cdem/scenes.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/options.hpp"
 
 namespace {
 
@@ -71,15 +73,26 @@ void write_snapshot(repro::CsvWriter& tris, repro::CsvWriter& clones, int id, co
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  repro::check_command_line(argc, argv, "Paper B Sect. 6 (Figs. 12-16): two triangular prisms colliding.");
+int main(int argc, char** argv) try {
+  repro::check_command_line(argc, argv, "Paper B Sect. 6 (Figs. 12-16): two triangular prisms colliding.",
+                            {{"--divisions", "N", "mesh divisions per block edge (default 2: the paper's example here)", true},
+                             {"--dt", "S", "time step, s (default 5e-4: the paper's)", false}});
+  const int divisions = repro::option_int(argc, argv, "--divisions", prisms::kPaperDivisions);
+  const double dt = repro::option_number(argc, argv, "--dt", prisms::kPaperDt);
+  if (divisions < 1 || !(dt > 0.0)) throw std::invalid_argument("--divisions must be >= 1 and --dt > 0");
+  // Rows of a run off the paper's mesh or dt say so.
+  const std::string run_note =
+      divisions == prisms::kPaperDivisions && dt == prisms::kPaperDt
+          ? std::string()
+          : " [NOT THE PAPER'S SETTINGS: --divisions " + std::to_string(divisions) + ", --dt " + format_short(dt) + "]";
   const std::string out = repro::out_dir(argc, argv);
   const repro::Progress progress("B-6 two prisms");
   const std::string dir = out + "/data/" + kDriver + "/";
 
   dda::cdem::CdemOptions opt;
   opt.capture_touch_snapshots = true;
-  const dda::cdem::CdemScene scene = dda::cdem::two_prisms(2, opt);
+  dda::cdem::CdemScene scene = dda::cdem::two_prisms(divisions, opt);
+  scene.dt = dt;
 
   repro::CsvWriter hist(dir + "history.csv", history_header(),
                         {std::string("Paper B Sect. 6, two prisms, clone node + subdivision; ") + kRebuilt});
@@ -145,8 +158,9 @@ int main(int argc, char** argv) {
   coarse_opt.subdivision = false;
   repro::CsvWriter hist_c(dir + "history_nosub.csv", history_header(),
                           {std::string("Paper B Sect. 6, two prisms, clone node without subdivision; ") + kRebuilt});
-  const prisms::Result coarse =
-      prisms::simulate(dda::cdem::two_prisms(2, coarse_opt), [&](const Model& m) { history_row(hist_c, m); });
+  dda::cdem::CdemScene coarse_scene = dda::cdem::two_prisms(divisions, coarse_opt);
+  coarse_scene.dt = dt;
+  const prisms::Result coarse = prisms::simulate(coarse_scene, [&](const Model& m) { history_row(hist_c, m); });
   hist_c.commit();
 
   // Mesh refinement: the same collision on finer meshes (dt with h).
@@ -161,6 +175,7 @@ int main(int argc, char** argv) {
   }
   mesh_csv.commit();
   std::vector<repro::Claim> claims = prisms::rows(r, coarse);
+  for (repro::Claim& c : claims) c.claim += run_note;
   std::string vj_text, node_text, meeting;
   std::vector<double> vjs;
   for (const prisms::MeshPoint& p : mesh) {
@@ -190,4 +205,7 @@ int main(int argc, char** argv) {
   repro::write_claims(repro::claims_path(out, kDriver), claims);
   progress("done");
   return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "B_6_two_prisms: error: %s\n", e.what());
+  return 1;
 }
