@@ -149,33 +149,52 @@ inline Result run_cdem(const SceneDef& def, bool subdivision, double dt, History
 }
 
 
+// The meshes and base time steps of the two collisions (defaults: Paper B's
+// 2-division prisms at its 5e-4 s, Paper A Sect. 4.1's squares at 1e-4 s
+// with 4 x 4 fan triangles); each dt sweep halves from the base dt.
+struct Settings {
+  int prism_divisions = 2, square_divisions = 4;
+  double prisms_dt = 5e-4, squares_dt = 1e-4;  // s
+  bool is_default() const {
+    const Settings d;
+    return prism_divisions == d.prism_divisions && square_divisions == d.square_divisions &&
+           prisms_dt == d.prisms_dt && squares_dt == d.squares_dt;
+  }
+};
+inline std::vector<double> halving(double base, int count) {
+  std::vector<double> v;
+  for (int i = 0; i < count; ++i) v.push_back(std::ldexp(base, -i));
+  return v;
+}
+
 // The two collisions: the Paper B prisms (reconstructed) and the Paper A
 // Sect. 4.1 squares, each with its dt sweep.
-inline std::vector<SceneDef> scene_defs() {
+inline std::vector<SceneDef> scene_defs(const Settings& set = {}) {
   const dda::cdem::PrismGeometry pg;
+  const int pd = set.prism_divisions, sd = set.square_divisions;
   return {
       {"prisms",
        pg.gap / pg.speed,
        pg.speed,
        0.8,
        [pg] { return dda::cdem::two_prisms_scene(pg); },
-       [pg](bool sub) {
+       [pg, pd](bool sub) {
          dda::cdem::CdemOptions o;
          o.subdivision = sub;
-         return dda::cdem::two_prisms(2, o, pg);
+         return dda::cdem::two_prisms(pd, o, pg);
        },
-       {5e-4, 2.5e-4, 1.25e-4, 6.25e-5, 3.125e-5}},
+       halving(set.prisms_dt, 5)},
       {"squares",
        0.5,
        1.0,
        1.0,
        [] { return dda::paper::two_squares(); },
-       [](bool sub) {
+       [sd](bool sub) {
          dda::cdem::CdemOptions o;
          o.subdivision = sub;
-         return dda::cdem::two_squares(4, o);
+         return dda::cdem::two_squares(sd, o);
        },
-       {1e-4, 5e-5, 2.5e-5, 1.25e-5}},
+       halving(set.squares_dt, 4)},
   };
 }
 
