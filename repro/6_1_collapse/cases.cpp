@@ -153,21 +153,15 @@ CaseResult run_case(int k, const dda::paper::Collapse& col, int threads, const s
   vtk(0.0);
   const repro::Progress clock("");
   double last_report = 0.0;
-  // Steps between outputs run as one Simulation::advance (one thread team).
-  auto next_output = [&](long long s) {
-    long long next = std::min({steps, (s / series_every + 1) * series_every, (s / frame_every + 1) * frame_every});
-    for (long long v : vtk_steps)
-      if (v > s) next = std::min(next, v);
-    return next;
-  };
+  const repro::OutputSchedule outputs(steps, {series_every, frame_every}, vtk_steps);
   try {
     for (long long s = 0; s < steps;) {
-      const long long to = next_output(s);
+      const long long to = outputs.next(s);
       sim.advance(to - s);
       s = to;
-      if (s % series_every == 0 || s == steps) sample();
-      if (s % frame_every == 0 || s == steps) frame();
-      if (std::find(vtk_steps.begin(), vtk_steps.end(), s) != vtk_steps.end()) vtk(sim.time());
+      if (outputs.at(s, series_every)) sample();
+      if (outputs.at(s, frame_every)) frame();
+      if (outputs.listed(s)) vtk(sim.time());
       if (s % series_every == 0 && clock.elapsed_seconds() - last_report > 5.0) {
         last_report = clock.elapsed_seconds();
         const Sample& x = r.series.back();

@@ -150,18 +150,14 @@ int main(int argc, char** argv) try {
   vtk();
   const repro::Progress clock("");
   double last_report = 0.0;
-  // Steps between outputs run as one Simulation::advance (one thread team).
-  auto next_output = [&](long long s) {
-    return std::min({steps, (s / series_every + 1) * series_every, (s / frame_every + 1) * frame_every,
-                     (s / vtk_every + 1) * vtk_every});
-  };
+  const repro::OutputSchedule outputs(steps, {series_every, frame_every, vtk_every});
   for (long long s = 0; s < steps;) {
-    const long long to = next_output(s);
+    const long long to = outputs.next(s);
     sim.advance(to - s);
     s = to;
-    if (s % series_every == 0 || s == steps) sample();
-    if (s % frame_every == 0 || s == steps) frame();
-    if (s % vtk_every == 0 || s == steps) vtk();
+    if (outputs.at(s, series_every)) sample();
+    if (outputs.at(s, frame_every)) frame();
+    if (outputs.at(s, vtk_every)) vtk();
     if (s % series_every == 0 && clock.elapsed_seconds() - last_report > 5.0) {
       last_report = clock.elapsed_seconds();
       progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, right outward rotation " +

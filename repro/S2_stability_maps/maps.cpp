@@ -14,10 +14,6 @@ namespace s2 {
 using dda::Vec2;
 using repro::stab::RunClass;
 
-std::vector<Vec2> rect(double x0, double y0, double w, double h) {
-  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
-
 MapScene two_squares_map() {
   MapScene m;
   m.name = "two_squares";

@@ -7,13 +7,13 @@
 
 #include "dda/scene.hpp"
 #include "repro/S_common/stability.hpp"
+#include "repro/common/shapes.hpp"
 
 namespace s2 {
 
 inline constexpr double kG = 9.81;  // m/s^2
 
-// Axis-aligned rectangle, CCW from its lower left corner (x0, y0).
-std::vector<dda::Vec2> rect(double x0, double y0, double w, double h);
+using repro::rect;
 
 // One map: a two-block collision and what its classification needs.
 struct MapScene {

@@ -15,6 +15,7 @@
 #include "dda/simulation.hpp"
 #include "repro/S_common/stability.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/shapes.hpp"
 
 namespace s3 {
 using dda::Vec2;
@@ -23,9 +24,7 @@ using repro::stab::RunClass;
 
 inline std::string num(double x) { return repro::format_full(x); }
 
-inline std::vector<Vec2> rect(double x0, double y0, double w, double h) {
-  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
+using repro::rect;
 
 struct Extreme {
   std::string name, parameter;

@@ -1,7 +1,9 @@
 // Output helpers for drivers that run a dda::Simulation (header only; the
 // repro_common library itself does not depend on dda).
 #pragma once
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dda/simulation.hpp"
@@ -20,5 +22,29 @@ inline void write_snapshot(CsvWriter& csv, const dda::Simulation& sim) {
       csv.row({sim.time(), static_cast<double>(i), static_cast<double>(k), p.vertex(k).x, p.vertex(k).y});
   }
 }
+
+// When a driver writes output during a run of `steps` steps: at every
+// multiple of each period, at each listed step and at the last step. The
+// steps between two outputs run as one Simulation::advance (one thread team).
+class OutputSchedule {
+ public:
+  OutputSchedule(long long steps, std::vector<long long> periods, std::vector<long long> listed = {})
+      : steps_(steps), periods_(std::move(periods)), listed_(std::move(listed)) {}
+  // The first output step after s (at most the last step).
+  long long next(long long s) const {
+    long long n = steps_;
+    for (long long p : periods_) n = std::min(n, (s / p + 1) * p);
+    for (long long v : listed_)
+      if (v > s) n = std::min(n, v);
+    return n;
+  }
+  // Whether step s is an output of the given period (or the last step).
+  bool at(long long s, long long period) const { return s % period == 0 || s == steps_; }
+  bool listed(long long s) const { return std::find(listed_.begin(), listed_.end(), s) != listed_.end(); }
+
+ private:
+  long long steps_;
+  std::vector<long long> periods_, listed_;
+};
 
 }  // namespace repro

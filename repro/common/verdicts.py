@@ -27,8 +27,12 @@ FIELDS = ["driver", "id", "kind", "verdict", "cause"]
 CAUSES = ("paper_method", "missing_data", "implementation")
 
 
-def run_verdicts(claims_dir):
-    """{(driver, id): (kind, verdict, cause)} of a run, and the problems found."""
+CONTROL_PREFIX = "repro_controls: "
+
+
+def run_verdicts(claims_dir, tests=None):
+    """{(driver, id): (kind, verdict, cause)} of a run, and the problems found;
+    tests: the repro_controls test-case names a row's control must be among."""
     rows, problems = {}, []
     files = sorted(glob.glob(os.path.join(claims_dir, "*.csv")))
     if not files:
@@ -48,6 +52,11 @@ def run_verdicts(claims_dir):
                     problems.append(f"{driver} {rec['id']}: id repeats")
                 if verdict == "FAIL" and cause not in CAUSES:
                     problems.append(f"{driver} {rec['id']}: FAIL without a cause")
+                control = rec.get("control") or ""
+                if tests is not None and control.startswith(CONTROL_PREFIX) and \
+                        control[len(CONTROL_PREFIX):] not in tests:
+                    problems.append(f"{driver} {rec['id']}: names control '{control[len(CONTROL_PREFIX):]}', "
+                                    f"not a test case of repro_controls")
                 rows[key] = (kind, verdict, cause)
     return rows, problems
 
@@ -61,27 +70,12 @@ def show(v):
     return "absent" if v is None else (v[0] if v[1] == "-" else f"{v[1]}" + (f" ({v[2]})" if v[2] else ""))
 
 
-def control_problems(claims_dir, tests_path):
-    """Rows naming a repro_controls test case that does not exist."""
-    with open(tests_path, encoding="utf-8") as f:
-        tests = {line.strip() for line in f if line.strip()}
-    problems = []
-    for path in sorted(glob.glob(os.path.join(claims_dir, "*.csv"))):
-        driver = os.path.splitext(os.path.basename(path))[0]
-        with open(path, newline="", encoding="utf-8") as f:
-            for rec in csv.DictReader(f):
-                control = rec.get("control") or ""
-                prefix = "repro_controls: "
-                if control.startswith(prefix) and control[len(prefix):] not in tests:
-                    problems.append(f"{driver} {rec['id']}: names control '{control[len(prefix):]}', "
-                                    f"not a test case of repro_controls")
-    return problems
-
-
 def compare(claims_dir, expected_path, tests_path=None):
-    got, problems = run_verdicts(claims_dir)
+    tests = None
     if tests_path:
-        problems += control_problems(claims_dir, tests_path)
+        with open(tests_path, encoding="utf-8") as f:
+            tests = {line.strip() for line in f if line.strip()}
+    got, problems = run_verdicts(claims_dir, tests)
     want = read_expected(expected_path)
     changed = []
     for key in sorted(set(got) | set(want)):
