@@ -27,6 +27,20 @@
 //          broad phase (column "x-overlap": pairs one pass visits); within the
 //          warm-up gravity's compression wave reaches only the lower ~50 m, so
 //          a tall column's upper blocks are still falling without contact.
+//
+// --skips: what a scene does not use, it does not pay for. One thread, CPU
+// time per step after the warm-up, heap per block and per touching pair, for
+//   the collapse as is (friction 15 deg, deformable blocks);
+//   the collapse without friction (kt = 0): no friction force (Eqs. 24-26),
+//          no friction energy or work banking; the PairHistory slot of each
+//          near pair is still allocated (unused);
+//   the collapse with rigid blocks (Scene::strains false): no stress update,
+//          no strain forces, no strain modes in the critical step;
+//   Sect. 4.1's two squares with the default all-pairs test
+//          (BroadPhase::kNone: one box test per step, no sort) against the
+//          sweep broad phase the collapse uses (sort, skin, Verlet list).
+// Each variant is its own trajectory (friction and strains change the
+// motion), so the cost per touching pair is printed beside the cost per step.
 #include <algorithm>
 #include <atomic>
 #include <cfloat>
@@ -48,6 +62,7 @@
 #include <vector>
 
 #include "dda/joint_sets.hpp"
+#include "dda/paper_scenes.hpp"
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
 
@@ -77,6 +92,7 @@ struct Options {
   int steps = kDefaultSteps;
   int warmup = kDefaultWarmup;
   bool scaling = false;
+  bool skips = false;
   Shape shape = Shape::kWide;
   int max_blocks = kDefaultMaxBlocks;
   std::string csv;
@@ -84,7 +100,7 @@ struct Options {
 
 [[noreturn]] void usage(const char* argv0) {
   std::cerr << "usage: " << argv0
-            << " [--steps N] [--warmup N] [--scaling [--shape wide|column] [--max-blocks N] [--csv FILE]]\n"
+            << " [--steps N] [--warmup N] [--scaling [--shape wide|column] [--max-blocks N] [--csv FILE]] [--skips]\n"
             << "  --steps: timed steps of the collapse (the scaling runs take " << kBlockStepBudget
             << " / blocks steps, " << kMinScalingSteps << " to " << kMaxScalingSteps << ")\n";
   std::exit(2);
@@ -109,6 +125,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--max-blocks" && has_value) o.max_blocks = count_arg(argv[++i], argv[0]);
     else if (a == "--csv" && has_value) o.csv = argv[++i];
     else if (a == "--scaling") o.scaling = true;
+    else if (a == "--skips") o.skips = true;
     else if (a == "--shape" && has_value) {
       const std::string s = argv[++i];
       if (s == "wide") o.shape = Shape::kWide;
@@ -469,11 +486,61 @@ int run_scaling(const Options& o) {
   return all_same ? 0 : 1;
 }
 
+// ---------------------------------------------------------------------------
+// What a scene skips.
+// ---------------------------------------------------------------------------
+
+struct SkipRow {
+  const char* name;
+  dda::Scene scene;
+  bool whole_run;  // time the scene's whole duration from t = 0 (the squares touch at 0.5 s)
+};
+
+int run_skips(const Options& o) {
+  const dda::Scene collapse = dda::paper::collapse(kJointFrictionDeg).scene;
+  dda::Scene frictionless = collapse;
+  frictionless.contact.kt = 0.0;  // ContactParams::friction() is kt > 0
+  dda::Scene rigid = collapse;
+  rigid.strains = false;
+  dda::Scene squares = dda::paper::two_squares();
+  squares.broad_phase = dda::BroadPhase::kNone;
+  dda::Scene squares_sweep = squares;
+  squares_sweep.broad_phase = dda::BroadPhase::kSweep;
+  const SkipRow rows[] = {{"collapse, friction 15 deg, deformable", collapse, false},
+                          {"collapse, frictionless (kt = 0)", frictionless, false},
+                          {"collapse, rigid blocks (no strains)", rigid, false},
+                          {"4.1 two squares, all-pairs test", squares, true},
+                          {"4.1 two squares, sweep broad phase", squares_sweep, true}};
+  std::printf("== what a scene skips: 1 thread; the collapse %d warm-up + %d timed steps, the squares their whole "
+              "%.1f s run; %s\n",
+              o.warmup, o.steps, squares.duration, load_note().c_str());
+  std::printf("%-40s %7s %10s %11s %10s %10s %9s\n", "scene", "blocks", "touch/step", "cpu us/step", "ns/touch",
+              "kB/block", "B/touch");
+  for (const SkipRow& r : rows) {
+    const double before = heap_bytes();
+    dda::Simulation sim(r.scene);
+    const double built = heap_bytes();
+    const int whole = static_cast<int>(std::lround(r.scene.duration / r.scene.dt));
+    const RunStats st = r.whole_run ? timed_run(sim, 1, 0, whole) : timed_run(sim, 1, o.warmup, o.steps);
+    const double touching = static_cast<double>(sim.contacts().size());
+    const double cpu_us = 1e6 * st.cpu_s / static_cast<double>(st.steps);
+    std::printf("%-40s %7d %10.1f %11.2f %10.1f %10.2f %9.0f\n", r.name, st.blocks, st.touching_per_step, cpu_us,
+                st.touching_per_step > 0.0 ? 1e3 * cpu_us / st.touching_per_step : 0.0,
+                (built - before) / st.blocks / 1e3, touching > 0.0 ? (heap_bytes() - built) / touching : 0.0);
+    std::fflush(stdout);
+  }
+  std::printf("   cpu us/step: process CPU time per step (robust to a shared machine); ns/touch: the same per\n"
+              "   touching pair; kB/block: heap of the constructed simulation per block; B/touch: heap growth\n"
+              "   over the run per touching pair at its end\n");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   try {
+    if (o.skips) return run_skips(o);
     return o.scaling ? run_scaling(o) : run_collapse(o);
   } catch (const std::exception& e) {
     std::cerr << "bench_collapse: " << e.what() << "\n";

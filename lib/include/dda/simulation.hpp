@@ -192,6 +192,7 @@ class Simulation {
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
   void update_near_pairs();
   void rebuild_near_pairs();
+  bool near_pairs_unchanged() const;  // BroadPhase::kNone: would a rebuild list the same pairs?
   // contact_forces.cpp: per near pair, overlap, IP, contact force
   void pair_forces(bool with_energy);
   bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault);

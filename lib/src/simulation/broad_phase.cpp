@@ -22,8 +22,11 @@ bool pair_before(const P& x, const P& y) {
 
 void Simulation::update_near_pairs() {
   // Every thread reads every flag after move_blocks' barrier: the same
-  // verdict in all of them. Without the sweep the list is rebuilt every step.
-  bool rebuild = scene_.broad_phase == BroadPhase::kNone;
+  // verdict in all of them. Without the sweep the list is rebuilt when the
+  // pairs whose boxes overlap changed (a read-only test every thread makes
+  // alike; an unchanged list keeps every slot as the merge would): a small
+  // scene's usual step pays no rebuild, no allocation and no team sync.
+  bool rebuild = scene_.broad_phase == BroadPhase::kNone && !near_pairs_unchanged();
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;
   DDA_OMP(omp single)
@@ -39,6 +42,21 @@ void Simulation::update_near_pairs() {
       split_evenly(team_size());
     }
   }
+}
+
+bool Simulation::near_pairs_unchanged() const {
+  // BroadPhase::kNone: whether rebuild_near_pairs would list the same pairs
+  // as near_pairs_ (every pair with a free block whose boxes overlap now,
+  // in (i, j) order).
+  const int n = block_count();
+  std::size_t k = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      if ((fixed_[i] && fixed_[j]) || !aabb_overlap(boxes_[i], boxes_[j])) continue;
+      if (k == near_pairs_.size() || near_pairs_[k].i != i || near_pairs_[k].j != j) return false;
+      ++k;
+    }
+  return k == near_pairs_.size();
 }
 
 void Simulation::rebuild_near_pairs() {
