@@ -17,8 +17,9 @@
 // with about i's initial speed (Fig. 16), momentum conserved, "a little
 // energy loss".
 //
-// Output under <out>/data/B_6_two_prisms/: history.csv (Fig. 16; also the
-// run without subdivision, history_nosub.csv), snapshots.csv and clones.csv
+// Output under <out>/data/B_6_two_prisms/: history.csv (Fig. 16, with the
+// energy account's columns per row; also the run without subdivision,
+// history_nosub.csv), snapshots.csv and clones.csv
 // (Figs. 13-15), events.csv (touches and separations), mesh_study.csv (the
 // same collision on meshes of 2 to 32 divisions, dt scaled with h: j's
 // block-average velocity converges, the nodal peak of Fig. 14c does not);
@@ -47,15 +48,19 @@ constexpr int kMeshDivisions[] = {2, 4, 8, 16, 32};  // 4 to 4096 CST elements p
 std::vector<std::string> history_header() {
   return {"time",        "ux_i",         "ux_j",    "vx_i",           "vx_j",
           "vx_max_j",    "momentum_x",   "kinetic", "strain",         "total_energy",
-          "impact_loss", "remap_change", "clones",  "patch_elements", "patch_substeps"};
+          "impact_loss", "remap_change", "clones",  "patch_elements", "patch_substeps",
+          // the energy account (Model::energy_account), J/m
+          "energy_initial", "gravity", "touch_loss", "touch_loss_eq5", "refine_loss", "deletion_loss", "energy_other"};
 }
 
 void history_row(repro::CsvWriter& csv, const Model& m) {
   const dda::cdem::CdemEnergy e = m.energy();
+  const dda::cdem::CdemEnergyAccount a = m.energy_account();
   csv.row({m.time(), m.block_displacement(0).x, m.block_displacement(1).x, m.block_velocity(0).x, m.block_velocity(1).x,
            m.block_max_velocity_x(1), m.momentum().x, e.kinetic, e.strain, e.total(), m.impact_energy_loss(),
            m.remap_energy_change(), static_cast<double>(m.clones().size()),
-           static_cast<double>(m.active_elements(true)), static_cast<double>(m.patch_substeps())});
+           static_cast<double>(m.active_elements(true)), static_cast<double>(m.patch_substeps()), a.initial,
+           a.gravity, a.touch_loss, a.touch_loss_eq5, a.refine_loss, a.deletion_loss, a.other});
 }
 
 void write_snapshot(repro::CsvWriter& tris, repro::CsvWriter& clones, int id, const std::string& label,
