@@ -79,6 +79,12 @@ inline Result simulate(const dda::cdem::CdemScene& scene,
   return r;
 }
 
+inline constexpr int kPaperDivisionsForMass = 2;  // the paper's example mesh here
+// The contact-point masses of the B-6 row, as fractions of the touching
+// node's coarse lumped mass (touching_node_mass): k = 2, 3, 4, 6, 8.
+inline const std::vector<double> kMassFractions = {1.0 / 4, 1.0 / 9, 1.0 / 16, 1.0 / 36, 1.0 / 64};
+inline constexpr int kMassMaxSubdivision = 8;
+
 // The negative controls (test_controls.cpp) named by the rows.
 inline const char* const kControlTouch = "repro_controls: B-6 touch: FAIL with the gap 0.1 m wider";
 inline const char* const kControlExchange = "repro_controls: B-6 exchange: FAIL with block j twice as dense";
@@ -151,6 +157,48 @@ inline bool energy_closes(const std::vector<dda::cdem::CdemEnergyAccount>& rows)
 }
 inline const char* const kTestEnergyCloses =
     "B-6 energy closes: FAIL without the deletion loss and on a series with 1 % more kinetic energy";
+
+// ---- the contact-point mass (Sect. 4.1, CdemOptions::contact_point_mass) -----
+// One touch of the prisms with the contact points' mass set to `target`
+// (kg/m; through the subdivision k, so M / k^2): the touch's measured loss
+// (the Eq. 4 projection's kinetic-energy drop) and Eq. 5 with its masses.
+struct MassPoint {
+  double target = 0.0;  // contact_point_mass, kg/m
+  int k = 0;
+  double mass_main = 0.0, mass_target = 0.0;  // the clone's masses, kg/m
+  double loss = 0.0, loss_eq5 = 0.0;           // J/m
+};
+inline MassPoint contact_mass_point(double target, int max_subdivision) {
+  dda::cdem::CdemOptions o;
+  o.contact_point_mass = target;
+  o.max_subdivision = max_subdivision;
+  const Result r = simulate(dda::cdem::two_prisms(kPaperDivisionsForMass, o));
+  return {target, r.touch.subdivision, r.touch.mass_main, r.touch.mass_target, r.touch.energy_loss,
+          r.touch.energy_loss_eq5};
+}
+// The coarse lumped mass of the node that touches in run r (kg/m): the
+// scale of the contact-point masses.
+inline double touching_node_mass(const Result& r) {
+  return dda::cdem::Model(dda::cdem::two_prisms(kPaperDivisionsForMass)).node_mass(r.touch.main_node);
+}
+// Criterion: at every mass the measured loss is Eq. 5 with the clone's
+// masses to kEq5Agreement (relative: a single touch's projection is Eq. 5 up
+// to round-off and the projection's 1e-14 convergence), and the loss falls
+// with the contact points' reduced mass (Sect. 4.1: 'the loss decreases as
+// the mass of the contact points decreases').
+inline constexpr double kEq5Agreement = 1e-6;
+inline bool touch_loss_follows_eq5(std::vector<MassPoint> pts) {
+  if (pts.size() < 2) return false;
+  auto reduced = [](const MassPoint& p) { return p.mass_main * p.mass_target / (p.mass_main + p.mass_target); };
+  std::sort(pts.begin(), pts.end(), [&](const MassPoint& a, const MassPoint& b) { return reduced(a) < reduced(b); });
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!(pts[i].loss > 0.0) || std::fabs(pts[i].loss - pts[i].loss_eq5) > kEq5Agreement * pts[i].loss_eq5) return false;
+    if (i > 0 && !(reduced(pts[i]) > reduced(pts[i - 1]) && pts[i].loss > pts[i - 1].loss)) return false;
+  }
+  return true;
+}
+inline const char* const kTestContactMass =
+    "B-6 contact-point mass: FAIL against Eq. 5 with the coarse masses and on losses that grow as the mass falls";
 
 // Sect. 4.1: the clone's inelastic loss is smaller with subdivision.
 inline bool subdivision_reduces_loss(const Result& r, const Result& coarse) {

@@ -47,3 +47,26 @@ TEST_CASE(prisms::kTestEnergyCloses, "[controls][B-6][energy]") {
   CHECK_FALSE(prisms::energy_closes(made_up));
   CHECK_FALSE(prisms::energy_closes({}));  // no rows: nothing closes
 }
+
+TEST_CASE(prisms::kTestContactMass, "[controls][B-6][energy]") {
+  dda::cdem::CdemOptions no_sub;
+  no_sub.subdivision = false;
+  const prisms::Result coarse = prisms::simulate(dda::cdem::two_prisms(2, no_sub));
+  const double m_node = prisms::touching_node_mass(prisms::simulate(dda::cdem::two_prisms(2)));
+  std::vector<prisms::MassPoint> pts;
+  for (double f : {1.0 / 4, 1.0 / 16, 1.0 / 64})
+    pts.push_back(prisms::contact_mass_point(f * m_node, prisms::kMassMaxSubdivision));
+  CHECK(prisms::touch_loss_follows_eq5(pts));
+  // Eq. 5 evaluated with the coarse nodes' masses instead of the clone's.
+  std::vector<prisms::MassPoint> wrong_masses = pts;
+  for (auto& p : wrong_masses) p.loss_eq5 = coarse.touch.energy_loss_eq5;
+  CHECK_FALSE(prisms::touch_loss_follows_eq5(wrong_masses));
+  // A made-up series whose loss grows as the mass falls (Eq. 5 set equal to it).
+  std::vector<prisms::MassPoint> reversed = pts;
+  for (std::size_t i = 0; i < reversed.size(); ++i) {
+    reversed[i].loss = pts[pts.size() - 1 - i].loss;
+    reversed[i].loss_eq5 = reversed[i].loss;
+  }
+  CHECK_FALSE(prisms::touch_loss_follows_eq5(reversed));
+  CHECK_FALSE(prisms::touch_loss_follows_eq5({pts.front()}));  // one mass is no range
+}

@@ -409,6 +409,19 @@ void Model::refine_contact_zone(int m, Vec2 point, int& ea, int& eb, double& xi,
     int k = opt_.max_subdivision;
     if (r > 0.0 && he > 0.0) k = static_cast<int>(std::ceil(he / r - 1e-9));
     k_ = std::clamp(k, opt_.min_subdivision, opt_.max_subdivision);
+    if (opt_.contact_point_mass > 0.0) {
+      // CdemOptions::contact_point_mass (Sect. 4.1): the touching node's
+      // lumped mass M becomes M / k^2 once its elements are refined k x k.
+      const int km = std::max(opt_.min_subdivision,
+                              static_cast<int>(std::ceil(std::sqrt(m_[m] / opt_.contact_point_mass) - 1e-9)));
+      if (km > opt_.max_subdivision) {
+        std::ostringstream msg;
+        msg << "cdem: contact_point_mass " << opt_.contact_point_mass << " kg/m needs k = " << km
+            << " for the touching node's mass " << m_[m] << " kg/m, above max_subdivision " << opt_.max_subdivision;
+        throw SceneError(msg.str());
+      }
+      k_ = km;
+    }
   }
   std::vector<int> set;
   for (int e : coarse_elems_) {

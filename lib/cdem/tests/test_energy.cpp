@@ -122,3 +122,38 @@ TEST_CASE("energy-matched patch deletion keeps the energy the restriction drops"
     CHECK(loss[1] < kMatchedDeletionFraction * loss[0]);
   }
 }
+
+// CdemOptions::contact_point_mass (Paper B Sect. 4.1): the touch's measured
+// loss is Eq. 5 with the clone's masses, and falls with them (measured: the
+// prisms' touch loses 4651, 1163, 291 J/m at k = 2, 4, 8, i.e. M / k^2).
+constexpr double kEq5Relative = 1e-9;  // one touch: the projection is Eq. 5 up to round-off (measured 2e-16)
+
+TEST_CASE("contact-point mass sets the touch's loss (Eq. 5)", "[cdem][energy]") {
+  Model paper(two_prisms(2));
+  paper.advance_to(0.34);
+  const double m_node = Model(two_prisms(2)).node_mass(paper.touches().front().main_node);  // coarse lumped mass
+  double previous = 0.0;
+  for (int k : {8, 4, 2}) {  // rising mass
+    CdemOptions o;
+    o.contact_point_mass = m_node / (k * k);
+    o.max_subdivision = 8;
+    Model m(two_prisms(2, o));
+    m.advance_to(0.34);
+    REQUIRE_FALSE(m.touches().empty());
+    const TouchRecord& t = m.touches().front();
+    INFO("k " << k << " masses " << t.mass_main << " / " << t.mass_target << " loss " << t.energy_loss);
+    CHECK(t.subdivision == k);
+    CHECK(t.mass_main == Approx(m_node / (k * k)).epsilon(1e-12));
+    CHECK(std::fabs(t.energy_loss - t.energy_loss_eq5) <= kEq5Relative * t.energy_loss_eq5);
+    CHECK(t.energy_loss > previous);
+    previous = t.energy_loss;
+  }
+  CdemOptions too_light;
+  too_light.contact_point_mass = m_node / 1000.0;  // needs k = 32 > max_subdivision 6
+  Model m(two_prisms(2, too_light));
+  CHECK_THROWS_AS(m.advance_to(0.34), dda::SceneError);
+  CdemOptions coarse;
+  coarse.subdivision = false;
+  coarse.contact_point_mass = 100.0;
+  CHECK_THROWS_AS(Model(two_prisms(2, coarse)), dda::SceneError);
+}

@@ -119,6 +119,16 @@ struct CdemOptions {
   bool check_stability = true;           // SceneError if dt exceeds the coarse mesh's critical step
   bool capture_touch_snapshots = false;  // store a Snapshot in every TouchRecord
   PatchDeletion patch_deletion = PatchDeletion::kAtSeparation;  // Sect. 5 as published
+  // Contact-point mass (Paper B Sect. 4.1: Eq. 5's loss falls with the mass
+  // of the contact points, zero mass being an elastic touch; 'we can achieve
+  // collisions with different energy losses by adjusting the mass of the
+  // contact points'), kg/m. 0: off, k from c dt2 as in Sect. 5. > 0 (with
+  // subdivision): the subdivision k is chosen at the first touch as the
+  // smallest k >= min_subdivision that brings the touching node's lumped mass
+  // M down to M / k^2 <= contact_point_mass (the lumped masses of the other
+  // nodes follow from the refined mesh); SceneError if that needs k >
+  // max_subdivision. The mass is set through the mesh, so it cannot reach 0.
+  double contact_point_mass = 0.0;
 };
 
 struct CdemBlock {
