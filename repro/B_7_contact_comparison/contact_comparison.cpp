@@ -22,7 +22,8 @@
 //
 // Output under <out>/data/B_7_contact_comparison/: sweep.csv (one row per
 // scene, model and dt, with the wall time), history.csv (x-velocities at
-// the base dt); claims in <out>/claims/B_7_contact_comparison.csv.
+// the base dt), energy_history.csv (the energy account of B and B0 per
+// history row); claims in <out>/claims/B_7_contact_comparison.csv.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -97,6 +98,22 @@ int main(int argc, char** argv) {
                                         repro::format_full(h.vj[k])});
   }
   hcsv.commit();
+  // The energy account of the CDEM runs (B, B0) at the base dt, per history row, J/m.
+  repro::CsvWriter ecsv(dir + "energy_history.csv",
+                        {"scene", "model", "time", "energy_initial", "kinetic", "strain", "gravity", "touch_loss",
+                         "touch_loss_eq5", "refine_loss", "deletion_loss", "energy_other"},
+                        {"Model::energy_account of the CDEM runs at the base dt: initial = kinetic + strain + gravity "
+                         "+ touch_loss (measured; Eq. 5 beside it) + refine_loss + deletion_loss + energy_other"});
+  for (const auto& [key, h] : histories) {
+    const std::string scene = key.substr(0, key.find('/')), model = key.substr(key.find('/') + 1);
+    for (const dda::cdem::CdemEnergyAccount& a : h.accounts)
+      ecsv.row(std::vector<std::string>{
+          scene, model, repro::format_full(a.time), repro::format_full(a.initial), repro::format_full(a.kinetic),
+          repro::format_full(a.strain), repro::format_full(a.gravity), repro::format_full(a.touch_loss),
+          repro::format_full(a.touch_loss_eq5), repro::format_full(a.refine_loss),
+          repro::format_full(a.deletion_loss), repro::format_full(a.other)});
+  }
+  ecsv.commit();
 
   // ----- claims -------------------------------------------------------------
   auto pick = [&](const std::string& scene, const std::string& model) {
@@ -146,6 +163,24 @@ int main(int argc, char** argv) {
              format_short(best(b, &Result::energy_err_end), 3) + ". A BETTER",
          "|A| < 1e-3 and |A| < |B|", energy_ok(a0, bb)});
     claims.back().control = repro::control_test(kTestEnergy);
+    {
+      const History& hb = histories.at(def.name + "/B");
+      const History& hb0 = histories.at(def.name + "/B0");
+      const dda::cdem::CdemEnergyAccount& e = hb.accounts.back();
+      const dda::cdem::CdemEnergyAccount& e0 = hb0.accounts.back();
+      auto pct = [&](double v, double e_init) { return format_short(100.0 * v / e_init, 3) + " %"; };
+      claims.push_back(repro::measurement(
+          sec, "where B's energy goes: the energy account per row (energy_history.csv)",
+          "Paper B: Eq. 5 loss at the touch; Sect. 5 patches",
+          "at the base dt, end of run, in % of E0: B touch " + pct(e.touch_loss, e.initial) + " (Eq. 5 " +
+              pct(e.touch_loss_eq5, e.initial) + "), refine " + pct(e.refine_loss, e.initial) + ", deletion " +
+              pct(e.deletion_loss, e.initial) + ", other " + pct(e.other, e.initial) + ", worst |other| / E0 " +
+              format_short(worst_energy_remainder(hb.accounts), 3) + "; B0 touch " +
+              pct(e0.touch_loss, e0.initial) + ", other " + pct(e0.other, e0.initial) + ", worst |other| / E0 " +
+              format_short(worst_energy_remainder(hb0.accounts), 3),
+          "the losses are measured by the model (touch: the projection's kinetic-energy drop; refine, deletion: the "
+          "total-energy drop of the mesh change); 'other' is the integration's remainder"));
+    }
     claims.push_back({sec,
                       "post-impact velocities: A exchanges them like rigid blocks, B leaves some energy in vibration",
                       "equal rigid blocks exchange velocities (v_i -> 0, v_j -> " + format_short(def.v0) + " m/s)",

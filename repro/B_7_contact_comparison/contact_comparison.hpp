@@ -34,7 +34,20 @@ struct Result {
 
 struct History {
   std::vector<double> t, vi, vj;
+  std::vector<dda::cdem::CdemEnergyAccount> accounts;  // CDEM runs (B, B0) only, one per row
 };
+
+// The largest |initial - (kinetic + strain + gravity + touch + refine +
+// deletion losses)| / initial over an energy-account series (the remainder:
+// time integration, clone drift), as B-6's closure criterion computes it.
+inline double worst_energy_remainder(const std::vector<dda::cdem::CdemEnergyAccount>& rows) {
+  double worst = 0.0;
+  for (const dda::cdem::CdemEnergyAccount& a : rows)
+    worst = std::max(worst, std::fabs(a.initial - (a.kinetic + a.strain + a.gravity + a.touch_loss + a.refine_loss +
+                                                   a.deletion_loss)) /
+                                a.initial);
+  return worst;
+}
 
 struct SceneDef {
   std::string name;
@@ -130,6 +143,7 @@ inline Result run_cdem(const SceneDef& def, bool subdivision, double dt, History
           hist->t.push_back(m.time());
           hist->vi.push_back(m.block_velocity(0).x);
           hist->vj.push_back(m.block_velocity(1).x);
+          hist->accounts.push_back(m.energy_account());
         }
       }
     }

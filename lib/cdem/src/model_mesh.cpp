@@ -66,6 +66,10 @@ void Model::build(const CdemScene& scene) {
     scene_fail("options.min/max_subdivision", "need 1 <= min <= max <= 64");
   if (!(opt_.substep_safety > 0.0 && opt_.substep_safety <= 1.0))
     scene_fail("options.substep_safety", "must lie in (0, 1]");
+  if (!(std::isfinite(opt_.contact_point_mass) && opt_.contact_point_mass >= 0.0))
+    scene_fail("options.contact_point_mass", "must be finite and >= 0");
+  if (opt_.contact_point_mass > 0.0 && !opt_.subdivision)
+    scene_fail("options.contact_point_mass", "is set through the subdivision (Sect. 5): needs subdivision on");
   if (!(std::isfinite(opt_.mass_damping) && opt_.mass_damping >= 0.0))
     scene_fail("options.mass_damping", "must be >= 0");
   if (scene.materials.empty()) scene_fail("materials", "at least one material is needed");

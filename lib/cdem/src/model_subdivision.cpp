@@ -17,6 +17,13 @@ namespace dda::cdem {
 
 using namespace detail;
 
+// PatchDeletion::kEnergyMatched: the largest factor by which the restricted
+// velocity deviations or a parent's mean stress are scaled. Beyond it the
+// fine-scale energy has no coarse counterpart worth amplifying (a nearly
+// uniform coarse field would be turned into an invented one); the rest
+// stays in deletion_loss.
+constexpr double kMaxEnergyScale = 3.0;
+
 void Model::update_substeps() {
   if (patch_eval_.empty()) {
     substeps_ = 1;
@@ -221,6 +228,8 @@ void Model::unrefine(const std::vector<int>& parents) {
   if (parents.empty()) return;
   const double energy_before = kinetic_energy() + energy().strain;
   const double total_before = energy().total();
+  const double kinetic_before = kinetic_energy();
+  const bool match = opt_.patch_deletion == PatchDeletion::kEnergyMatched;
   std::vector<double> mm(x_.size(), 0.0);
   std::vector<Vec2> p(x_.size());
   for (std::size_t i = 0; i < x_.size(); ++i)
@@ -281,6 +290,19 @@ void Model::unrefine(const std::vector<int>& parents) {
     parent.lattice = -1;
     parent.stress = area_sum > 0.0 ? Vec3(stress_sum / area_sum) : parent.stress;
     parent.last = {x_[c[0]], x_[c[1]], x_[c[2]]};
+    if (match) {
+      // PatchDeletion::kEnergyMatched, strain: the mean stress scaled so
+      // that the parent's strain energy is its children's (capped).
+      const Mat3& cm = c_[blocks_[parent.block].material];
+      double fine_strain = 0.0;
+      for (int chi : lat.children) {
+        const Elem& ch = elem(chi);
+        fine_strain += 0.5 * cst({x_[ch.n[0]], x_[ch.n[1]], x_[ch.n[2]]}).area * ch.stress.dot(cm * ch.stress);
+      }
+      const double coarse_strain = 0.5 * cst({x_[c[0]], x_[c[1]], x_[c[2]]}).area * parent.stress.dot(cm * parent.stress);
+      if (coarse_strain > 0.0)
+        parent.stress *= std::min(kMaxEnergyScale, std::sqrt(std::max(1.0, fine_strain / coarse_strain)));
+    }
   }
   // Edge nodes: kept (as hanging) only where the other side is still refined.
   for (int ei : parents) {
@@ -317,6 +339,43 @@ void Model::unrefine(const std::vector<int>& parents) {
     }
     if (!blocks_[node_block_[i]].fixed && m_[i] > 0.0) v_[i] = p[i] / m_[i];
   }
+  if (match) {
+    // PatchDeletion::kEnergyMatched, kinetic: the restricted velocities of
+    // the parents' corners, per block, spread about their mass-weighted mean
+    // v_bar by mu = sqrt(1 + deficit / K_dev) (capped), K_dev the kinetic
+    // energy of the deviations: sum m (v_bar + mu (v - v_bar)) keeps the
+    // momentum, and the kinetic energy grows by the restriction's deficit.
+    double kinetic_after = 0.0;
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      if (kind_[i] == NodeKind::kCoarse || kind_[i] == NodeKind::kFine) kinetic_after += 0.5 * m_[i] * length_squared(v_[i]);
+    double deficit = kinetic_before - kinetic_after;
+    std::vector<int> corners;
+    for (int ei : parents)
+      for (int a : elem(ei).n)
+        if ((kind_[a] == NodeKind::kCoarse || kind_[a] == NodeKind::kFine) && inv_m_[a] > 0.0 &&
+            !blocks_[node_block_[a]].fixed && std::find(corners.begin(), corners.end(), a) == corners.end())
+          corners.push_back(a);
+    // the deficit shared among the blocks in proportion to their deviations' energy
+    std::vector<double> mass(blocks_.size(), 0.0), k_dev(blocks_.size(), 0.0);
+    std::vector<Vec2> mom(blocks_.size());
+    for (int a : corners) {
+      mass[node_block_[a]] += m_[a];
+      mom[node_block_[a]] += m_[a] * v_[a];
+    }
+    for (int a : corners) {
+      const int b = node_block_[a];
+      k_dev[b] += 0.5 * m_[a] * length_squared(v_[a] - mom[b] / mass[b]);
+    }
+    double k_dev_sum = 0.0;
+    for (double k : k_dev) k_dev_sum += k;
+    if (deficit > 0.0 && k_dev_sum > 0.0)
+      for (int a : corners) {
+        const int b = node_block_[a];
+        const double mu = std::min(kMaxEnergyScale, std::sqrt(1.0 + deficit / k_dev_sum));
+        const Vec2 vbar = mom[b] / mass[b];
+        v_[a] = vbar + mu * (v_[a] - vbar);
+      }
+  }
   finish_mesh_change();
   remap_change_ += kinetic_energy() + energy().strain - energy_before;
   deletion_loss_ += total_before - energy().total();
@@ -350,6 +409,19 @@ void Model::refine_contact_zone(int m, Vec2 point, int& ea, int& eb, double& xi,
     int k = opt_.max_subdivision;
     if (r > 0.0 && he > 0.0) k = static_cast<int>(std::ceil(he / r - 1e-9));
     k_ = std::clamp(k, opt_.min_subdivision, opt_.max_subdivision);
+    if (opt_.contact_point_mass > 0.0) {
+      // CdemOptions::contact_point_mass (Sect. 4.1): the touching node's
+      // lumped mass M becomes M / k^2 once its elements are refined k x k.
+      const int km = std::max(opt_.min_subdivision,
+                              static_cast<int>(std::ceil(std::sqrt(m_[m] / opt_.contact_point_mass) - 1e-9)));
+      if (km > opt_.max_subdivision) {
+        std::ostringstream msg;
+        msg << "cdem: contact_point_mass " << opt_.contact_point_mass << " kg/m needs k = " << km
+            << " for the touching node's mass " << m_[m] << " kg/m, above max_subdivision " << opt_.max_subdivision;
+        throw SceneError(msg.str());
+      }
+      k_ = km;
+    }
   }
   std::vector<int> set;
   for (int e : coarse_elems_) {
