@@ -5,6 +5,10 @@
 //   B  : Paper B's CDEM blocks (CST meshes) with the two-scale contact
 //        (time-of-impact split, clone node, local subdivision),
 //   B0 : the same without local subdivision (clone of coarse nodes),
+//   P  : baseline, not Paper B: the conventional node-to-edge penalty
+//        contact on B0's CST meshes (kn = E/100, frictionless, undamped;
+//        penalty_baseline.{hpp,cpp}, lib/cdem/src/model_penalty.cpp), with
+//        a measured stability limit at kn x 1 and x 10^4,
 // over a sweep of dt:
 //   prisms  - Paper B Sect. 6 (RECONSTRUCTED 7 m prisms, see
 //             dda/cdem/scenes.hpp), 3 m/s, run to 0.8 s; for A, kn = E/100
