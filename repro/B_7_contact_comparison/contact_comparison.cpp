@@ -5,6 +5,10 @@
 //   B  : Paper B's CDEM blocks (CST meshes) with the two-scale contact
 //        (time-of-impact split, clone node, local subdivision),
 //   B0 : the same without local subdivision (clone of coarse nodes),
+//   P  : baseline, not Paper B: the conventional node-to-edge penalty
+//        contact on B0's CST meshes (kn = E/100, frictionless, undamped;
+//        penalty_baseline.{hpp,cpp}, lib/cdem/src/model_penalty.cpp), with
+//        a measured stability limit at kn x 1 and x 10^4,
 // over a sweep of dt:
 //   prisms  - Paper B Sect. 6 (RECONSTRUCTED 7 m prisms, see
 //             dda/cdem/scenes.hpp), 3 m/s, run to 0.8 s; for A, kn = E/100
@@ -33,6 +37,7 @@
 #include <vector>
 
 #include "repro/B_7_contact_comparison/contact_comparison.hpp"
+#include "repro/B_7_contact_comparison/penalty_baseline.hpp"
 #include "repro/common/common.hpp"
 #include "repro/common/options.hpp"
 
@@ -73,13 +78,16 @@ int main(int argc, char** argv) {
       results.insert(results.end(), sweep.begin(), sweep.end());
     }
   }
+  // P: the node-to-edge penalty baseline on the CST blocks (penalty_baseline.cpp).
+  const PenaltyRuns penalty_runs = run_penalty_baseline(scenes, results, histories, progress);
 
   repro::CsvWriter csv(
       dir + "sweep.csv",
       {"scene", "model", "dt", "wall_s", "steps", "t_touch", "touch_err", "momentum_err", "energy_err_end",
        "energy_err_max", "v_i", "v_j", "vj_err_exchange", "vj_err_self", "contact_start", "contact_end"},
       {"A: Paper A penalty (6-DOF DDA); B: Paper B clone node + subdivision (CDEM); B0: clone node "
-       "without subdivision. Prisms RECONSTRUCTED (7 m, Paper B Fig. 12 lost); A's kn on the "
+       "without subdivision; P: node-to-edge penalty on B0's CST "
+       "meshes (kn = E/100, frictionless, undamped; baseline, not Paper B). Prisms RECONSTRUCTED (7 m, Paper B Fig. 12 lost); A's kn on the "
        "prisms = E/100 = 0.4 GPa (our choice). vj_err_self: against the same model at its "
        "smallest dt. wall_s: mean of repeated runs."});
   for (const Result& r : results)
@@ -247,6 +255,7 @@ int main(int argc, char** argv) {
                       kn_dependence_ok(runs, def.v0)});
     claims.back().control = repro::control_test(kTestKn);
   }
+  add_penalty_rows(scenes, results, penalty_runs, claims);
   if (!set.is_default())  // rows of a run off the default meshes or time steps say so
     for (repro::Claim& c : claims)
       c.claim += " [NOT THE DEFAULT SETTINGS: prisms " + std::to_string(set.prism_divisions) + " divisions, dt " +

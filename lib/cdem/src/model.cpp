@@ -6,6 +6,7 @@
 //   Sect. 4.2 interaction force and separation, Eqs. 6-11  model_separation.cpp
 //   Sect. 5   local subdivision, patch steps, Eq. 12 ..... model_subdivision.cpp
 //   energy, momentum and other read-out ................. model_energy.cpp
+//   baseline: node-to-edge penalty contact (not Paper B)  model_penalty.cpp
 #include "dda/cdem/model.hpp"
 
 #include <algorithm>
@@ -48,6 +49,7 @@ void Model::literal_two_stage(const std::vector<Touch>& touches, double t0) {
 // One coarse step t0 -> t1 = t0 + dt, explicit central differences in
 // kick-drift-kick form (Eq. 1), as a table of the method's steps.
 void Model::step() {
+  if (opt_.contact == ContactMode::kNodeToEdgePenalty) return penalty_step();  // baseline, model_penalty.cpp
   const double t0 = time_, t1 = t0 + dt_;
   step_t0_ = t0;
   step_touch_count_.clear();

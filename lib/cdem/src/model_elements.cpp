@@ -95,6 +95,7 @@ void Model::compute_coarse_forces() {
   for (int e : coarse_eval_)
     if (!blocks_[elem(e).block].fixed) element_force(elem(e), false);
   solve_clones(false, time_);
+  if (opt_.contact == ContactMode::kNodeToEdgePenalty) add_penalty_forces();
 }
 
 void Model::compute_patch_forces(double t) {

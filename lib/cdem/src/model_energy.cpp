@@ -21,6 +21,7 @@ double Model::kinetic_energy() const {
 CdemEnergy Model::energy() const {
   CdemEnergy en;
   en.kinetic = kinetic_energy();
+  en.contact = penalty_energy();
   for (const std::vector<int>* list : {&coarse_elems_, &fine_elems_})
     for (int ei : *list) {
       const Elem& e = elem(ei);

@@ -176,6 +176,7 @@ void Model::build(const CdemScene& scene) {
       << " s): use a smaller dt or coarser elements (Paper B Sect. 5: c dt < element length)";
     scene_fail("dt", s.str());
   }
+  setup_penalty();
   compute_coarse_forces();
   initial_energy_ = energy().total();
 }

@@ -103,8 +103,19 @@ enum class PatchDeletion : std::uint8_t {
   // projection: the fine-scale energy becomes coarse-scale vibration.
   kEnergyMatched,
 };
+// How blocks touch: Paper B's two-scale contact (the default), or the
+// conventional node-to-edge penalty contact that Paper B argues against, as a
+// baseline on the same CST blocks (model_penalty.cpp).
+enum class ContactMode : std::uint8_t { kTwoScale, kNodeToEdgePenalty };
 
 struct CdemOptions {
+  ContactMode contact = ContactMode::kTwoScale;
+  // kNodeToEdgePenalty only: the normal spring between a boundary node and
+  // the boundary edge it penetrates, Pa (N/m of force per unit thickness per
+  // m of penetration); 0: E / 100 of the stiffer of the two blocks' materials
+  // (Paper A Sect. 4.1's ratio kn / E, the kn Paper A's scenes use in B-7).
+  // Frictionless, undamped; needs subdivision = false.
+  double penalty_kn = 0.0;
   double tolerance = 5e-3;  // contact tolerance d_tol, m (Paper B Sect. 6)
   CloneStrength strength;
   bool subdivision = true;  // Sect. 5 local subdivision; off: clones of coarse nodes
@@ -241,7 +252,8 @@ struct CdemEnergy {
   double kinetic = 0.0;
   double strain = 0.0;
   double gravity = 0.0;
-  double total() const { return kinetic + strain + gravity; }
+  double contact = 0.0;  // penalty springs (ContactMode::kNodeToEdgePenalty), 0 otherwise
+  double total() const { return kinetic + strain + gravity + contact; }
 };
 
 // Where the energy of a run went, J per unit thickness, at the model's
@@ -279,6 +291,18 @@ class Model {
   // iteration), and the element bound min_e 2 / omega_max(e) (Irons).
   double critical_dt() const { return critical_dt_; }
   double element_critical_dt() const { return element_critical_dt_; }
+  // kNodeToEdgePenalty: 2 / sqrt(omega_max^2 + 6 kn max(1/m) of the boundary
+  // nodes), the mesh's critical step with up to three penalty springs per
+  // node (model_penalty.cpp); critical_dt() otherwise.
+  double contact_critical_dt() const { return contact_critical_dt_; }
+  // kNodeToEdgePenalty: the springs of the last force evaluation.
+  struct PenaltyContact {
+    int node = -1, a = -1, b = -1;  // node behind the edge a -> b of another block
+    double xi = 0.0, depth = 0.0;   // foot on the edge (0 at a), penetration, m
+    Vec2 normal{};                  // the edge's outward unit normal
+  };
+  const std::vector<PenaltyContact>& penalty_contacts() const { return penalty_contacts_; }
+  double penalty_kn() const { return penalty_kn_; }  // Pa, resolved (0 in the two-scale mode)
 
   int block_count() const { return static_cast<int>(blocks_.size()); }
   double block_mass(int b) const;
@@ -413,6 +437,11 @@ class Model {
   bool in_clone(int node) const;
   bool touch_blocked(int node) const;
   std::vector<int> tied_partners(int node) const;
+  // node-to-edge penalty baseline (model_penalty.cpp)
+  void setup_penalty();
+  void penalty_step();
+  void add_penalty_forces();
+  double penalty_energy() const;
   // stepping
   void literal_two_stage(const std::vector<Touch>& touches, double t0);
   void patch_loop(double t0, double t1, std::vector<Touch> coarse_touches);
@@ -469,6 +498,9 @@ class Model {
   int substeps_ = 1;  // n of dt/n in patches
   double impact_loss_ = 0.0, remap_change_ = 0.0;
   double refine_loss_ = 0.0, deletion_loss_ = 0.0, touch_loss_eq5_ = 0.0, initial_energy_ = 0.0;
+  // node-to-edge penalty baseline
+  double penalty_kn_ = 0.0, contact_critical_dt_ = 0.0, penalty_max_depth_ = 0.0;
+  std::vector<PenaltyContact> penalty_contacts_;
 };
 
 }  // namespace dda::cdem

@@ -1,0 +1,173 @@
+// Baseline, NOT Paper B's method: the conventional node-to-edge penalty
+// contact on the same CST blocks (CdemOptions::contact =
+// ContactMode::kNodeToEdgePenalty), the contact Paper B argues against
+// (Paper B Sect. 1: contact springs whose stiffness is "difficult to
+// identify", penetration, a step limited by the spring). Issue 23, item 7.
+//
+// Source: the standard node-to-segment penalty method of explicit FE/DEM
+// codes (e.g. Hallquist, Goudreau & Benson 1985, "Sliding interfaces with
+// contact-impact in large-scale Lagrangian computations", CMAME 51; Wriggers,
+// "Computational Contact Mechanics", 2006, Sect. 8.3 on explicit steps):
+//  * detection: at each force evaluation (the step end), a boundary node of
+//    one block lying inside another block's boundary loop (crossing number)
+//    penetrates that block's nearest boundary edge a -> b (CCW, outward unit
+//    normal n = perp_right(b - a) / |b - a|) by the depth
+//      g = -n . (p - a) > 0,   foot xi = (p - a) . (b - a) / |b - a|^2;
+//  * force: the potential W = kn g^2 / 2 per node-edge pair gives
+//      f_node = kn g n,  f_a = -(1 - xi) kn g n,  f_b = -xi kn g n
+//    (dg/da = (1 - xi) n, dg/db = xi n exactly for the distance to the
+//    line), equal and opposite (momentum exact to round-off) and collinear
+//    through the node and its foot (angular momentum exact as well);
+//    frictionless, undamped: conservative while a node keeps its edge;
+//  * time integration: the model's explicit central-difference step (Eq. 1,
+//    kick-drift-kick), no time-of-impact split, no clone node, no
+//    subdivision: the contact starts at the first step end with a node
+//    behind an edge (late by up to one step);
+//  * kn, Pa (N/m per unit thickness per m of penetration): CdemOptions::
+//    penalty_kn, or E / 100 of the stiffest block material (Paper A Sect.
+//    4.1's ratio, so that the baseline uses the kn of Paper A's scenes);
+//  * stability: omega_max^2 of M^-1 (K + K_c) <= omega_mesh^2 + lambda_max
+//    of M^-1/2 K_c M^-1/2 (lambda_max of a sum <= the sum), K_c = sum over
+//    the springs of kn w w^T, w = (n, -(1-xi) n, -xi n) on (node, a, b).
+//    Gershgorin on the springs' part: a row sums kn |w_i| sum_j |w_j| /
+//    sqrt(m_i m_j) <= 2 kn max(1/m) per spring at the node, and a boundary
+//    node carries at most three springs when two blocks touch with meshes
+//    no finer than each other's (its own, and one on each of its two
+//    boundary edges), so the predicted critical step is
+//      dt_c = 2 / sqrt(omega_mesh^2 + 6 kn max_boundary(1/m))
+//    (one spring per node, 2 kn max(1/m), is not enough: face-to-face
+//    contact of the B-7 squares at kn 100 E is unstable at 0.8 x that
+//    step; a node touching three blocks, or an edge pressed by several
+//    nodes of a finer mesh, carries more springs than assumed here);
+//  * domain: a node deeper than half the smallest element length scale
+//    (h_e = sqrt(2 A_e), as in the subdivision) stops the run with a
+//    ContactError: the penalty is far too soft for the impact (or dt too
+//    large) and the node would pass through the edge.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "dda/cdem/model.hpp"
+#include "dda/polygon.hpp"
+#include "geometry.hpp"
+
+namespace dda::cdem {
+
+using namespace detail;
+
+namespace {
+// Ratio kn / E of the default penalty: Paper A Sect. 4.1 (kn 10 MPa for E 1 GPa).
+constexpr double kDefaultKnPerYoung = 1.0 / 100.0;
+// Fraction of the smallest element length scale a node may penetrate before
+// the run stops: beyond half an element the nearest edge is no longer the
+// one crossed and the spring pushes the node on through the block.
+constexpr double kMaxDepthPerElement = 0.5;
+}  // namespace
+
+void Model::setup_penalty() {
+  contact_critical_dt_ = critical_dt_;
+  if (opt_.contact == ContactMode::kTwoScale) return;
+  if (opt_.contact != ContactMode::kNodeToEdgePenalty) throw SceneError("options.contact: unknown contact mode");
+  if (opt_.subdivision)
+    throw SceneError(
+        "options.subdivision: the node-to-edge penalty contact has no local subdivision; set subdivision = false");
+  if (!(std::isfinite(opt_.penalty_kn) && opt_.penalty_kn >= 0.0))
+    throw SceneError("options.penalty_kn: must be >= 0 (Pa; 0 = E / 100)");
+  double young = 0.0;
+  for (const Block& b : blocks_) young = std::max(young, scene_.materials[static_cast<std::size_t>(b.material)].young);
+  penalty_kn_ = opt_.penalty_kn > 0.0 ? opt_.penalty_kn : kDefaultKnPerYoung * young;
+  double h_min = std::numeric_limits<double>::infinity();
+  for (int e : coarse_elems_) {
+    const Elem& el = elem(e);
+    h_min = std::min(h_min, std::sqrt(2.0 * cst({x_[el.n[0]], x_[el.n[1]], x_[el.n[2]]}).area));
+  }
+  penalty_max_depth_ = kMaxDepthPerElement * h_min;
+  double max_inv_m = 0.0;
+  for (int n : bnodes_) max_inv_m = std::max(max_inv_m, inv_m_[n]);
+  const double omega_mesh = std::isfinite(critical_dt_) ? 2.0 / critical_dt_ : 0.0;
+  constexpr double kSpringsPerNode = 3.0;  // its own and one on each adjacent boundary edge (above)
+  const double omega2 = omega_mesh * omega_mesh + kSpringsPerNode * 2.0 * penalty_kn_ * max_inv_m;
+  contact_critical_dt_ = omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
+  if (opt_.check_stability && dt_ > contact_critical_dt_) {
+    std::ostringstream s;
+    s << "dt: time step " << dt_ << " s exceeds the critical step " << contact_critical_dt_
+      << " s of the mesh with the node-to-edge penalty springs (kn " << penalty_kn_ << " Pa; mesh alone "
+      << critical_dt_ << " s): use a smaller dt or a smaller kn";
+    throw SceneError(s.str());
+  }
+}
+
+// One explicit central-difference step (Eq. 1) with the penalty springs as
+// external forces: half-kick, drift, forces at t1 (elements, gravity,
+// damping, add_penalty_forces via compute_coarse_forces), half-kick.
+void Model::penalty_step() {
+  step_t0_ = time_;
+  kick_coarse_first_half();
+  for (int n : coarse_dofs_) x_[n] += dt_ * v_[n];
+  time_ += dt_;
+  forces_and_second_half_kick();
+  ++steps_;
+  check_state();
+}
+
+void Model::add_penalty_forces() {
+  penalty_contacts_.clear();
+  std::vector<Aabb> box(blocks_.size());
+  for (int n : bnodes_) {
+    Aabb& b = box[static_cast<std::size_t>(node_block_[n])];
+    b.lo = {std::min(b.lo.x, x_[n].x), std::min(b.lo.y, x_[n].y)};
+    b.hi = {std::max(b.hi.x, x_[n].x), std::max(b.hi.y, x_[n].y)};
+  }
+  for (int n : bnodes_) {
+    const int bn = node_block_[n];
+    const Vec2 p = x_[n];
+    for (std::size_t ob = 0; ob < blocks_.size(); ++ob) {
+      if (static_cast<int>(ob) == bn || (blocks_[bn].fixed && blocks_[ob].fixed)) continue;
+      const Aabb& o = box[ob];
+      if (p.x < o.lo.x || p.x > o.hi.x || p.y < o.lo.y || p.y > o.hi.y) continue;
+      // inside the boundary loop (crossing number) and the nearest edge
+      bool inside = false;
+      double best = std::numeric_limits<double>::infinity();
+      const BEdge* near = nullptr;
+      for (int ei : block_bedges_[ob]) {
+        const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
+        const Vec2 a = x_[e.a], c = x_[e.b];
+        if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) / (c.y - a.y) * (c.x - a.x)) inside = !inside;
+        const double d = point_segment_distance(p, a, c);
+        if (d < best) {
+          best = d;
+          near = &e;
+        }
+      }
+      if (!inside || near == nullptr) continue;
+      const Vec2 a = x_[near->a], edge = x_[near->b] - a;
+      const double len = length(edge);
+      const Vec2 normal = perp_right(edge) / len;
+      const double depth = -dot(normal, p - a);
+      if (!(depth > 0.0)) continue;
+      if (depth > penalty_max_depth_) {
+        std::ostringstream s;
+        s << "cdem: node-to-edge penalty: node " << n << " of block " << bn << " is " << depth << " m inside block "
+          << ob << " at t = " << time_ << " s (step " << steps_ << "), deeper than half the smallest element ("
+          << penalty_max_depth_ << " m): kn = " << penalty_kn_
+          << " Pa is far too small for this impact (or dt too large); the node would pass through the edge";
+        throw ContactError(s.str(), n, bn, static_cast<int>(ob), steps_, time_, depth);
+      }
+      const double xi = std::clamp(dot(p - a, edge) / (len * len), 0.0, 1.0);
+      const Vec2 f = (penalty_kn_ * depth) * normal;
+      if (inv_m_[n] > 0.0) f_[n] += f;
+      if (inv_m_[near->a] > 0.0) f_[near->a] -= (1.0 - xi) * f;
+      if (inv_m_[near->b] > 0.0) f_[near->b] -= xi * f;
+      penalty_contacts_.push_back({n, near->a, near->b, xi, depth, normal});
+    }
+  }
+}
+
+double Model::penalty_energy() const {
+  double w = 0.0;
+  for (const PenaltyContact& c : penalty_contacts_) w += 0.5 * penalty_kn_ * c.depth * c.depth;
+  return w;
+}
+
+}  // namespace dda::cdem
