@@ -31,9 +31,9 @@
 // target / (duration W)), the plateau (mean contact stress over the middle
 // half of 2 L / c), the block-average velocities after separation, energy
 // (end and largest growth), wall time.
-// Expected: the CST mesh is dispersive, so B / B0 converge to the theory as
-// h^(2/3) (the front's width grows as (h^2 L)^(1/3)); the plateau is right
-// on every mesh. A's blocks have one strain mode and no wave: its contact
+// Expected: the CST mesh is dispersive, so B / B0 converge to the theory
+// slowly (asymptotically as h^(2/3): the front's width grows as
+// (h^2 L)^(1/3)); the plateau is right on every mesh. A's blocks have one strain mode and no wave: its contact
 // lasts as long as kn makes it (17 ms at E / 100), its stress is kn's, not
 // rho c v / 2, but it exchanges the velocities as rigid blocks do.
 //
@@ -234,17 +234,19 @@ int main(int argc, char** argv) try {
     double Run::*err;
     bool (*ok)(const Run&, const Setup&);
     double tol;
+    const char* why;  // the reason for the bound
     const char* control;
   };
   const Quantity quantities[] = {
       {"duration", "contact duration (first touch to the last clone separation) matches 2L/c", &Run::duration_err,
-       duration_ok, kDurationTol, kTestDuration},
+       duration_ok, kDurationTol, "about 3 x B0's error at ny 16, below its 3.2 % at ny 8", kTestDuration},
       {"stress", "mean contact stress (impulse / (duration W)) matches rho c v / 2", &Run::stress_err, stress_ok,
-       kStressTol, kTestStress},
+       kStressTol, "about 2 x B0's error at ny 16, below its 4.4 % at ny 8", kTestStress},
       {"plateau", "contact stress over the middle half of the pulse matches rho c v / 2", &Run::plateau_err,
-       plateau_ok, kPlateauTol, kTestPlateau},
+       plateau_ok, kPlateauTol, "B0's plateau is within 0.6 % on every mesh: 2 % leaves room for the step-wise force",
+       kTestPlateau},
       {"exchange", "the bars exchange their velocities (block averages after separation)", &Run::exchange_err,
-       exchange_ok, kExchangeTol, kTestExchange},
+       exchange_ok, kExchangeTol, "about 2.5 x B0's error at ny 16, about its error at ny 4", kTestExchange},
   };
   for (const Quantity& q : quantities) {
     for (const auto* pr : {&b0, &b}) {
@@ -255,8 +257,7 @@ int main(int argc, char** argv) try {
                      model + ": " + q.what + " on the finest mesh" + run_note,
                      theory,
                      "relative error " + mesh_text(v, q.err) + "; " + finest_text(f),
-                     "|error| < " + pct(q.tol) + " on the finest mesh (about 2-3 x B0's error there; the error "
-                     "falls as h^(2/3))",
+                     "|error| < " + pct(q.tol) + " on the finest mesh (" + q.why + ")",
                      q.ok(f, s)};
       c.key = model + "-" + q.key;
       c.control = repro::control_test(q.control);
@@ -294,8 +295,8 @@ int main(int argc, char** argv) try {
     repro::Claim c{"B-8", model + ": the energy never grows above its initial value" + run_note,
                    "elastic impact: energy kept; the clone's projection (Eq. 5) only removes it",
                    "largest (E - E0) / E0 over every step of the " + std::to_string(v.size()) +
-                       " mesh and dt runs: " + format_short(worst, 3) + "; energy lost by the finest completed mesh: " +
-                       pct(-lost_finest),
+                       " mesh and dt runs: " + format_short(worst, 3) + "; E_end / E0 - 1 of the finest completed mesh: " +
+                       pct(lost_finest),
                    "(E - E0) / E0 < " + format_short(kEnergyGrowthTol) + " at every step of every run",
                    energy_never_grows(v)};
     c.key = model + "-energy";
@@ -313,7 +314,7 @@ int main(int argc, char** argv) try {
     for (const Run& r : fine) ny_list += (ny_list.empty() ? "" : ", ") + std::to_string(r.ny);
     claims.push_back(repro::measurement(
         "B-8", "B0: observed order of convergence with the mesh (dt with h)" + run_note,
-        "a dispersive second-order mesh: front width ~ (h^2 L)^(1/3), so errors ~ h^(2/3)",
+        "a dispersive second-order mesh: front width ~ (h^2 L)^(1/3), so errors ~ h^(2/3) asymptotically",
         "least-squares slope of log|error| on log h over ny " + ny_list + ": duration " +
             format_short(observed_order(fine, &Run::duration_err), 3) + ", mean stress " +
             format_short(observed_order(fine, &Run::stress_err), 3) + ", exchange " +
@@ -346,7 +347,7 @@ int main(int argc, char** argv) try {
         if (r.model == model && r.ny == kDtSweepNy) v.push_back(r);
       t += (t.empty() ? "" : "; ") + model + " ny " + std::to_string(kDtSweepNy) + ":";
       for (const Run& r : v)
-        t += " dt " + format_short(r.dt, 3) + " s: " +
+        t += std::string(&r == &v.front() ? "" : ";") + " dt " + format_short(r.dt, 3) + " s: " +
              (r.ok() ? "T " + pct(r.duration_err) + ", stress " + pct(r.stress_err) + ", exchange " +
                            pct(r.exchange_err) + ", " + format_short(r.wall, 2) + " s run"
                      : "stopped");
