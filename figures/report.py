@@ -87,6 +87,10 @@ DRIVERS = {
     "B_7_contact_comparison": ("Paper A vs B", "Penalty (A) against two-scale (B) contact on the same collisions",
                                "A comparison neither paper makes: touch time, momentum, energy and contact duration.",
                                ["figB_comparison.png"]),
+    "B_8_bar_waves": ("Paper A vs B", "Waves against theory: two elastic bars head on (issue 23, item 5)",
+                      "Not in the papers: 1D bar theory (contact 2L/c, stress rho c v / 2, velocities exchanged) "
+                      "against CDEM with and without subdivision and Paper A's 6-DOF blocks.",
+                      ["figB_bar_waves.png"]),
     "S1_work_precision": ("Supplementary", "S1: work precision, error against run time",
                           "Not in the papers: convergence orders and conservation of the integration.",
                           ["figS1a_two_squares.png", "figS1b_incline.png", "figS1c_resting_block.png",

@@ -179,6 +179,17 @@ $(OUT)/figures/figB_comparison.png: $(OUT)/data/B_7_contact_comparison/.done fig
 FIGS += $(OUT)/figures/figB_comparison.png
 $(OUT)/report.md: $(OUT)/data/B_7_contact_comparison/.done
 
+# --- Issue 23 item 5: two elastic bars against 1D wave theory (B, B0, A) ------
+$(OUT)/data/B_8_bar_waves/.done: $(BIN)/B_8_bar_waves
+	$(BIN)/B_8_bar_waves --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/figB_bar_waves.png: $(OUT)/data/B_8_bar_waves/.done figures/figB_bar_waves.py figures/cdem_common.py figures/potential_common.py
+	$(PY) figures/figB_bar_waves.py $(OUT)/data/B_8_bar_waves $@
+
+FIGS += $(OUT)/figures/figB_bar_waves.png
+$(OUT)/report.md: $(OUT)/data/B_8_bar_waves/.done
+
 # --- Paper A Sect. 6.1: collapse of a jointed rock column, Fig. 20 ----------
 # ~75,000 steps per case (two cases): the longest driver; it prints progress.
 $(OUT)/data/collapse/.done: $(BIN)/collapse

@@ -78,4 +78,39 @@ TriMesh mesh_convex_polygon(const std::vector<Vec2>& outline, int divisions) {
   return mesh;
 }
 
+TriMesh mesh_rectangle(Vec2 lo, double lx, double ly, int nx, int ny) {
+  if (nx < 1 || ny < 1) throw std::invalid_argument("mesh_rectangle: nx and ny must be >= 1");
+  if (!(lx > 0.0) || !(ly > 0.0)) throw std::invalid_argument("mesh_rectangle: lx and ly must be positive");
+  TriMesh mesh;
+  // Grid point (i, j) -> node id: the four corners first (CCW from lo).
+  std::vector<int> id(static_cast<std::size_t>((nx + 1) * (ny + 1)), -1);
+  auto at = [&](int i, int j) -> int& { return id[static_cast<std::size_t>(j * (nx + 1) + i)]; };
+  auto point = [&](int i, int j) {
+    return Vec2{lo.x + lx * static_cast<double>(i) / nx, lo.y + ly * static_cast<double>(j) / ny};
+  };
+  const int corner[4][2] = {{0, 0}, {nx, 0}, {nx, ny}, {0, ny}};
+  for (const auto& c : corner) {
+    at(c[0], c[1]) = static_cast<int>(mesh.nodes.size());
+    mesh.nodes.push_back(point(c[0], c[1]));
+  }
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      if (at(i, j) < 0) {
+        at(i, j) = static_cast<int>(mesh.nodes.size());
+        mesh.nodes.push_back(point(i, j));
+      }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if ((i + j) % 2 == 0) {  // diagonal a-c
+        mesh.triangles.push_back({a, b, c});
+        mesh.triangles.push_back({a, c, d});
+      } else {  // diagonal b-d
+        mesh.triangles.push_back({a, b, d});
+        mesh.triangles.push_back({b, c, d});
+      }
+    }
+  return mesh;
+}
+
 }  // namespace dda::cdem

@@ -97,7 +97,21 @@ void Model::build(const CdemScene& scene) {
     if (cb.material < 0 || cb.material >= static_cast<int>(scene.materials.size()))
       scene_fail(f + ".material", "no such material");
     if (!is_finite(cb.velocity)) scene_fail(f + ".velocity", "must be finite");
-    const TriMesh mesh = mesh_convex_polygon(cb.outline, cb.divisions);
+    const bool own_mesh = !cb.mesh.triangles.empty();
+    if (own_mesh) {
+      const std::size_t nv = cb.outline.size();
+      if (cb.mesh.nodes.size() < nv) scene_fail(f + ".mesh", "has fewer nodes than the outline");
+      for (std::size_t i = 0; i < nv; ++i)
+        if (!(cb.mesh.nodes[i] == cb.outline[i]))
+          scene_fail(f + ".mesh.nodes[" + std::to_string(i) + "]", "must be the outline vertex " + std::to_string(i));
+      for (const auto& t : cb.mesh.triangles)
+        for (int q : t)
+          if (q < 0 || q >= static_cast<int>(cb.mesh.nodes.size()))
+            scene_fail(f + ".mesh.triangles", "node index out of range");
+      for (const Vec2& p : cb.mesh.nodes)
+        if (!is_finite(p)) scene_fail(f + ".mesh.nodes", "must be finite");
+    }
+    const TriMesh mesh = own_mesh ? cb.mesh : mesh_convex_polygon(cb.outline, cb.divisions);
     Block blk;
     blk.material = cb.material;
     blk.fixed = cb.fixed;
@@ -146,8 +160,10 @@ void Model::build(const CdemScene& scene) {
       info.hi = std::max(a, b);
       if (info.elems[0] < 0)
         info.elems[0] = ei;
-      else
+      else if (info.elems[1] < 0)
         info.elems[1] = ei;
+      else
+        scene_fail("blocks[" + std::to_string(e.block) + "].mesh", "an edge is shared by more than two triangles");
     }
   }
   for (int ei = 0; ei < static_cast<int>(elems_.size()); ++ei) {

@@ -222,3 +222,16 @@ TEST_CASE("scene errors name the field", "[cdem][scene]") {
   s.options.tolerance = 0.0;
   CHECK_THROWS_WITH(Model(s), Catch::Contains("tolerance"));
 }
+
+TEST_CASE("a block's own mesh: used as given, checked against its outline", "[cdem][scene]") {
+  CdemScene s = squares(0.5, {1.0, 0.0}, true);
+  for (CdemBlock& b : s.blocks) b.mesh = mesh_rectangle(b.outline.front(), 1.0, 1.0, 3, 3);
+  const Model m(s);
+  CHECK(m.node_count() == 2 * 16);
+  CHECK(m.block_mass(0) == Approx(2000.0).epsilon(1e-12));
+  s.blocks[1].mesh.nodes[0].x += 0.1;  // not the outline's first vertex
+  CHECK_THROWS_WITH(Model(s), Catch::Contains("blocks[1].mesh.nodes[0]"));
+  s.blocks[1].mesh = mesh_rectangle(s.blocks[1].outline.front(), 1.0, 1.0, 3, 3);
+  s.blocks[1].mesh.triangles.push_back(s.blocks[1].mesh.triangles.front());  // an edge in three triangles
+  CHECK_THROWS_WITH(Model(s), Catch::Contains("blocks[1].mesh"));
+}

@@ -49,4 +49,14 @@ std::vector<std::array<int, 3>> lattice_triangles(int k);
 // Throws std::invalid_argument for fewer than 3 points or divisions < 1.
 TriMesh mesh_convex_polygon(const std::vector<Vec2>& outline, int divisions);
 
+// A structured mesh of the rectangle [lo.x, lo.x + lx] x [lo.y, lo.y + ly]:
+// nx x ny cells, each cut into two triangles along a diagonal that
+// alternates from cell to cell (a checkerboard, so that the mesh has no
+// preferred shear direction). Nodes 0-3 are the corners, counter-clockwise
+// from lo (the outline of a CdemBlock with this mesh); the other nodes
+// follow. For slender bodies (bars) whose fan mesh of mesh_convex_polygon
+// would be long thin spokes. Throws std::invalid_argument for nx or ny < 1
+// or a non-positive size.
+TriMesh mesh_rectangle(Vec2 lo, double lx, double ly, int nx, int ny);
+
 }  // namespace dda::cdem

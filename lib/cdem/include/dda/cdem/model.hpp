@@ -64,6 +64,7 @@
 #include <vector>
 
 #include "dda/block.hpp"
+#include "dda/cdem/mesh.hpp"
 #include "dda/scene.hpp"
 #include "dda/simulation.hpp"
 #include "dda/vec2.hpp"
@@ -145,6 +146,11 @@ struct CdemOptions {
 struct CdemBlock {
   std::vector<Vec2> outline;  // convex, counter-clockwise
   int divisions = 1;          // mesh_convex_polygon divisions
+  // Optional own mesh (e.g. mesh_rectangle): used instead of
+  // mesh_convex_polygon(outline, divisions) when it has triangles. Its first
+  // outline.size() nodes must be the outline's vertices, in order; its
+  // triangles CCW and conforming.
+  TriMesh mesh;
   Vec2 velocity{};            // initial velocity of every node, m/s
   bool fixed = false;         // nodes never move (infinite mass)
   int material = 0;           // index into CdemScene::materials
