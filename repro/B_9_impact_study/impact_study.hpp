@@ -46,9 +46,9 @@ using dda::Vec2;
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kSide = 1.0;  // m, side L of both squares (the test_oblique set-up)
 inline constexpr int kDivisions = 2;  // mesh divisions per square: 16 CST elements, face midpoints are nodes
-// Time step, s: 0.5 of the 2-division square's critical step with Paper B's
-// material (measured 4.6e-5 s), the ratio dt / dt_crit ~ 0.7 of Paper B's
-// own example (5e-4 against 7.4e-4 s) lowered for the patch sub-steps.
+// Time step, s: 0.28 of the 2-division squares' critical step with Paper
+// B's material (7.1e-5 s, Model::critical_dt), ~25 steps in the contact
+// (2 L / c = 0.52 ms) and v dt = 6e-4 m < d_tol at 30 m/s.
 inline constexpr double kDt = 2e-5;
 inline constexpr double kApproachSteps = 2.5;  // gap = v_n kApproachSteps dt: the touch falls inside step 3
 inline constexpr double kWindowWaves = 8.0;    // run length after the touch, in wave times 2 L / c (~0.52 ms)
