@@ -498,7 +498,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
                       "(Eq. 4, 'no slipping occurs' in the touch step): it takes the points' whole relative "
                       "velocity, tangential included, whatever phi is; only afterwards does the Mohr-Coulomb limit "
                       "(Eqs. 7-10) cap the clone's shear force. The formation impulses are not limited by mu J_n "
-                      "(at mu = 0 J_t is not 0); cells where the failing ones are the stopped runs aside");
+                      "(at mu = 0 J_t is not 0). A stopped run fails this row too (see the pass-through row)");
 
   add("rigid-law", "the tangential impulse matches the rigid-body stick/slide law in every cell",
       "rigid-body Coulomb impact (impact_study.hpp): stick if mu J_n >= m_t v_t0 (J_t = m_t v_t0, m_t = m/5 with the "
