@@ -447,7 +447,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
       tally(cells, separates,
             [](const CellResult& r) { return stopped_or(r, r.separated ? "separated" : "still tied or closing"); }),
       "last clone released at " +
-          stats(cells, [](const CellResult& r) { return r.t_sep * 1e3; }, [](const CellResult&) { return true; }) +
+          stats(cells, [](const CellResult& r) { return r.t_sep * 1e3; }, [](const CellResult& r) { return r.t_sep >= 0.0; }) +
           " ms",
       "per cell: at the end (8 wave times 2L/c after the touch) no clone is left and B moves away from A in x "
       "(friction without cohesion never holds: Eq. 6 with sigma_t = 0)",
