@@ -66,7 +66,7 @@ sanitize: deps
 # The longest drivers come first so that the $(JOBS) parallel runs end together.
 # ---------------------------------------------------------------------------
 DRIVERS := collapse toppling_slumping work_precision stability_maps extreme_cases \
-           segmentation B_7_contact_comparison B_8_bar_waves extreme_geometry potential_fields \
+           segmentation B_7_contact_comparison B_8_bar_waves B_9_impact_study extreme_geometry potential_fields \
            previous_potential two_squares symmetric_stack incline bouncing_block \
            small_angles small_edges B_6_two_prisms penetration_map contact_statements \
            geometry_claims

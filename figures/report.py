@@ -91,6 +91,10 @@ DRIVERS = {
                       "Not in the papers: 1D bar theory (contact 2L/c, stress rho c v / 2, velocities exchanged) "
                       "against CDEM with and without subdivision and Paper A's 6-DOF blocks.",
                       ["figB_bar_waves.png"]),
+    "B_9_impact_study": ("Paper B", "Issue 23 item 2: impact study of the two-scale contact",
+                         "Not in the paper: oblique impacts of two squares over angle, speed, friction and "
+                         "subdivision, against no pass-through, energy, Eq. 5 and the rigid-body Coulomb impact law.",
+                         ["figB_impact_study.png"]),
     "S1_work_precision": ("Supplementary", "S1: work precision, error against run time",
                           "Not in the papers: convergence orders and conservation of the integration.",
                           ["figS1a_two_squares.png", "figS1b_incline.png", "figS1c_resting_block.png",

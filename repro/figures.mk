@@ -190,6 +190,17 @@ $(OUT)/figures/figB_bar_waves.png: $(OUT)/data/B_8_bar_waves/.done figures/figB_
 FIGS += $(OUT)/figures/figB_bar_waves.png
 $(OUT)/report.md: $(OUT)/data/B_8_bar_waves/.done
 
+# --- Issue 23 item 2: impact study of the two-scale contact (210 oblique impacts) ---
+$(OUT)/data/B_9_impact_study/.done: $(BIN)/B_9_impact_study
+	$(BIN)/B_9_impact_study --out $(OUT)
+	@touch $@
+
+$(OUT)/figures/figB_impact_study.png: $(OUT)/data/B_9_impact_study/.done figures/figB_impact_study.py figures/cdem_common.py figures/potential_common.py
+	$(PY) figures/figB_impact_study.py $(OUT)/data/B_9_impact_study $@
+
+FIGS += $(OUT)/figures/figB_impact_study.png
+$(OUT)/report.md: $(OUT)/data/B_9_impact_study/.done
+
 # --- Paper A Sect. 6.1: collapse of a jointed rock column, Fig. 20 ----------
 # ~75,000 steps per case (two cases): the longest driver; it prints progress.
 $(OUT)/data/collapse/.done: $(BIN)/collapse

@@ -1,0 +1,148 @@
+// Negative controls of the B-9 impact study (issue 23 item 2; issue 21,
+// item 2): each test applies the driver's own per-cell criterion (from
+// repro/B_9_impact_study/impact_study.hpp) to a deliberately wrong cell
+// (a made-up record or a real run with a broken setting) and asserts FAIL,
+// and to a good cell and asserts PASS; the rows name the tests through the
+// shared test-name constants. Part of repro_controls_tests (the main is in
+// test_controls.cpp).
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "repro/B_9_impact_study/impact_study.hpp"
+#include "repro/common/claims.hpp"
+
+namespace {
+
+using impact::Cell;
+using impact::CellResult;
+
+// A finished, well-behaved cell (30 deg, 5 m/s, mu 0.3, no subdivision).
+const CellResult& good_cell() {
+  static const CellResult r = impact::run_cell(Cell{30.0, 5.0, 0.3, false});
+  return r;
+}
+
+// The row with key `key` names `test` as its control.
+void names_test(const std::string& key, const char* test) {
+  for (const repro::Claim& c : impact::rows({good_cell()}))
+    if (c.key == key) {
+      CHECK(c.kind == repro::Kind::kCheck);
+      CHECK(c.control == repro::control_test(test));
+      return;
+    }
+  FAIL("B-9: no row with key " << key);
+}
+
+}  // namespace
+
+TEST_CASE(impact::kTestPassThrough, "[controls][B-9]") {
+  names_test("no-pass-through", impact::kTestPassThrough);
+  REQUIRE(good_cell().ok);
+  CHECK(impact::no_pass_through(good_cell()));
+  CellResult deep = good_cell();
+  deep.max_depth = 2.0 * deep.tol;  // a node 2 d_tol inside the other block
+  CHECK_FALSE(impact::no_pass_through(deep));
+  CellResult crossed = good_cell();
+  crossed.min_centre_dx = 0.4 * impact::kSide;  // the centres closer than L / 2
+  CHECK_FALSE(impact::no_pass_through(crossed));
+  // A real run whose block A starts 2 d_tol inside B: the solver stops it
+  // (ContactError), the cell records the message.
+  const Cell c{0.0, 1.0, 0.0, false};
+  dda::cdem::CdemScene s = impact::scene_of(c);
+  const double depth = 2.0 * s.options.tolerance;
+  s.blocks[0].outline = impact::square(-impact::kSide + depth, -0.5 * impact::kSide);
+  const CellResult r = impact::run_cell(c, impact::kDt, &s);
+  CHECK_FALSE(r.ok);
+  CHECK_THAT(r.outcome, Catch::Contains("inside block"));
+  CHECK_FALSE(impact::no_pass_through(r));
+}
+
+TEST_CASE(impact::kTestEnergy, "[controls][B-9]") {
+  names_test("kinetic-energy", impact::kTestEnergy);
+  CHECK(impact::energy_never_grows(good_cell()));
+  CHECK(impact::series_never_grows({10.0, 9.0, 9.5, 10.0}));
+  CHECK_FALSE(impact::series_never_grows({10.0, 9.0, 10.001}));
+  CellResult grown = good_cell();
+  grown.ke_growth = 1e-6;
+  CHECK_FALSE(impact::energy_never_grows(grown));
+  // A real run at 1.5 times the critical step (the stability check off):
+  // the explicit integration grows (or stops on a non-finite state).
+  const Cell c{30.0, 5.0, 0.3, false};
+  const double dt = 1.5 * dda::cdem::Model(impact::scene_of(c)).critical_dt();
+  dda::cdem::CdemScene s = impact::scene_of(c, dt);
+  s.options.check_stability = false;
+  const CellResult r = impact::run_cell(c, dt, &s);
+  INFO("outcome " << r.outcome << ", max KE/KE0 - 1 = " << r.ke_growth);
+  CHECK_FALSE(impact::energy_never_grows(r));
+}
+
+TEST_CASE(impact::kTestSeparation, "[controls][B-9]") {
+  names_test("separation", impact::kTestSeparation);
+  CHECK(impact::separates(good_cell()));
+  // Clones with a tensile strength and cohesion of 1 TPa never separate.
+  const Cell c{30.0, 5.0, 0.3, false};
+  dda::cdem::CdemScene s = impact::scene_of(c);
+  s.options.strength.tensile = 1e12;
+  s.options.strength.cohesion = 1e12;
+  const CellResult r = impact::run_cell(c, impact::kDt, &s);
+  INFO("outcome " << r.outcome);
+  CHECK_FALSE(impact::separates(r));
+}
+
+TEST_CASE(impact::kTestTouchLoss, "[controls][B-9]") {
+  names_test("touch-loss-eq5", impact::kTestTouchLoss);
+  CellResult r = good_cell();
+  r.touch_loss = r.touch_loss_eq5;  // measured = Eq. 5
+  CHECK(impact::touch_loss_within_eq5(r));
+  r.touch_loss = 1.1 * r.touch_loss_eq5;  // 10 % above Eq. 5
+  CHECK_FALSE(impact::touch_loss_within_eq5(r));
+  r.touch_loss = -0.01 * r.ke0;  // a 'loss' that adds energy
+  CHECK_FALSE(impact::touch_loss_within_eq5(r));
+}
+
+TEST_CASE(impact::kTestTotalLoss, "[controls][B-9]") {
+  names_test("total-loss-eq5", impact::kTestTotalLoss);
+  CHECK(impact::total_loss_within_block_eq5(good_cell()));
+  // Mass damping alpha = 2000 1/s damps the blocks' rigid motion too: more
+  // than the relative kinetic energy is lost over the window.
+  const Cell c{30.0, 5.0, 0.3, false};
+  dda::cdem::CdemScene s = impact::scene_of(c);
+  s.options.mass_damping = 2000.0;
+  const CellResult r = impact::run_cell(c, impact::kDt, &s);
+  INFO("outcome " << r.outcome << ", loss / block Eq. 5 = " << r.total_loss / r.block_eq5);
+  CHECK(r.ok);
+  CHECK_FALSE(impact::total_loss_within_block_eq5(r));
+}
+
+TEST_CASE(impact::kTestCoulomb, "[controls][B-9]") {
+  names_test("coulomb", impact::kTestCoulomb);
+  CellResult r = good_cell();
+  r.jn = 1.0;
+  r.jt = r.cell.mu;  // at the limit
+  CHECK(impact::obeys_coulomb(r));
+  r.jt = r.cell.mu + 0.05;  // 5 % of J_n above the limit
+  CHECK_FALSE(impact::obeys_coulomb(r));
+  r.jt = -(r.cell.mu + 0.05);
+  CHECK_FALSE(impact::obeys_coulomb(r));
+}
+
+TEST_CASE(impact::kTestRigidLaw, "[controls][B-9]") {
+  names_test("rigid-law", impact::kTestRigidLaw);
+  // The law: stick when mu J_n covers m_t v_t0, else slide at mu J_n.
+  const double mt = impact::tangential_mass();
+  CHECK(mt == Approx(impact::block_mass() / 5.0).epsilon(1e-12));
+  bool sticks = false;
+  CHECK(impact::rigid_law_jt(0.6, 1000.0, 1.0, &sticks) == Approx(mt * 1.0));
+  CHECK(sticks);
+  CHECK(impact::rigid_law_jt(0.3, 1000.0, 10.0, &sticks) == Approx(300.0));
+  CHECK_FALSE(sticks);
+  CellResult r = good_cell();
+  r.jn = 1000.0;
+  r.jt_law = impact::rigid_law_jt(r.cell.mu, r.jn, r.slip0);
+  r.jt = r.jt_law;
+  CHECK(impact::matches_rigid_law(r));
+  r.jt = 0.5 * r.jt_law;  // half the law's impulse (> 5 % of J_n off)
+  CHECK_FALSE(impact::matches_rigid_law(r));
+}
