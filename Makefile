@@ -104,15 +104,25 @@ fuzz: build
 	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
 	$(BIN)/io_scene_fuzz --cases $(SCENE_FUZZ_CASES) --cli-runs $(SCENE_FUZZ_CLI_RUNS) --seed random
 
-# Geometry kernel per polygon pair (Google Benchmark), then the Sect. 6.1
-# collapse's steps per second and the block-count scaling table (1-2 min).
+# Geometry kernel per polygon pair (Google Benchmark) and our pair cost
+# against Box2D 2.4's, then the Sect. 6.1 collapse's steps per second with
+# 1 and 2 threads (projected to the full 75,000-step run; BENCH_COLLAPSE_STEPS=74400
+# times the whole run after its 600 warm-up steps), what a scene skips, and
+# the block-count scaling table to BENCH_MAX_BLOCKS blocks (10^4: ~3-5 min in
+# all on an idle 2-core machine; BENCH_MAX_BLOCKS=100000 adds the 3 x 10^4
+# and 10^5 rows, ~5 more minutes). Prints its own run time at the end.
+BENCH_MAX_BLOCKS     ?= 10000
+BENCH_COLLAPSE_STEPS ?= 5000
 bench: build
-	$(BIN)/bench_geometry
-	$(BIN)/bench_pair_cost
-	$(BIN)/bench_collapse
-	@mkdir -p $(OUT)/bench
-	$(BIN)/bench_collapse --scaling --csv $(OUT)/bench/scaling.csv
-	$(PY) figures/bench_scaling.py $(OUT)/bench/scaling.csv $(OUT)/bench/scaling.png
+	@start=$$(date +%s); \
+	$(BIN)/bench_geometry && \
+	$(BIN)/bench_pair_cost && \
+	$(BIN)/bench_collapse --steps $(BENCH_COLLAPSE_STEPS) && \
+	$(BIN)/bench_collapse --skips && \
+	mkdir -p $(OUT)/bench && \
+	$(BIN)/bench_collapse --scaling --max-blocks $(BENCH_MAX_BLOCKS) --csv $(OUT)/bench/scaling.csv && \
+	$(PY) figures/bench_scaling.py $(OUT)/bench/scaling.csv $(OUT)/bench/scaling.png && \
+	echo "== make bench: $$(( $$(date +%s) - start )) s (figure $(OUT)/bench/scaling.png)"
 
 # 'repro' builds the tools, then a sub-make rebuilds only the figures whose
 # driver binary, data or script changed (one rule per figure below).

@@ -151,6 +151,9 @@ struct RunStats {
   double touching_per_step = 0.0;
 
   double us_per_step() const { return 1e6 * wall_s / static_cast<double>(steps); }
+  // CPU time per step (all threads): the work, robust to other work sharing
+  // the cores (which stretches the wall time, not the CPU time).
+  double cpu_us_per_step() const { return 1e6 * cpu_s / static_cast<double>(steps); }
   double ns_per_block_step() const { return 1e3 * us_per_step() / blocks; }
   double ns_per_candidate() const { return 1e3 * us_per_step() / candidates_per_step; }
   double ns_per_touching() const { return 1e3 * us_per_step() / touching_per_step; }
@@ -226,8 +229,13 @@ std::int64_t x_overlap_pairs(const dda::Simulation& sim) {
 // One run per thread count on the same scene; `same` says whether all final
 // states equal the first one bit for bit.
 // Heap bytes in use (glibc's mallinfo2): what the process has allocated and
-// not freed, independent of pages the allocator keeps for reuse.
-double heap_bytes() { return static_cast<double>(mallinfo2().uordblks); }
+// not freed, independent of pages the allocator keeps for reuse; the chunks
+// glibc maps on their own (hblkhd: allocations above its mmap threshold, the
+// big per-block arrays of a large scene) count too.
+double heap_bytes() {
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd);
+}
 
 struct ThreadRuns {
   std::vector<RunStats> runs;
@@ -410,12 +418,14 @@ ScalingRow scaling_row(const dda::paper::Collapse& base, Shape shape, int target
   return row;
 }
 
-// Least-squares slope of log(us/step) against log(blocks) for one thread count.
-double growth_exponent(const std::vector<ScalingRow>& rows, std::size_t run) {
+// Least-squares slope of log(cost per step) against log(blocks) for one
+// thread count; the cost is the wall time or (cpu) the CPU time per step.
+double growth_exponent(const std::vector<ScalingRow>& rows, std::size_t run, bool cpu) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   const double n = static_cast<double>(rows.size());
   for (const ScalingRow& r : rows) {
-    const double x = std::log(r.t.runs[run].blocks), y = std::log(r.t.runs[run].us_per_step());
+    const RunStats& s = r.t.runs[run];
+    const double x = std::log(s.blocks), y = std::log(cpu ? s.cpu_us_per_step() : s.us_per_step());
     sx += x;
     sy += y;
     sxx += x * x;
@@ -430,14 +440,14 @@ void write_csv(const std::string& path, const std::vector<ScalingRow>& rows, Sha
     std::ofstream f(tmp);
     if (!f) throw std::runtime_error("cannot write " + tmp);
     f << "shape,blocks,width_m,height_m,threads,warmup_steps,steps,wall_s,candidates_per_step,touching_per_step,"
-         "x_overlap_pairs,cpu_per_wall,us_per_step,ns_per_block_step,ns_per_candidate,ns_per_touching,identical_1_2,"
+         "x_overlap_pairs,cpu_per_wall,us_per_step,cpu_us_per_step,ns_per_block_step,ns_per_candidate,ns_per_touching,identical_1_2,"
          "bytes_per_block,growth_bytes_per_touching\n";
     f.precision(9);
     for (const ScalingRow& r : rows)
       for (const RunStats& s : r.t.runs)
         f << (shape == Shape::kWide ? "wide" : "column") << ',' << s.blocks << ',' << r.width << ',' << r.height
           << ',' << s.threads << ',' << r.warmup << ',' << s.steps << ',' << s.wall_s << ',' << s.candidates_per_step << ','
-          << s.touching_per_step << ',' << r.t.x_pairs << ',' << s.cpu_per_wall() << ',' << s.us_per_step() << ',' << s.ns_per_block_step()
+          << s.touching_per_step << ',' << r.t.x_pairs << ',' << s.cpu_per_wall() << ',' << s.us_per_step() << ',' << s.cpu_us_per_step() << ',' << s.ns_per_block_step()
           << ',' << s.ns_per_candidate() << ',' << s.ns_per_touching() << ',' << (r.t.same ? 1 : 0) << ','
           << r.t.bytes_per_block << ',' << r.t.growth_per_touching << '\n';
     if (!f) throw std::runtime_error("error writing " + tmp);
@@ -454,19 +464,19 @@ int run_scaling(const Options& o) {
               kMinScalingSteps, kMaxScalingSteps, load_note().c_str());
   std::printf("   sizeof(dda::Polygon) = %zu bytes (capacity %d vertices and normals)\n", sizeof(dda::Polygon),
               dda::kMaxVertices);
-  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %11s %8s %8s %5s %8s %8s\n", "blocks", "region m", "thr", "steps",
-              "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "ns/blk-step", "ns/cand", "ns/touch",
-              "same", "kB/block", "B/touch");
+  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %9s %11s %8s %8s %5s %8s %8s\n", "blocks", "region m", "thr",
+              "steps", "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "cpu us", "ns/blk-step", "ns/cand",
+              "ns/touch", "same", "kB/block", "B/touch");
   std::vector<ScalingRow> rows;
   for (int target : kTargetBlocks) {
     if (target > o.max_blocks) continue;
     rows.push_back(scaling_row(base, o.shape, target, o.warmup));
     const ScalingRow& r = rows.back();
     for (const RunStats& s : r.t.runs)
-      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %11.1f %8.1f %8.1f %5s %8.2f %8.0f\n",
+      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %9.1f %11.1f %8.1f %8.1f %5s %8.2f %8.0f\n",
                   s.blocks, r.width, r.height, s.threads, static_cast<long long>(s.steps), s.cpu_per_wall(),
                   s.candidates_per_step, s.touching_per_step, static_cast<long long>(r.t.x_pairs), s.us_per_step(),
-                  s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(), r.t.same ? "yes" : "NO",
+                  s.cpu_us_per_step(), s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(), r.t.same ? "yes" : "NO",
                   r.t.bytes_per_block / 1e3, r.t.growth_per_touching);
     std::fflush(stdout);
   }
@@ -474,8 +484,9 @@ int run_scaling(const Options& o) {
   for (const ScalingRow& r : rows) all_same = all_same && r.t.same;
   if (rows.size() >= 2)
     for (std::size_t k = 0; k < std::size(kThreadCounts); ++k)
-      std::printf("   %d thread(s): us/step ~ blocks^%.2f (least squares over the rows)\n", kThreadCounts[k],
-                  growth_exponent(rows, k));
+      std::printf("   %d thread(s): wall us/step ~ blocks^%.2f, CPU us/step ~ blocks^%.2f (least squares over the rows;"
+                  " the CPU fit is the one to trust when cpu/wall < threads: the cores were shared)\n",
+                  kThreadCounts[k], growth_exponent(rows, k, false), growth_exponent(rows, k, true));
   std::printf("   x-overlap: pairs whose x-intervals overlap at the end (one x sort-and-sweep pass visits them);"
               " same: 1- and 2-thread final states bit-identical;\n   kB/block: heap per block of the constructed "
               "simulation; B/touch: heap growth over the run per touching pair at its end (mallinfo2)\n");
