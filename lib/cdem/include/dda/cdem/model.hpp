@@ -47,9 +47,16 @@
 // or, with the re-touch delayed, was passed through); a released node may
 // touch again from the next patch step (coarse level: later in the same
 // step); every boundary node is checked at each interval's start against
-// the other blocks at any depth; touches inside a patch step split that step
-// for all patch nodes (the coarse step is split for the touching nodes only,
-// as in Sect. 3); one k per run.
+// the other blocks at any depth; touches inside a patch step split that
+// step's drift for all patch nodes (all drift to the touch time, the touch is
+// processed, the drift goes on), while the kicks stay on the uniform grid
+// t0 + j dt/n (cutting the kick-drift-kick step itself at each touch makes
+// the steps irregular, and leapfrog with irregular steps pumps energy into
+// the patch's top modes); the coarse step is split for the touching nodes
+// only, as in Sect. 3; a sliding clone's shear force (Eq. 10) is capped at
+// the force that stops the relative sliding within the next kick (the limit
+// alone, with the sign of the last sliding velocity, reverses the sliding
+// when its impulse is large and does positive work); one k per run.
 //
 // The library does no I/O. Errors: dda::SceneError for a bad scene (also
 // when dt exceeds the mesh's critical step), dda::SimulationError for a run
