@@ -40,8 +40,9 @@
 // the tie is node-to-node or node-to-edge-point (the point shares its mass
 // and force with the edge's nodes by their linear weights); a clone whose
 // shear reaches the limit slides (Eq. 10: normal velocity tied, shear force
-// at the limit against the sliding, the tied point following the node along
-// the target's face) instead of being removed as Sect. 4.2's last sentence
+// the one the tie demands to stop the slip within the step, reduced to the
+// limit with its sign, so friction never reverses a slip; the tied point
+// following the node along the target's face) instead of being removed as Sect. 4.2's last sentence
 // says: removed, the pressed node touches again at once, and each re-touch's
 // inelastic impact takes the tangential velocity (a frictionless face stuck
 // or, with the re-touch delayed, was passed through); a released node may
@@ -378,11 +379,10 @@ class Model {
     double area = 0.0;     // A_c
     bool fine = false;
     // Sliding (Eq. 10): the shear limit was reached; from then on only the
-    // normal velocity is tied, the shear force is the limit with the sign
-    // slip_sign, and the tied point follows the node along the target's
-    // boundary.
+    // normal velocity is tied, the shear force is the one the tie demands
+    // (stopping the slip) capped at the limit with its sign, and the tied
+    // point follows the node along the target's boundary.
     bool sliding = false;
-    double slip_sign = 0.0;
     Vec2 lambda{};
   };
   struct Touch {     // a detected touch, not yet processed
