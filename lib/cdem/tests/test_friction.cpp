@@ -120,3 +120,31 @@ TEST_CASE("friction 0.6: a sliding clone's shear force never creates energy (B-9
     if (c.dt == 2e-5) CHECK(o.separated);
   }
 }
+
+TEST_CASE("touch_impact = kCoulomb: a touch's tangential impulse is capped at tan(phi) J_n", "[cdem][friction]") {
+  // Beyond the paper (CdemOptions::touch_impact). 45 deg, 0.1 m/s, no
+  // subdivision: with mu = 0 every touch's J_t is 0 and the clone slides;
+  // with mu = 0.3 |J_t| <= 0.3 J_n. Every touch's measured loss stays within
+  // its group's Eq. 5 (the perfectly inelastic projection loses the most).
+  for (double mu : {0.0, 0.3}) {
+    CdemScene s = impact_scene({45.0, 0.1, mu, false, 2e-5});
+    s.options.touch_impact = TouchImpact::kCoulomb;
+    Model m(s);
+    m.advance_to(s.duration);
+    REQUIRE_FALSE(m.touches().empty());
+    for (const TouchRecord& t : m.touches()) {
+      INFO("mu " << mu << " touch at " << t.time << " J_n " << t.impulse_normal << " J_t " << t.impulse_tangential);
+      CHECK(std::fabs(t.impulse_tangential) <= mu * std::max(t.impulse_normal, 0.0) * (1.0 + 1e-12));
+      CHECK(t.energy_loss >= -kEnergySlack * m.energy().kinetic);
+      CHECK(t.energy_loss <= t.energy_loss_eq5_group * (1.0 + kEnergySlack) + 1e-12);
+      if (mu == 0.0 && t.coulomb_capped) CHECK(t.impulse_tangential == 0.0);
+    }
+  }
+  // The paper's Eq. 4 touch at mu = 0 takes a tangential impulse (the negative control).
+  const CdemScene s = impact_scene({45.0, 0.1, 0.0, false, 2e-5});
+  Model m(s);
+  m.advance_to(s.duration);
+  double jt = 0.0;
+  for (const TouchRecord& t : m.touches()) jt = std::max(jt, std::fabs(t.impulse_tangential));
+  CHECK(jt > 0.0);
+}
