@@ -25,8 +25,15 @@ void Simulation::update_near_pairs() {
   // verdict in all of them. Without the sweep the list is rebuilt when the
   // pairs whose boxes overlap changed (a read-only test every thread makes
   // alike; an unchanged list keeps every slot as the merge would): a small
-  // scene's usual step pays no rebuild, no allocation and no team sync.
-  bool rebuild = scene_.broad_phase == BroadPhase::kNone && !near_pairs_unchanged();
+  // scene's usual step pays no rebuild and no allocation. The barrier after
+  // the test keeps the list unchanged until every thread has read it (else
+  // a thread still testing could read the rebuilt list, skip the single
+  // below and leave the team waiting for it).
+  bool rebuild = false;
+  if (scene_.broad_phase == BroadPhase::kNone) {
+    rebuild = !near_pairs_unchanged();
+    team_barrier();
+  }
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;
   DDA_OMP(omp single)
