@@ -7,6 +7,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <Eigen/Eigenvalues>
+
 #include "geometry.hpp"
 
 namespace dda::cdem {
@@ -63,11 +65,80 @@ std::vector<int> Model::clone_component(int ci) const {
   return comp;
 }
 
+// Eq. 5 for a clone group (the clones projected together at a touch, see
+// project_component). The group's perfectly inelastic projection is Eq. 4
+// for several ties at once: it conserves momentum (equal and opposite
+// impulses along the ties) and leaves every tie's relative velocity zero,
+// the tie of a sliding clone its normal part only (Eq. 10). Its loss, from
+// the group's masses and velocities, is
+//   dE = 1/2 r^T W^+ r,  r = C v (the ties' relative velocities),
+//   W = C M^-1 C^T (the ties' inverse effective masses),
+// the least-squares form of the same projection; for one clone W is the
+// scalar 1/m_m + sum w_q^2 / m_tq and dE is Eq. 5 (1/2 m_m m_t / (m_m +
+// m_t) |v_m - v_t|^2). It bounds the loss of any impulses along these ties
+// (the projection is the least kinetic energy they reach), so it also bounds
+// a Coulomb touch (TouchImpact::kCoulomb). comp[0] (the new clone) counts
+// with both rows, as in Eq. 4. W^+ by eigen-decomposition: eigenvalues
+// below kRankTolerance of the largest are dropped (ties that repeat others,
+// e.g. two corners each tied to the other's face).
+double Model::group_eq5(const std::vector<int>& comp) const {
+  constexpr double kRankTolerance = 1e-12;  // relative; W's entries are sums of 1/m, round-off ~1e-16
+  std::vector<Vec2> dirs;                   // one row per tie direction
+  std::vector<int> row_clone;
+  for (std::size_t k = 0; k < comp.size(); ++k) {
+    const Clone& cl = clones_[static_cast<std::size_t>(comp[k])];
+    if (cl.sliding && k > 0) {
+      dirs.push_back(clone_normal(cl));
+      row_clone.push_back(comp[k]);
+    } else {
+      dirs.push_back({1.0, 0.0});
+      row_clone.push_back(comp[k]);
+      dirs.push_back({0.0, 1.0});
+      row_clone.push_back(comp[k]);
+    }
+  }
+  const int n = static_cast<int>(dirs.size());
+  // the tie's nodes and coefficients: main +1, targets -w_q
+  auto terms = [&](const Clone& cl) {
+    std::vector<std::pair<int, double>> t{{cl.main, 1.0}};
+    for (int q = 0; q < 2; ++q)
+      if (cl.t[q] >= 0 && cl.w[q] != 0.0) t.push_back({cl.t[q], -cl.w[q]});
+    return t;
+  };
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    const auto ti = terms(clones_[static_cast<std::size_t>(row_clone[i])]);
+    for (const auto& [node, c] : ti) r(i) += c * dot(dirs[i], v_[node]);
+    for (int j = 0; j < n; ++j) {
+      const auto tj = terms(clones_[static_cast<std::size_t>(row_clone[j])]);
+      for (const auto& [a, ca] : ti)
+        for (const auto& [b, cb] : tj)
+          if (a == b) w(i, j) += ca * cb * inv_m_[a] * dot(dirs[i], dirs[j]);
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(w);
+  const double top = eig.eigenvalues().cwiseAbs().maxCoeff();
+  if (!(top > 0.0)) return 0.0;
+  const Eigen::VectorXd q = eig.eigenvectors().transpose() * r;
+  double e = 0.0;
+  for (int i = 0; i < n; ++i)
+    if (eig.eigenvalues()(i) > kRankTolerance * top) e += q(i) * q(i) / eig.eigenvalues()(i);
+  return 0.5 * e;
+}
+
 // Perfectly inelastic impact (Eq. 4): the velocities of the clone's nodes
 // are projected onto the tie (main = sum w_q target_q) with the impulse
 // that conserves momentum; coupled clones (sharing nodes) are projected
-// together by Gauss-Seidel. Returns the kinetic energy lost (Eq. 5).
-double Model::project_component(int ci) {
+// together by Gauss-Seidel (the group's Eq. 4, its loss the group's Eq. 5,
+// group_eq5). Returns the kinetic energy lost. With `rec` (a touch: clone
+// ci is new) the new clone's impulse is recorded, and with
+// TouchImpact::kCoulomb (beyond the paper) the new clone's tangential
+// impulse is capped at tan(phi) times its normal impulse (a projected
+// Gauss-Seidel step: each update minimises the kinetic energy over the
+// clone's impulse within the cap, so the loss stays below the group's
+// Eq. 5); capped, the clone starts sliding (Eq. 10).
+double Model::project_component(int ci, TouchRecord* rec) {
   const std::vector<int> comp = clone_component(ci);
   std::vector<int> nodes;
   for (int c : comp) {
@@ -86,6 +157,12 @@ double Model::project_component(int ci) {
     }
     return std::make_pair(e, vmax);
   };
+  if (rec) rec->energy_loss_eq5_group = group_eq5(comp);
+  const bool coulomb = rec && opt_.touch_impact == TouchImpact::kCoulomb;
+  constexpr double kPi = 3.14159265358979323846;
+  const double tan_phi = std::tan(opt_.strength.friction_deg * kPi / 180.0);
+  double jn_new = 0.0, jt_new = 0.0;  // the new clone's accumulated impulse (normal, tangential)
+  bool capped = false;
   const auto [before, vscale] = ke();
   for (int it = 0; it < 500; ++it) {
     double worst = 0.0;
@@ -103,13 +180,32 @@ double Model::project_component(int ci) {
         const Vec2 n = clone_normal(cl);
         r = dot(r, n) * n;
       }
-      worst = std::max(worst, length(r));
-      const Vec2 j = -(1.0 / w) * r;
+      Vec2 j = -(1.0 / w) * r;
+      if (c == ci && rec) {
+        const Vec2 n = clone_normal(cl), u = perp_left(n);
+        const double jn = jn_new + dot(j, n), jt_want = jt_new + dot(j, u);
+        double jt = jt_want;
+        if (coulomb) {
+          const double lim = tan_phi * std::max(jn, 0.0);
+          jt = std::clamp(jt_want, -lim, lim);
+          capped = jt != jt_want;
+        }
+        j = (jn - jn_new) * n + (jt - jt_new) * u;
+        jn_new = jn;
+        jt_new = jt;
+      }
+      worst = std::max(worst, w * length(j));
       v_[cl.main] += inv_m_[cl.main] * j;
       for (int q = 0; q < 2; ++q)
         if (cl.t[q] >= 0 && cl.w[q] != 0.0) v_[cl.t[q]] -= (cl.w[q] * inv_m_[cl.t[q]]) * j;
     }
     if (worst <= 1e-14 * (vscale + 1e-300)) break;
+  }
+  if (rec) {
+    rec->impulse_normal = jn_new;
+    rec->impulse_tangential = jt_new;
+    rec->coulomb_capped = capped;
+    if (capped) clones_[static_cast<std::size_t>(ci)].sliding = true;
   }
   return before - ke().first;
 }
@@ -197,10 +293,11 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
   clone_count_[m] += 1;
   for (int q = 0; q < 2; ++q)
     if (c.t[q] >= 0) clone_count_[c.t[q]] += 1;
-  rec.energy_loss = project_component(static_cast<int>(clones_.size()) - 1);
+  rec.energy_loss = project_component(static_cast<int>(clones_.size()) - 1, &rec);
   rec.v_clone = v_[m];
   impact_loss_ += rec.energy_loss;
   touch_loss_eq5_ += rec.energy_loss_eq5;
+  touch_loss_eq5_group_ += rec.energy_loss_eq5_group;
   if (opt_.capture_touch_snapshots) {
     rec.snapshot.push_back(snapshot());
     rec.snapshot.back().time = t;

@@ -134,6 +134,7 @@ CdemEnergyAccount Model::energy_account() const {
   a.gravity = e.gravity;
   a.touch_loss = impact_loss_;
   a.touch_loss_eq5 = touch_loss_eq5_;
+  a.touch_loss_eq5_group = touch_loss_eq5_group_;
   a.refine_loss = refine_loss_;
   a.deletion_loss = deletion_loss_;
   a.other = a.initial - e.total() - a.touch_loss - a.refine_loss - a.deletion_loss;

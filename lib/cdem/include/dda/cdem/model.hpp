@@ -40,8 +40,9 @@
 // the tie is node-to-node or node-to-edge-point (the point shares its mass
 // and force with the edge's nodes by their linear weights); a clone whose
 // shear reaches the limit slides (Eq. 10: normal velocity tied, shear force
-// at the limit against the sliding, the tied point following the node along
-// the target's face) instead of being removed as Sect. 4.2's last sentence
+// the one the tie demands to stop the slip within the step, reduced to the
+// limit with its sign, so friction never reverses a slip; the tied point
+// following the node along the target's face) instead of being removed as Sect. 4.2's last sentence
 // says: removed, the pressed node touches again at once, and each re-touch's
 // inelastic impact takes the tangential velocity (a frictionless face stuck
 // or, with the re-touch delayed, was passed through); a released node may
@@ -53,10 +54,7 @@
 // t0 + j dt/n (cutting the kick-drift-kick step itself at each touch makes
 // the steps irregular, and leapfrog with irregular steps pumps energy into
 // the patch's top modes); the coarse step is split for the touching nodes
-// only, as in Sect. 3; a sliding clone's shear force (Eq. 10) is capped at
-// the force that stops the relative sliding within the next kick (the limit
-// alone, with the sign of the last sliding velocity, reverses the sliding
-// when its impulse is large and does positive work); one k per run.
+// only, as in Sect. 3; one k per run.
 //
 // The library does no I/O. Errors: dda::SceneError for a bad scene (also
 // when dt exceeds the mesh's critical step), dda::SimulationError for a run
@@ -116,8 +114,23 @@ enum class PatchDeletion : std::uint8_t {
 // baseline on the same CST blocks (model_penalty.cpp).
 enum class ContactMode : std::uint8_t { kTwoScale, kNodeToEdgePenalty };
 
+// The impact that forms a clone at a touch (Sect. 4.1).
+enum class TouchImpact : std::uint8_t {
+  // Paper B Eq. 4: perfectly inelastic, the contact points take one velocity
+  // ('no slipping occurs' in the touch step), tangential part included,
+  // whatever phi is: the formation impulse is not limited by Coulomb.
+  kPerfectlyInelastic,
+  // Beyond the paper: a Coulomb impact. The normal relative velocity is tied
+  // as in Eq. 4; the tangential impulse is the one that stops the slip,
+  // capped at tan(phi) times the clone's normal impulse (cohesion, a force,
+  // gives no impulse). Capped, the clone starts sliding (Eq. 10); else it
+  // sticks as in Eq. 4. Momentum conserved; the loss never exceeds Eq. 4's.
+  kCoulomb,
+};
+
 struct CdemOptions {
   ContactMode contact = ContactMode::kTwoScale;
+  TouchImpact touch_impact = TouchImpact::kPerfectlyInelastic;  // Sect. 4.1 as published
   // kNodeToEdgePenalty only: the normal spring between a boundary node and
   // the boundary edge it penetrates, Pa (N/m of force per unit thickness per
   // m of penetration); 0: E / 100 of the stiffer of the two blocks' materials
@@ -234,7 +247,15 @@ struct TouchRecord {
   double mass_main = 0.0, mass_target = 0.0;  // target: effective mass at the point
   Vec2 v_main{}, v_target{}, v_clone{};       // before the impact / clone after (Eq. 4)
   double energy_loss_eq5 = 0.0;               // Eq. 5 with these masses, J/m
+  // Eq. 5 for the clone group projected at this touch (the new clone and the
+  // clones sharing nodes with it, model_clone.cpp): the loss of the group's
+  // perfectly inelastic projection from the group's masses and velocities,
+  // 1/2 r^T (C M^-1 C^T)^+ r (r = C v the ties' relative velocities), J/m;
+  // energy_loss_eq5 for a lone clone. Eq. 5 is its one-pair case.
+  double energy_loss_eq5_group = 0.0;
   double energy_loss = 0.0;                   // measured kinetic-energy drop of the projection, J/m
+  double impulse_normal = 0.0, impulse_tangential = 0.0;  // the new clone's impulse on the main node, N s/m
+  bool coulomb_capped = false;                // TouchImpact::kCoulomb: |J_t| = tan(phi) J_n, the clone slides
   int subdivision = 0;                        // k used (0: none)
   double radius = 0.0;                        // refinement radius c dt2, m
   int refined_elements = 0;                   // coarse elements refined at this touch
@@ -275,7 +296,8 @@ struct CdemEnergy {
 //             + deletion_loss + other.
 // touch_loss is measured (the kinetic-energy drop of each touch's Eq. 4
 // projection; touch_loss_eq5 is Eq. 5 with the clone's masses, for
-// comparison); refine_loss and deletion_loss are the total-energy drops of
+// comparison; touch_loss_eq5_group Eq. 5 of the projected clone group, its
+// bound); refine_loss and deletion_loss are the total-energy drops of
 // refining elements and of deleting patches (Sect. 5); other is what is left:
 // time integration, work of friction at sliding clones, mass damping, and
 // the clone constraint's drift.
@@ -284,6 +306,7 @@ struct CdemEnergyAccount {
   double initial = 0.0;
   double kinetic = 0.0, strain = 0.0, gravity = 0.0;
   double touch_loss = 0.0, touch_loss_eq5 = 0.0;
+  double touch_loss_eq5_group = 0.0;  // sum of TouchRecord::energy_loss_eq5_group
   double refine_loss = 0.0, deletion_loss = 0.0;
   double other = 0.0;
 };
@@ -385,11 +408,10 @@ class Model {
     double area = 0.0;     // A_c
     bool fine = false;
     // Sliding (Eq. 10): the shear limit was reached; from then on only the
-    // normal velocity is tied, the shear force is the limit with the sign
-    // slip_sign, and the tied point follows the node along the target's
-    // boundary.
+    // normal velocity is tied, the shear force is the one the tie demands
+    // (stopping the slip) capped at the limit with its sign, and the tied
+    // point follows the node along the target's boundary.
     bool sliding = false;
-    double slip_sign = 0.0;
     Vec2 lambda{};
   };
   struct Touch {     // a detected touch, not yet processed
@@ -427,7 +449,8 @@ class Model {
   void compute_patch_forces(double t);
   void solve_clones(bool fine, double t);
   std::vector<int> clone_component(int ci) const;
-  double project_component(int ci);
+  double project_component(int ci, TouchRecord* rec = nullptr);
+  double group_eq5(const std::vector<int>& comp) const;
   void kick_patch(double h);
   void kick_coarse_first_half();
   void forces_and_second_half_kick();
@@ -511,6 +534,7 @@ class Model {
   int substeps_ = 1;  // n of dt/n in patches
   double impact_loss_ = 0.0, remap_change_ = 0.0;
   double refine_loss_ = 0.0, deletion_loss_ = 0.0, touch_loss_eq5_ = 0.0, initial_energy_ = 0.0;
+  double touch_loss_eq5_group_ = 0.0;
   // node-to-edge penalty baseline
   double penalty_kn_ = 0.0, contact_critical_dt_ = 0.0, penalty_max_depth_ = 0.0;
   std::vector<PenaltyContact> penalty_contacts_;
