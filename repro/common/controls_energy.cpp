@@ -12,26 +12,15 @@
 #include "dda/cdem/scenes.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/claims.hpp"
+#include "repro/common/controls_b6.hpp"
 
-namespace {
-// The B-6 row `claim` must be a check naming `test`.
-void b6_names_test(const prisms::Result& r, const prisms::Result& coarse, const std::string& claim, const char* test) {
-  for (const repro::Claim& c : prisms::rows(r, coarse))
-    if (c.claim == claim) {
-      CHECK(c.kind == repro::Kind::kCheck);
-      CHECK(c.control == repro::control_test(test));
-      return;
-    }
-  FAIL("B-6: no row '" << claim << "'");
-}
-}  // namespace
 
 TEST_CASE(prisms::kTestEnergyCloses, "[controls][B-6][energy]") {
   const prisms::Result paper = prisms::simulate(dda::cdem::two_prisms(2));
   dda::cdem::CdemOptions no_sub;
   no_sub.subdivision = false;
   const prisms::Result coarse = prisms::simulate(dda::cdem::two_prisms(2, no_sub));
-  b6_names_test(paper, coarse,
+  controls_b6::names_test(paper, coarse,
                 "the energy account closes at every time-series row (kinetic + strain + touch loss + refine and "
                 "deletion losses)",
                 prisms::kTestEnergyCloses);

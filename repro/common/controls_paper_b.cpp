@@ -17,6 +17,7 @@
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/B_7_contact_comparison/contact_comparison.hpp"
 #include "repro/common/claims.hpp"
+#include "repro/common/controls_b6.hpp"
 
 // --- B-6, two prisms -------------------------------------------------------------
 namespace {
@@ -30,16 +31,7 @@ dda::cdem::CdemOptions no_subdivision() {
   o.subdivision = false;
   return o;
 }
-// The row `claim` of prisms::rows(r, coarse) must name `test`.
-void names_test(const prisms::Result& r, const prisms::Result& coarse, const std::string& claim, const char* test) {
-  for (const repro::Claim& c : prisms::rows(r, coarse))
-    if (c.claim == claim) {
-      CHECK(c.kind == repro::Kind::kCheck);
-      CHECK(c.control == repro::control_test(test));
-      return;
-    }
-  FAIL("B-6: no row '" << claim << "'");
-}
+using controls_b6::names_test;
 }  // namespace
 
 // The row's own verdict is FAIL (the printed step does not contain the

@@ -1,0 +1,26 @@
+// Shared by the B-6 negative controls (controls_paper_b.cpp,
+// controls_energy.cpp): a row of prisms::rows must be a check that names its
+// control test.
+#pragma once
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "repro/B_6_two_prisms/two_prisms.hpp"
+#include "repro/common/claims.hpp"
+
+namespace controls_b6 {
+
+// The row `claim` of prisms::rows(r, coarse) must be a check naming `test`.
+inline void names_test(const prisms::Result& r, const prisms::Result& coarse, const std::string& claim,
+                       const char* test) {
+  for (const repro::Claim& c : prisms::rows(r, coarse))
+    if (c.claim == claim) {
+      CHECK(c.kind == repro::Kind::kCheck);
+      CHECK(c.control == repro::control_test(test));
+      return;
+    }
+  FAIL("B-6: no row '" << claim << "'");
+}
+
+}  // namespace controls_b6
