@@ -35,6 +35,15 @@
 //    between patch nodes, so its masses (Eq. 5 loss) are the small patch
 //    masses. The patch is deleted (restricted back to the coarse elements,
 //    momentum exact, stress area-averaged) when its clone nodes separated.
+//    THIS DIFFERS FROM SECT. 5 AS WRITTEN: the paper builds a separate
+//    sub-model of subdivided elements, driven by the initial nodes'
+//    velocities as boundary conditions (its steps 2-3), solves it with steps
+//    dt/n over dt (Eq. 12, step 4) and returns its element forces to the
+//    initial nodes (step 5), the coarse model staying as it is. Here the
+//    colliding elements are refined in place (hanging nodes), so the coarse
+//    elements are replaced while the patch lives and its state must be
+//    restricted back when it is deleted (the deletion loss of the energy
+//    account). The paper's sub-model mode is not implemented (issue 23 item 3).
 //
 // Approximations relative to Paper B (which gives no algorithm tables):
 // the tie is node-to-node or node-to-edge-point (the point shares its mass
