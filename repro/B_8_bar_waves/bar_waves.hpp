@@ -162,6 +162,13 @@ inline constexpr double kCourant = 0.3;
 // time stops (CDEM 4: it should end at 1; A 200: kn = E / 100 lasts 6).
 inline constexpr double kCdemMaxContacts = 4.0, kDdaMaxContacts = 200.0;
 
+// A run that reached its time limit before the bars touched (or separated):
+// a SimulationError, recorded as the run's stop.
+[[noreturn]] inline void throw_unfinished(bool not_touched, double t_limit) {
+  throw dda::SimulationError(std::string("the bars did not ") + (not_touched ? "touch" : "separate") + " by t = " +
+                             repro::format_short(t_limit) + " s");
+}
+
 // The CDEM bars on an ny mesh at dt (dt <= 0: kCourant h / c). A run that
 // leaves the model's domain (dda::SimulationError: an inverted element, a
 // non-finite state, an unresolved contact) or does not separate is returned
@@ -204,9 +211,7 @@ inline Run run_cdem(const Setup& s, int ny, double dt, bool subdivision, Trace* 
         }
         if (t_free >= 0.0 && t1 >= t_free + 0.5 * T) break;
       }
-      if (t1 > t_limit)
-        throw dda::SimulationError(std::string("the bars did not ") + (r.t_touch < 0.0 ? "touch" : "separate") +
-                                   " by t = " + format_short(t_limit) + " s");
+      if (t1 > t_limit) throw_unfinished(r.t_touch < 0.0, t_limit);
     }
   } catch (const dda::SimulationError& e) {
     r.wall = seconds_since(start);
@@ -264,9 +269,7 @@ inline Run run_dda(const Setup& s, double dt, double kn, Trace* trace = nullptr)
         }
         if (!contact && t1 >= r.t_end + 0.5 * T) break;
       }
-      if (t1 > t_limit)
-        throw dda::SimulationError(std::string("the bars did not ") + (r.t_touch < 0.0 ? "touch" : "separate") +
-                                   " by t = " + format_short(t_limit) + " s");
+      if (t1 > t_limit) throw_unfinished(r.t_touch < 0.0, t_limit);
     }
   } catch (const dda::SimulationError& e) {
     r.wall = seconds_since(start);
