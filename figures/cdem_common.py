@@ -13,9 +13,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from potential_common import plt, read_csv, save_atomic  # noqa: E402,F401
 
 
-def read_table(path, text=()):
-    """Returns (comment lines, {column: array}); columns named in `text` stay
-    strings, the others are floats and must be finite."""
+def _read_records(path):
+    """(comment lines, header, data records) of a driver's CSV file."""
     comments, rows, header = [], [], None
     with open(path, newline="") as f:
         for rec in csv.reader(f):
@@ -29,6 +28,13 @@ def read_table(path, text=()):
                 rows.append(rec)
     if header is None or not rows:
         raise SystemExit(f"{path}: no header or no data rows")
+    return comments, header, rows
+
+
+def read_table(path, text=()):
+    """Returns (comment lines, {column: array}); columns named in `text` stay
+    strings, the others are floats and must be finite."""
+    comments, header, rows = _read_records(path)
     cols = {}
     for i, name in enumerate(header):
         vals = [r[i] for r in rows]
@@ -40,3 +46,21 @@ def read_table(path, text=()):
                 raise SystemExit(f"{path}: non-finite values in column {name}")
             cols[name] = a
     return comments, cols
+
+
+def read_rows(path, text=()):
+    """Returns (comment lines, [ {column: value} per row ]): columns named in
+    `text` stay strings; the others are floats, which must be finite, or None
+    where the cell is empty (e.g. a run that stopped has no measured value)."""
+    comments, header, rows = _read_records(path)
+    out = []
+    for rec in rows:
+        r = dict(zip(header, rec))
+        for k, v in r.items():
+            if k in text:
+                continue
+            r[k] = float(v) if v != "" else None
+            if r[k] is not None and not np.isfinite(r[k]):
+                raise SystemExit(f"{path}: non-finite value in column {k}")
+        out.append(r)
+    return comments, out

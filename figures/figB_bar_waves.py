@@ -10,40 +10,14 @@ import sys
 import textwrap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cdem_common import plt, read_table, save_atomic  # noqa: E402
+from cdem_common import plt, read_rows, read_table, save_atomic  # noqa: E402
 import numpy as np  # noqa: E402
 
 if len(sys.argv) != 3:
     raise SystemExit(__doc__)
 
 
-def read_runs(path):
-    """runs.csv: text columns model, series, status; numbers may be empty for a stopped run."""
-    import csv
-    comments, rows, header = [], [], None
-    with open(path, newline="") as f:
-        for rec in csv.reader(f):
-            if not rec:
-                continue
-            if header is None and rec[0].startswith("#"):
-                comments.append(",".join(rec).lstrip("# ").rstrip())
-            elif header is None:
-                header = rec
-            else:
-                rows.append(dict(zip(header, rec)))
-    if not rows:
-        raise SystemExit(f"{path}: no data rows")
-    for r in rows:
-        for k, v in r.items():
-            if k in ("model", "series", "status"):
-                continue
-            r[k] = float(v) if v != "" else None
-            if r[k] is not None and not np.isfinite(r[k]):
-                raise SystemExit(f"{path}: non-finite value in column {k}")
-    return comments, rows
-
-
-notes, runs = read_runs(os.path.join(sys.argv[1], "runs.csv"))
+notes, runs = read_rows(os.path.join(sys.argv[1], "runs.csv"), text=("model", "series", "status"))
 _, tr = read_table(os.path.join(sys.argv[1], "traces.csv"), text=("run",))
 # the theory's values, from the comment line of runs.csv (written by the driver)
 T = SIG = None
