@@ -63,11 +63,7 @@ struct Files {
 
 }  // namespace
 
-std::string time_tag(double t) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", t);
-  return b;
-}
+std::string time_tag(double t) { return repro::format_fixed(t, 1); }
 
 const Sample& CaseResult::at(double t) const {
   const Sample* best = &series.front();

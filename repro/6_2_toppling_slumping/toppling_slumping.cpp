@@ -62,11 +62,8 @@ using namespace topple;
 constexpr double kSeriesEvery = 0.01;  // s
 constexpr double kFrameEvery = 0.05;   // s
 
-std::string time_tag(double t) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", t);
-  return b;
-}
+// A frame time in a file name or caption, 0.1 s resolution.
+std::string time_tag(double t) { return repro::format_fixed(t, 1); }
 
 }  // namespace
 

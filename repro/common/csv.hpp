@@ -58,6 +58,9 @@ std::string csv_quote(const std::string& field);
 std::string format_full(double value);
 // Short human-readable number, `digits` significant digits ("%.*g").
 std::string format_short(double value, int digits = 4);
+// Fixed-point with `decimals` digits after the point ("%.*f"), e.g. a time in
+// a file name or a caption: format_fixed(0.5, 1) == "0.5".
+std::string format_fixed(double value, int decimals);
 // Creates the parent directories of a file path (no-op if none).
 void make_parent_dirs(const std::string& path);
 
