@@ -126,6 +126,7 @@ TEST_CASE("the energy budget guard stops a run whose balance error exceeds its b
       const std::string what = e.what();
       CHECK(what.find("energy budget off by") != std::string::npos);
       CHECK(what.find("guards.max_balance_error") != std::string::npos);
+      CHECK(e.reason == StopReason::kEnergyBudget);  // callers classify by the reason, not the text
       CHECK(what.find("dt/dt_crit") != std::string::npos);
     }
   }

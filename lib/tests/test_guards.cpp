@@ -67,6 +67,7 @@ double x_extent(const Polygon& ip) {
 
 struct Outcome {
   bool stopped = false;  // SimulationError
+  StopReason reason = StopReason::kOther;
   bool passed = false;   // centroids' order along x swapped at the end (or at the stop)
   double max_depth = 0.0;  // largest x-extent of the exact overlap seen (every 10 steps), m
   std::string message;
@@ -86,6 +87,7 @@ Outcome run(const Scene& s) {
   } catch (const SimulationError& e) {
     o.stopped = true;
     o.message = e.what();
+    o.reason = e.reason;
   }
   o.passed = sim.centroid(0).x > sim.centroid(1).x;
   o.hash = state_hash(sim);
@@ -137,6 +139,8 @@ TEST_CASE("penetration guard: no impact passes through unstopped; bounces are un
               has(on.message, "penetration depth") && has(on.message, "max_penetration") && has(on.message, "(bound ");
           const bool energy = has(on.message, "approach energy") && has(on.message, "max_approach_energy");
           CHECK((depth || energy));
+          // The typed reason agrees with the message (S2 and S3 classify by it).
+          CHECK(on.reason == (depth ? StopReason::kPenetration : StopReason::kApproachEnergy));
           stopped_depth += depth ? 1 : 0;
           stopped_energy += energy ? 1 : 0;
         }

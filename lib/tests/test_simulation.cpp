@@ -154,11 +154,15 @@ TEST_CASE("a blow-up stops with a message naming step and block", "[simulation]"
   s.blocks[0].velocity = {100.0, 0.0};
   Simulation sim(s);
   std::string what;
+  StopReason reason = StopReason::kOther;
   try {
     sim.advance_to(1.0);
   } catch (const SimulationError& e) {
     what = e.what();
+    reason = e.reason;
   }
+  INFO(what);
+  CHECK(reason != StopReason::kOther);  // one of the guards stopped it, and says which
   CHECK(what.find("step") != std::string::npos);
   CHECK(what.find("block") != std::string::npos);
   CHECK(what.find("dt/dt_crit") != std::string::npos);

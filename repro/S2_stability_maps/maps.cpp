@@ -76,18 +76,18 @@ MapRun map_run(const MapScene& m, double kn, double dt, bool balance_guard) {
     r.message = e.what();
     // An energy-budget stop says the run is inaccurate, not that it
     // diverges: the same cell without that guard decides.
-    if (r.message.find("energy budget off") != std::string::npos) {
+    if (e.reason == dda::StopReason::kEnergyBudget) {
       MapRun unguarded = map_run(m, kn, dt, false);
       unguarded.message = "the energy-budget guard stopped it (" + r.message + "); with that guard off: " +
                      (unguarded.message.empty() ? "finishes" : unguarded.message);
       return unguarded;
     }
-    const bool motion = r.message.find("a vertex moved") != std::string::npos;
+    const bool motion = e.reason == dda::StopReason::kStepMotion;
     // The penetration guard (depth past half the block, or an approach
     // energy the pair cannot store) stops a pass-through at any dt: a soft
     // kn, not a time-step blow-up.
-    const bool pass_through = r.message.find("penetration depth") != std::string::npos ||
-                              r.message.find("approach energy") != std::string::npos;
+    const bool pass_through =
+        e.reason == dda::StopReason::kPenetration || e.reason == dda::StopReason::kApproachEnergy;
     r.cls = pass_through || (motion && r.max_growth <= 0.01) ? RunClass::kFlipThrough : RunClass::kBlowUp;
     return r;
   }

@@ -185,9 +185,9 @@ inline Outcome run(const Extreme& e, double dt_fraction) {
   } catch (const dda::SimulationError& err) {
     o.message = err.what();
     if (sim.centroid(1).x < sim.centroid(0).x) o.t_swap = sim.time();  // stopped too late
-    o.penetration_stop = o.message.find("guards.max_penetration") != std::string::npos ||
-                         o.message.find("guards.max_approach_energy") != std::string::npos;
-    const bool motion = o.message.find("a vertex moved") != std::string::npos;
+    o.penetration_stop =
+        err.reason == dda::StopReason::kPenetration || err.reason == dda::StopReason::kApproachEnergy;
+    const bool motion = err.reason == dda::StopReason::kStepMotion;
     o.cls = motion && max_growth <= 0.01 ? RunClass::kFlipThrough : RunClass::kBlowUp;
     return o;
   }

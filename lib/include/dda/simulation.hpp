@@ -26,10 +26,26 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Why a run stopped: the guard that fired (guards.cpp,
+// penetration_guard.cpp), so that callers classify a stop by its cause, not
+// by its message text.
+enum class StopReason : std::uint8_t {
+  kOther,           // not one of the guards below (e.g. the CDEM model's stops)
+  kNonFinite,       // a block's velocity or position is not finite
+  kAreaCollapsed,   // a block's area is no longer positive
+  kStepMotion,      // a vertex moved more than guards.max_step_motion in one step
+  kEnergyGrowth,    // the total energy grew by more than guards.max_energy_growth
+  kEnergyBudget,    // the energy budget is off by more than guards.max_balance_error
+  kPenetration,     // a pair is deeper than guards.max_penetration
+  kApproachEnergy,  // a first contact brings more energy than the pair can store
+};
+
 // A run that went wrong (non-finite state, a collapsed block); what() says
-// the step, the time, the block and what was exceeded.
+// the step, the time, the block and what was exceeded; reason() the guard.
 struct SimulationError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit SimulationError(const std::string& what, StopReason why = StopReason::kOther)
+      : std::runtime_error(what), reason(why) {}
+  StopReason reason;
 };
 
 // Throws SceneError for the first problem found in the scene.
@@ -209,8 +225,8 @@ class Simulation {
   double approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed = nullptr, double* mass = nullptr) const;
   void check_pairs() const;
   std::string block_label(int i) const;
-  [[noreturn]] void stop(int block, const std::string& what) const;
-  [[noreturn]] void stop_pair(int a, int b, const std::string& what) const;
+  [[noreturn]] void stop(int block, StopReason why, const std::string& what) const;
+  [[noreturn]] void stop_pair(int a, int b, StopReason why, const std::string& what) const;
   // energy.cpp
   Energy block_energy() const;
   void add_friction_energy(Energy& e) const;

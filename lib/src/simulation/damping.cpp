@@ -93,7 +93,8 @@ void Simulation::settle() {
     advance_to(settle);
   } catch (const SimulationError& e) {
     throw SimulationError(std::string("while settling (damping.settle_time = ") + std::to_string(settle) +
-                          " s, before t = 0): " + e.what());
+                          " s, before t = 0): " + e.what(),
+                          e.reason);
   }
   start_damping(false);
   for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] = v0[i];

@@ -51,7 +51,7 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
   return static_cast<bool>(error);
 }
 
-[[noreturn]] void Simulation::stop(int block, const std::string& what) const {
+[[noreturn]] void Simulation::stop(int block, StopReason why, const std::string& what) const {
   std::ostringstream s;
   s << "step " << steps_ << " (t = " << time_ << " s): block " << block;
   // The pair through which the block takes its largest contact force.
@@ -64,14 +64,14 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
     }
   if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
   s << ": " << what << "; " << dt_ratio_text(*this);
-  throw SimulationError(s.str());
+  throw SimulationError(s.str(), why);
 }
 
-[[noreturn]] void Simulation::stop_pair(int a, int b, const std::string& what) const {
+[[noreturn]] void Simulation::stop_pair(int a, int b, StopReason why, const std::string& what) const {
   std::ostringstream s;
   s << "step " << steps_ << " (t = " << time_ << " s): pair (" << a << ", " << b << ") = " << block_label(a)
     << " and " << block_label(b) << ": " << what << "; " << dt_ratio_text(*this);
-  throw SimulationError(s.str());
+  throw SimulationError(s.str(), why);
 }
 
 std::string Simulation::block_label(int i) const {
@@ -108,11 +108,16 @@ void Simulation::check_state(bool energy_due) {
     const GuardFault fault = guard_fault(i);
     if (fault == GuardFault::kNone) continue;
     std::ostringstream s;  // built only for the message
+    StopReason why = StopReason::kOther;
     switch (fault) {
       case GuardFault::kNone: continue;
-      case GuardFault::kNonFinite: stop(i, "non-finite velocity or position");
-      case GuardFault::kAreaCollapsed: s << "area collapsed to " << moments_[i].area << " m^2"; break;
+      case GuardFault::kNonFinite: stop(i, StopReason::kNonFinite, "non-finite velocity or position");
+      case GuardFault::kAreaCollapsed:
+        why = StopReason::kAreaCollapsed;
+        s << "area collapsed to " << moments_[i].area << " m^2";
+        break;
       case GuardFault::kStepMotion:
+        why = StopReason::kStepMotion;
         // Largest vertex motion of this step, |T(p) dd| at the vertices
         // (squared, recorded by move_blocks as it moved them).
         s << "a vertex moved " << std::sqrt(step_motion2_[i]) << " m in one step, more than "
@@ -120,7 +125,7 @@ void Simulation::check_state(bool energy_due) {
           << " m)";
         break;
     }
-    stop(i, s.str());
+    stop(i, why, s.str());
   }
   check_pairs();  // penetration_guard.cpp: the first pair that fails the penetration guard
   if (energy_due) {
@@ -149,7 +154,7 @@ void Simulation::check_state(bool energy_due) {
       std::ostringstream s;
       s << "total energy grew by " << growth << " of the largest mechanical energy (" << energy_scale_
         << " J), more than " << scene_.guards.max_energy_growth;
-      stop(fastest(), s.str());
+      stop(fastest(), StopReason::kEnergyGrowth, s.str());
     }
     // The energy budget (energy.cpp): what the state holds plus what
     // friction and damping dissipated must stay the initial energy.
@@ -164,7 +169,7 @@ void Simulation::check_state(bool energy_due) {
           << " J): kinetic + gravity + strain + contact + friction springs " << e.total() << " + dissipated "
           << e.dissipated << " against " << e.initial << " at t = 0, more than guards.max_balance_error = "
           << max_error << "; reduce dt (the integration error falls with it) or raise the bound (0 switches it off)";
-        stop(fastest(), s.str());
+        stop(fastest(), StopReason::kEnergyBudget, s.str());
       }
     }
   }

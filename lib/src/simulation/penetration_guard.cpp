@@ -112,7 +112,8 @@ void Simulation::check_pairs() const {
     const int thin = h_a <= h_b ? a : b;
     const double kn = scene_.contact.kn;
     std::ostringstream s;
-    if (r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * e_max) {
+    const bool approach = r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * e_max;
+    if (approach) {
       s << "first contact with a relative approach energy of " << r.approach_energy << " J/m (closing speed "
         << speed << " m/s, effective mass " << m_eff << " kg/m), more than guards.max_approach_energy = "
         << g.max_approach_energy << " of the largest contact energy the pair can store, " << e_max
@@ -138,7 +139,7 @@ void Simulation::check_pairs() const {
         << " Pa or more (the depth falls as 1/sqrt(kn); lower dt with it), or lower the impact speed; "
            "guards.max_penetration = 0 switches this check off";
     }
-    stop_pair(a, b, s.str());
+    stop_pair(a, b, approach ? StopReason::kApproachEnergy : StopReason::kPenetration, s.str());
   }
 }
 
