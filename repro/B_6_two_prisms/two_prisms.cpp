@@ -27,6 +27,10 @@
 // of contact-point masses); claims in <out>/claims/B_6_two_prisms.csv.
 // Beyond the paper, as rows beside its method: the energy account per row,
 // the patch deletion with CdemOptions::patch_deletion = kEnergyMatched.
+// Sect. 5 as written (SubdivisionMode::kSubModel, the separate sub-model of
+// the colliding elements) against the in-place refinement (kInPlace, the
+// library default until the flip, beyond the paper): touch time, energy,
+// momentum, j's velocities and cost, in rows of their own.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -182,6 +186,15 @@ int main(int argc, char** argv) try {
   }
   mesh_csv.commit();
   std::vector<repro::Claim> claims = prisms::rows(r, coarse);
+  // Sect. 5 as written (SubdivisionMode::kSubModel) beside the in-place
+  // refinement (kInPlace): the same prisms in both modes.
+  {
+    const prisms::ModeRun sub = prisms::run_mode(dda::cdem::SubdivisionMode::kSubModel, divisions, dt);
+    const prisms::ModeRun inplace = prisms::run_mode(dda::cdem::SubdivisionMode::kInPlace, divisions, dt);
+    progress("sub-model: v_j " + format_short(sub.r.vj) + " m/s, k " + std::to_string(sub.k) + ", n " +
+             std::to_string(sub.n) + "; in-place v_j " + format_short(inplace.r.vj) + " m/s");
+    for (const repro::Claim& c : prisms::mode_rows(sub, inplace, coarse)) claims.push_back(c);
+  }
   // Beyond the paper (issue 23, item 4): the patch deletion's energy handed
   // to the coarse mesh (CdemOptions::patch_deletion = kEnergyMatched),
   // beside the paper's restriction above.
