@@ -201,6 +201,7 @@ int main(int argc, char** argv) try {
   {
     dda::cdem::CdemOptions matched_opt;
     matched_opt.patch_deletion = dda::cdem::PatchDeletion::kEnergyMatched;
+    matched_opt.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;  // patch_deletion is an in-place option
     dda::cdem::CdemScene matched_scene = dda::cdem::two_prisms(divisions, matched_opt);
     matched_scene.dt = dt;
     const prisms::Result matched = prisms::simulate(matched_scene);

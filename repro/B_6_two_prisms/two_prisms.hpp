@@ -174,6 +174,7 @@ struct MassPoint {
 inline MassPoint contact_mass_point(double target, int max_subdivision) {
   dda::cdem::CdemOptions o;
   o.contact_point_mass = target;
+  o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;  // contact_point_mass is an in-place option
   o.max_subdivision = max_subdivision;
   const Result r = simulate(dda::cdem::two_prisms(kPaperDivisionsForMass, o));
   return {target, r.touch.subdivision, r.touch.mass_main, r.touch.mass_target, r.touch.energy_loss,
