@@ -542,4 +542,49 @@ inline std::vector<repro::Claim> mode_rows(const ModeRun& sub, const ModeRun& in
   return claims;
 }
 
+// The sub-model (Sect. 5 as written) on the refinement study's meshes (dt
+// with h, as mesh_point): j's velocities and the momentum drift, or the
+// solver's stop message.
+struct SubMeshPoint {
+  int divisions = 0;
+  double dt = 0.0, vj = 0.0, node_vj_fig14c = 0.0, t_sep = -1.0, momentum = 0.0;
+  std::string stopped;  // empty: the run finished
+};
+inline SubMeshPoint submodel_mesh_point(int divisions) {
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = dda::cdem::SubdivisionMode::kSubModel;
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(divisions, o);
+  s.dt = kPaperDt * kPaperDivisions / divisions;
+  SubMeshPoint p;
+  p.divisions = divisions;
+  p.dt = s.dt;
+  try {
+    const Result r = simulate(s);
+    p.vj = r.vj;
+    p.node_vj_fig14c = r.peak_node_vj_at_fig14c;
+    p.t_sep = r.t_sep;
+    p.momentum = r.worst_momentum;
+  } catch (const dda::SimulationError& e) {
+    p.stopped = e.what();
+  }
+  return p;
+}
+inline repro::Claim submodel_mesh_row(const std::vector<SubMeshPoint>& pts) {
+  using repro::format_short;
+  std::string text;
+  for (const SubMeshPoint& p : pts) {
+    text += (text.empty() ? "" : "; ") + std::to_string(p.divisions) + " divisions: ";
+    text += p.stopped.empty() ? "v_j " + format_short(p.vj, 5) + " m/s, nodal v_x at 0.3400 s " +
+                                    format_short(p.node_vj_fig14c, 4) + " m/s, separation " + format_short(p.t_sep, 6) +
+                                    " s, max |p - p0| / p0 " + format_short(p.momentum, 3)
+                              : "stopped: " + p.stopped.substr(0, 110);
+  }
+  return repro::measurement(
+      "B-6", "Sect. 5 as written (sub-model): mesh refinement of j's velocity and of the momentum drift (dt with h)",
+      "\"the velocity of block j after collision is approximately equal to the initial velocity of block i\"",
+      text + "; table mesh_study_submodel.csv",
+      "the sub-model's free sub-nodes duplicate the colliding elements' mass: the drift shrinks with the colliding "
+      "elements (h)");
+}
+
 }  // namespace prisms
