@@ -110,7 +110,7 @@ void Model::request_submodel(int main_node, Vec2 point, int ea, int eb, const To
   touch_of_request_.push_back(static_cast<int>(touches_.size()));
 }
 
-void Model::create_submodel(const SubRequest& req, int touch_index) {
+void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
   if (elem_sub_.empty()) elem_sub_.assign(elems_.size(), -1);
   const int m = req.main_node;
   const int bm = node_block_[m], bt = node_block_[req.ea];
@@ -193,8 +193,8 @@ void Model::create_submodel(const SubRequest& req, int touch_index) {
       for (int e2 : info.elems)
         if (e2 >= 0 && !in_parents(e2)) shared_out = true;
       std::vector<int> ids;
-      for (int t = 1; t < k; ++t) {
-        const double w = static_cast<double>(t) / k;
+      for (int q = 1; q < k; ++q) {
+        const double w = static_cast<double>(q) / k;
         ids.push_back(add_node(lerp(x_[info.lo], x_[info.hi], w), lerp(v_[info.lo], v_[info.hi], w), block, shared_out,
                                info.lo, info.hi, w));
       }
@@ -237,16 +237,16 @@ void Model::create_submodel(const SubRequest& req, int touch_index) {
         }
       }
     const double mass = pe.mass / (static_cast<double>(k) * k);
-    for (const auto& t : lattice) {
+    for (const auto& lt : lattice) {
       SubElem se;
-      se.n = {lat[static_cast<std::size_t>(t[0])], lat[static_cast<std::size_t>(t[1])], lat[static_cast<std::size_t>(t[2])]};
+      se.n = {lat[static_cast<std::size_t>(lt[0])], lat[static_cast<std::size_t>(lt[1])], lat[static_cast<std::size_t>(lt[2])]};
       se.parent = e;
       // the parent's stress and reference configuration (its corners at its
       // last evaluation, interpolated): the first evaluation adds the
       // parent's strain increment since then, as the parent's would
       se.stress = pe.stress;
       for (int q = 0; q < 3; ++q) {
-        const auto& ab = lat_ab[static_cast<std::size_t>(t[q])];
+        const auto& ab = lat_ab[static_cast<std::size_t>(lt[q])];
         se.last[q] = pe.last[0] + ab[0] * (pe.last[1] - pe.last[0]) + ab[1] * (pe.last[2] - pe.last[0]);
       }
       se.mass = mass;
@@ -272,7 +272,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index) {
   s.substeps = std::max(1, static_cast<int>(std::ceil(dt_ / (opt_.substep_safety * sub_critical) - kCeilSlack)));
 
   SubModelRecord record;
-  record.created = time_;
+  record.created = t;
   record.main_node = m;
   record.main_block = bm;
   record.target_block = bt;
@@ -292,7 +292,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index) {
   const int index = static_cast<int>(subs_.size());
   for (int e : parents) elem_sub_[e] = index;
   subs_.push_back(std::move(s));
-  submodel_forces(subs_.back(), time_);
+  submodel_forces(subs_.back(), t);
   // the sub-elements take their parents' stress on the same area: the strain
   // energy changes by round-off only; measured as refine_loss
   refine_loss_ += energy_before - energy().strain;
@@ -372,10 +372,7 @@ void Model::advance_submodels(double t0, double t1) {
     submodel_records_[static_cast<std::size_t>(s.record)].substeps_taken += n;
     sub_substeps_taken_ += n;
   }
-  const double t_save = time_;
-  time_ = t1;
-  for (std::size_t r = 0; r < sub_requests_.size(); ++r) create_submodel(sub_requests_[r], touch_of_request_[r]);
-  time_ = t_save;
+  for (std::size_t r = 0; r < sub_requests_.size(); ++r) create_submodel(sub_requests_[r], touch_of_request_[r], t1);
   sub_requests_.clear();
   touch_of_request_.clear();
 }

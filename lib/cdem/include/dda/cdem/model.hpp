@@ -589,7 +589,7 @@ class Model {
            opt_.contact == ContactMode::kTwoScale;
   }
   void request_submodel(int main_node, Vec2 point, int ea, int eb, const TouchRecord& rec);
-  void create_submodel(const SubRequest& req, int touch_index);
+  void create_submodel(const SubRequest& req, int touch_index, double t);
   void advance_submodels(double t0, double t1);
   void submodel_forces(SubModel& s, double t);
   void add_submodel_forces();
