@@ -1,9 +1,10 @@
 """Issue 23 item 2, the impact study of Paper B's two-scale contact: maps of the
 cells (impact angle x speed), one panel per friction and subdivision.
 
-Rows 1-2: normal restitution e of the block-average velocities (subdivision
-off / on); rows 3-4: the tangential impulse against the rigid-body
-stick/slide law, (J_t - J_t,law) / J_n. Each cell is labelled with the
+Rows 1-3: normal restitution e of the block-average velocities (subdivision
+off / on, the in-place refinement / sub-model, Paper B Sect. 5 as written);
+rows 4-6: the tangential impulse against the rigid-body stick/slide law,
+(J_t - J_t,law) / J_n. Each cell is labelled with the
 per-cell criteria it fails: P pass-through, E kinetic energy grows,
 S no separation, L touch loss above Eq. 5, T run loss above the blocks'
 Eq. 5, C Coulomb |J_t| > mu J_n, R off the rigid law; a stopped run is
@@ -32,7 +33,7 @@ LETTERS = [("ok_pass_through", "P"), ("ok_energy", "E"), ("ok_separation", "S"),
 angles = sorted({float(r["angle_deg"]) for r in rows})
 speeds = sorted({float(r["speed"]) for r in rows})
 mus = sorted({float(r["mu"]) for r in rows})
-subs = ["off", "on"]
+subs = [s for s in ["off", "on", "sub-model"] if any(r["subdivision"] == s for r in rows)]
 
 
 def value(r, key):
@@ -64,10 +65,10 @@ def tangential(r):
 
 panels = [("restitution e", lambda r: value(r, "restitution"), "viridis", (0.4, 0.85)),
           ("(J_t - J_t,law) / J_n", tangential, "RdBu_r", (-1.0, 1.0))]
-fig, axes = plt.subplots(4, len(mus), figsize=(4.6 * len(mus), 14.5), layout="constrained")
+fig, axes = plt.subplots(2 * len(subs), len(mus), figsize=(4.6 * len(mus), 3.6 * 2 * len(subs)), layout="constrained")
 for p, (name, f, cmap, (lo, hi)) in enumerate(panels):
     for s, sub in enumerate(subs):
-        row = 2 * p + s
+        row = len(subs) * p + s
         for c, mu in enumerate(mus):
             ax = axes[row, c]
             z, lab = grid(sub, mu, f)

@@ -27,6 +27,11 @@
 // of contact-point masses); claims in <out>/claims/B_6_two_prisms.csv.
 // Beyond the paper, as rows beside its method: the energy account per row,
 // the patch deletion with CdemOptions::patch_deletion = kEnergyMatched.
+// Sect. 5 as written (SubdivisionMode::kSubModel, the separate sub-model of
+// the colliding elements) against the in-place refinement (kInPlace, the
+// library default until the flip, beyond the paper): touch time, energy,
+// momentum, j's velocities and cost, in rows of their own; the sub-model on
+// the refinement study's meshes in mesh_study_submodel.csv.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -182,12 +187,38 @@ int main(int argc, char** argv) try {
   }
   mesh_csv.commit();
   std::vector<repro::Claim> claims = prisms::rows(r, coarse);
+  // Sect. 5 as written (SubdivisionMode::kSubModel) beside the in-place
+  // refinement (kInPlace): the same prisms in both modes.
+  {
+    const prisms::ModeRun sub = prisms::run_mode(dda::cdem::SubdivisionMode::kSubModel, divisions, dt);
+    const prisms::ModeRun inplace = prisms::run_mode(dda::cdem::SubdivisionMode::kInPlace, divisions, dt);
+    progress("sub-model: v_j " + format_short(sub.r.vj) + " m/s, k " + std::to_string(sub.k) + ", n " +
+             std::to_string(sub.n) + "; in-place v_j " + format_short(inplace.r.vj) + " m/s");
+    for (const repro::Claim& c : prisms::mode_rows(sub, inplace, coarse)) claims.push_back(c);
+    std::vector<prisms::SubMeshPoint> sub_mesh;
+    repro::CsvWriter sub_csv(dir + "mesh_study_submodel.csv",
+                             {"divisions", "dt", "vj_block_average", "vj_node_at_0.34", "t_sep", "momentum_drift",
+                              "stopped"},
+                             {std::string("Paper B Sect. 5 as written (sub-model) on the refinement study's meshes, dt "
+                                          "scaled with the element size; ") + kRebuilt});
+    for (int d : kMeshDivisions) {
+      sub_mesh.push_back(prisms::submodel_mesh_point(d));
+      const prisms::SubMeshPoint& p = sub_mesh.back();
+      const bool ok = p.stopped.empty();  // a stopped run's fields are no data
+      auto num = [&](double x) { return ok ? repro::format_full(x) : std::string(); };
+      sub_csv.row(std::vector<std::string>{std::to_string(d), repro::format_full(p.dt), num(p.vj), num(p.node_vj_fig14c),
+                                           num(p.t_sep), num(p.momentum), ok ? "" : "stopped"});
+    }
+    sub_csv.commit();
+    claims.push_back(prisms::submodel_mesh_row(sub_mesh));
+  }
   // Beyond the paper (issue 23, item 4): the patch deletion's energy handed
   // to the coarse mesh (CdemOptions::patch_deletion = kEnergyMatched),
   // beside the paper's restriction above.
   {
     dda::cdem::CdemOptions matched_opt;
     matched_opt.patch_deletion = dda::cdem::PatchDeletion::kEnergyMatched;
+    matched_opt.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;  // patch_deletion is an in-place option
     dda::cdem::CdemScene matched_scene = dda::cdem::two_prisms(divisions, matched_opt);
     matched_scene.dt = dt;
     const prisms::Result matched = prisms::simulate(matched_scene);

@@ -4,7 +4,10 @@
 // same criteria to deliberately wrong configurations.
 #pragma once
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <ctime>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -171,6 +174,7 @@ struct MassPoint {
 inline MassPoint contact_mass_point(double target, int max_subdivision) {
   dda::cdem::CdemOptions o;
   o.contact_point_mass = target;
+  o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;  // contact_point_mass is an in-place option
   o.max_subdivision = max_subdivision;
   const Result r = simulate(dda::cdem::two_prisms(kPaperDivisionsForMass, o));
   return {target, r.touch.subdivision, r.touch.mass_main, r.touch.mass_target, r.touch.energy_loss,
@@ -400,6 +404,187 @@ inline double observed_order(const std::vector<double>& v) {
   if (v.size() < 3) return 0.0;
   const double d1 = std::fabs(v[v.size() - 2] - v[v.size() - 3]), d2 = std::fabs(v.back() - v[v.size() - 2]);
   return d1 > 0.0 && d2 > 0.0 ? std::log2(d1 / d2) : 0.0;
+}
+
+// ---- Sect. 5 as written (SubdivisionMode::kSubModel) beside the in-place
+// refinement (kInPlace, beyond the paper): the same prisms in both modes -----
+struct ModeRun {
+  Result r;
+  double wall = 0.0, cpu = 0.0;  // s, the run (construction included)
+  std::int64_t substeps = 0;     // fine substeps taken (sub-model or patch steps)
+  int k = 0, n = 0;              // subdivision k and substeps per coarse step (first sub-model / the patch's largest)
+  int submodels = 0;             // sub-models made (kSubModel)
+  double kinetic_dropped = 0.0;  // kSubModel: fine-scale kinetic energy dropped at the deletions, J/m
+  double submodel_deleted = -1.0;  // kSubModel: when the first sub-model was deleted, s
+};
+inline ModeRun run_mode(dda::cdem::SubdivisionMode mode, int divisions, double dt) {
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = mode;
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(divisions, o);
+  s.dt = dt;
+  ModeRun run;
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::clock_t cpu0 = std::clock();
+  run.r = simulate(s, [&](const dda::cdem::Model& m) {
+    if (m.submodels().empty()) {
+      run.substeps = m.patch_substeps_taken();
+      run.k = m.subdivision_level();
+      run.n = std::max(run.n, m.patch_substeps());
+      return;
+    }
+    run.submodels = static_cast<int>(m.submodels().size());
+    run.k = m.submodels().front().k;
+    run.n = m.submodels().front().substeps;
+    run.substeps = 0;
+    run.kinetic_dropped = 0.0;
+    for (const auto& sm : m.submodels()) {
+      run.substeps += sm.substeps_taken;
+      run.kinetic_dropped += sm.kinetic_dropped;
+    }
+    run.submodel_deleted = m.submodels().front().deleted;
+  });
+  run.cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  run.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return run;
+}
+// The touch at the two-stage touch time 1/3 s (straight path, solved
+// exactly: round-off).
+inline bool touch_time_exact(const dda::cdem::TouchRecord& t) { return std::fabs(t.time - 1.0 / 3.0) < 1e-12; }
+// The mechanical energy (kinetic + strain + gravity) of every time-series
+// row over the initial one: the clone impact (Eq. 4) and the deletions only
+// remove energy, central differences below the critical step do not add any.
+inline double max_energy_ratio(const std::vector<dda::cdem::CdemEnergyAccount>& rows) {
+  double worst = 0.0;
+  for (const dda::cdem::CdemEnergyAccount& a : rows) worst = std::max(worst, (a.kinetic + a.strain + a.gravity) / a.initial);
+  return worst;
+}
+inline constexpr double kEnergyGrowthSlack = 1e-9;  // round-off of sums of ~1e3 terms, relative to E0
+inline bool energy_never_grows(const std::vector<dda::cdem::CdemEnergyAccount>& rows) {
+  return !rows.empty() && max_energy_ratio(rows) <= 1.0 + kEnergyGrowthSlack;
+}
+inline constexpr double kMomentumRoundOff = 1e-12;  // relative: the other rows' momentum tolerance
+inline bool momentum_conserved(const Result& r) { return r.worst_momentum < kMomentumRoundOff; }
+// The negative controls in repro/common/controls_submodel.cpp.
+inline const char* const kTestSubTouch = "B-6 sub-model touch time: FAIL with the gap 0.1 m wider";
+inline const char* const kTestSubEnergy =
+    "B-6 sub-model energy never grows: FAIL on a series 1 % above E0 and with dt above the critical step";
+inline const char* const kTestSubMomentum =
+    "B-6 sub-model momentum: PASS with k = 1 (each sub-model one element), FAIL with k = 6";
+
+// The rows comparing the paper's sub-model with the in-place refinement
+// (and the run without subdivision).
+inline std::vector<repro::Claim> mode_rows(const ModeRun& sub, const ModeRun& inplace, const Result& coarse) {
+  using repro::format_short;
+  std::vector<repro::Claim> claims;
+  const Result& a = sub.r;
+  const Result& b = inplace.r;
+  claims.push_back({"B-6",
+                    "Sect. 5 as written (sub-model): the touch is at the two-stage touch time, as with the in-place "
+                    "refinement",
+                    "0.3333 s (1 m at 3.0 m/s); Sect. 5's sub-model leaves the coarse contact as it is",
+                    "sub-model t = " + format_short(a.touch.time, 12) + " s, in-place t = " +
+                        format_short(b.touch.time, 12) + " s, without subdivision " + format_short(coarse.touch.time, 12) +
+                        " s",
+                    "|t - 1/3| < 1e-12 s in both modes", touch_time_exact(a.touch) && touch_time_exact(b.touch)});
+  claims.back().control = repro::control_test(kTestSubTouch);
+  claims.push_back({"B-6",
+                    "Sect. 5 as written (sub-model): the energy never grows above its initial value",
+                    "'A little energy loss occurs'",
+                    "max (kinetic + strain) / E0 over the rows: sub-model " + format_short(max_energy_ratio(a.accounts), 10) +
+                        " (the in-place refinement beside, beyond the paper: " +
+                        format_short(max_energy_ratio(b.accounts), 10) + ", its patch steps' transient)",
+                    "<= 1 + 1e-9 with the sub-model (Eq. 4 and the deletion remove energy; central differences below "
+                    "the critical step add none)",
+                    energy_never_grows(a.accounts)});
+  claims.back().control = repro::control_test(kTestSubEnergy);
+  claims.push_back({"B-6", "Sect. 5 as written (sub-model): momentum is conserved through the collision",
+                    "'momentum conservation applied'",
+                    "max |p - p0| / p0: sub-model " + format_short(a.worst_momentum, 3) + " (k " + std::to_string(sub.k) +
+                        ", n " + std::to_string(sub.n) + "), in-place " + format_short(b.worst_momentum, 3) +
+                        ", without subdivision " + format_short(coarse.worst_momentum, 3),
+                    "< 1e-12 (round-off) with the sub-model", momentum_conserved(a)});
+  claims.back().control = repro::control_test(kTestSubMomentum);
+  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+                      "Sect. 5 steps 3-5: the sub-model's free sub-nodes (inside the colliding elements and on their "
+                      "free boundary) carry mass the coarse nodes carry too, and the sub-elements' force returned to "
+                      "the coarse nodes (step 5) includes those sub-nodes' inertia, so the coarse model's forces no "
+                      "longer sum to zero while a sub-model lives; with k = 1 (no free sub-node) momentum is exact. "
+                      "The in-place refinement (beyond the paper, beside) moves the mass into the patch and keeps "
+                      "momentum to round-off");
+  auto worst_other = [](const Result& r) { return worst_energy_remainder(r.accounts); };
+  claims.push_back(repro::measurement(
+      "B-6", "Sect. 5 as written (sub-model) against the in-place refinement: block j's velocities and the separation",
+      "Fig. 14c: j 'from 0.0 to 3.205 m/s' (0.3400 s); Fig. 15a: separated at 0.3405 s; Fig. 16: j ends with about "
+      "i's initial 3.0 m/s",
+      "j's block-average v_x at 0.5 s: sub-model " + format_short(a.vj, 5) + ", in-place " + format_short(b.vj, 5) +
+          ", without subdivision " + format_short(coarse.vj, 5) + " m/s; j's largest nodal v_x at 0.3400 s: " +
+          format_short(a.peak_node_vj_at_fig14c, 4) + ", " + format_short(b.peak_node_vj_at_fig14c, 4) + ", " +
+          format_short(coarse.peak_node_vj_at_fig14c, 4) + " m/s; separation at " + format_short(a.t_sep, 6) + ", " +
+          format_short(b.t_sep, 6) + ", " + format_short(coarse.t_sep, 6) + " s; i at 0.5 s " + format_short(a.vi, 4) +
+          ", " + format_short(b.vi, 4) + ", " + format_short(coarse.vi, 4) + " m/s",
+      "the paper's procedure and the option beyond it on the same rebuilt prisms (" + std::string(kRebuilt) + ")"));
+  claims.push_back(repro::measurement(
+      "B-6", "Sect. 5 as written (sub-model) against the in-place refinement: energy account, momentum and cost",
+      "not stated",
+      "worst |other| / E0 over the rows: sub-model " + format_short(worst_other(a), 3) + ", in-place " +
+          format_short(worst_other(b), 3) + ", without subdivision " + format_short(worst_other(coarse), 3) +
+          "; at 0.5 s E / E0 " + format_short((a.e_end.total()) / a.e0, 4) + ", " + format_short(b.e_end.total() / b.e0, 4) +
+          ", " + format_short(coarse.e_end.total() / coarse.e0, 4) + "; sub-model deletion loss " +
+          format_short(a.accounts.back().deletion_loss, 4) + " J/m and fine-scale kinetic energy dropped " +
+          format_short(sub.kinetic_dropped, 4) + " J/m (E0 " + format_short(a.e0, 7) + " J/m); max |p - p0| / p0 " +
+          format_short(a.worst_momentum, 3) + ", " + format_short(b.worst_momentum, 3) + "; cost: sub-model " +
+          std::to_string(sub.submodels) + " sub-model(s), k " + std::to_string(sub.k) + ", n " + std::to_string(sub.n) +
+          ", " + std::to_string(sub.substeps) + " substeps, wall " + format_short(sub.wall, 3) + " s, CPU " +
+          format_short(sub.cpu, 3) + " s; in-place k " + std::to_string(inplace.k) + ", n " + std::to_string(inplace.n) +
+          ", " + std::to_string(inplace.substeps) + " patch steps, wall " + format_short(inplace.wall, 3) + " s, CPU " +
+          format_short(inplace.cpu, 3) + " s",
+      "other: the account's remainder (the sub-model's returned inertia enters it); cost on this machine"));
+  return claims;
+}
+
+// The sub-model (Sect. 5 as written) on the refinement study's meshes (dt
+// with h, as mesh_point): j's velocities and the momentum drift, or the
+// solver's stop message.
+struct SubMeshPoint {
+  int divisions = 0;
+  double dt = 0.0, vj = 0.0, node_vj_fig14c = 0.0, t_sep = -1.0, momentum = 0.0;
+  std::string stopped;  // empty: the run finished
+};
+inline SubMeshPoint submodel_mesh_point(int divisions) {
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = dda::cdem::SubdivisionMode::kSubModel;
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(divisions, o);
+  s.dt = kPaperDt * kPaperDivisions / divisions;
+  SubMeshPoint p;
+  p.divisions = divisions;
+  p.dt = s.dt;
+  try {
+    const Result r = simulate(s);
+    p.vj = r.vj;
+    p.node_vj_fig14c = r.peak_node_vj_at_fig14c;
+    p.t_sep = r.t_sep;
+    p.momentum = r.worst_momentum;
+  } catch (const dda::SimulationError& e) {
+    p.stopped = e.what();
+  }
+  return p;
+}
+inline repro::Claim submodel_mesh_row(const std::vector<SubMeshPoint>& pts) {
+  using repro::format_short;
+  std::string text;
+  for (const SubMeshPoint& p : pts) {
+    text += (text.empty() ? "" : "; ") + std::to_string(p.divisions) + " divisions: ";
+    text += p.stopped.empty() ? "v_j " + format_short(p.vj, 5) + " m/s, nodal v_x at 0.3400 s " +
+                                    format_short(p.node_vj_fig14c, 4) + " m/s, separation " + format_short(p.t_sep, 6) +
+                                    " s, max |p - p0| / p0 " + format_short(p.momentum, 3)
+                              : "stopped: " + p.stopped.substr(0, 110);
+  }
+  return repro::measurement(
+      "B-6", "Sect. 5 as written (sub-model): mesh refinement of j's velocity and of the momentum drift (dt with h)",
+      "\"the velocity of block j after collision is approximately equal to the initial velocity of block i\"",
+      text + "; table mesh_study_submodel.csv",
+      "the sub-model's free sub-nodes duplicate the colliding elements' mass: the drift shrinks with the colliding "
+      "elements (h)");
 }
 
 }  // namespace prisms

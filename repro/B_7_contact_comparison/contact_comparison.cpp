@@ -3,7 +3,10 @@
 //   A  : Paper A's 6-DOF DDA blocks with the potential-based penalty contact
 //        (dda::Simulation, kn as in the scene),
 //   B  : Paper B's CDEM blocks (CST meshes) with the two-scale contact
-//        (time-of-impact split, clone node, local subdivision),
+//        (time-of-impact split, clone node, local subdivision; the
+//        subdivision is the in-place refinement, SubdivisionMode::kInPlace,
+//        set explicitly: a study, not a paper figure, so its outputs do not
+//        follow the library default),
 //   B0 : the same without local subdivision (clone of coarse nodes),
 //   P  : baseline, not Paper B: the conventional node-to-edge penalty
 //        contact on B0's CST meshes (kn = E/100, frictionless, undamped;

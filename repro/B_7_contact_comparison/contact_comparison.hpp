@@ -195,6 +195,7 @@ inline std::vector<SceneDef> scene_defs(const Settings& set = {}) {
        [pg, pd](bool sub) {
          dda::cdem::CdemOptions o;
          o.subdivision = sub;
+         o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;  // B: the in-place refinement, explicitly
          return dda::cdem::two_prisms(pd, o, pg);
        },
        halving(set.prisms_dt, 5)},
@@ -206,6 +207,7 @@ inline std::vector<SceneDef> scene_defs(const Settings& set = {}) {
        [sd](bool sub) {
          dda::cdem::CdemOptions o;
          o.subdivision = sub;
+         o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;  // B: the in-place refinement, explicitly
          return dda::cdem::two_squares(sd, o);
        },
        halving(set.squares_dt, 4)},

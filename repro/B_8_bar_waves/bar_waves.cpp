@@ -17,7 +17,9 @@
 // (striker 0, target v), energy kept.
 //
 // Models:
-//   B  : CDEM (Paper B), clone node + local subdivision;
+//   B  : CDEM (Paper B), clone node + local subdivision (the in-place
+//        refinement, SubdivisionMode::kInPlace, set explicitly: a study,
+//        not a paper figure, so its outputs do not follow the default);
 //   B0 : CDEM, clone node without subdivision;
 //   A  : Paper A's 6-DOF DDA blocks with the penalty contact (kn = E / 100,
 //        Paper A Sect. 4.1's ratio; also a kn sweep).

@@ -4,7 +4,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cmath>
 
+#include "dda/block.hpp"
 #include "dda/vec2.hpp"
 
 namespace dda::cdem::detail {
@@ -40,6 +42,55 @@ inline Eigen::Matrix<double, 6, 6> element_stiffness(const std::array<Vec2, 3>& 
     b(2, 2 * i + 1) = g.b[i] * s;
   }
   return g.area * b.transpose() * d * b;
+}
+
+// Paper B Eqs. 2-3, one incremental step of a constant-strain triangle at
+// its current corners x: the strain increment from the displacement since
+// `last` with B of the mid configuration, the stress rotated by the
+// element's incremental rotation and incremented with D d_eps (`last` and
+// `stress` updated); f the nodal forces -A B^T sigma with B of x. Returns 1
+// when the mid configuration is inverted, 2 when x is, 0 otherwise (the
+// caller names the element in its error). Shared by the coarse and patch
+// elements (model_elements.cpp) and the sub-model (model_submodel.cpp).
+inline int cst_incremental_force(const std::array<Vec2, 3>& x, std::array<Vec2, 3>& last, Vec3& stress,
+                                 const Mat3& d, std::array<Vec2, 3>& f) {
+  std::array<Vec2, 3> du, mid;
+  bool moved = false;
+  for (int i = 0; i < 3; ++i) {
+    du[i] = x[i] - last[i];
+    mid[i] = 0.5 * (x[i] + last[i]);
+    moved = moved || du[i] != Vec2{};
+  }
+  if (moved) {
+    const Cst g = cst(mid);
+    if (!(g.area > 0.0)) return 1;
+    const double r = 1.0 / (2.0 * g.area);
+    double exx = 0.0, eyy = 0.0, gxy = 0.0, rot = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      exx += g.b[i] * du[i].x;
+      eyy += g.c[i] * du[i].y;
+      gxy += g.c[i] * du[i].x + g.b[i] * du[i].y;
+      rot += g.b[i] * du[i].y - g.c[i] * du[i].x;
+    }
+    exx *= r;
+    eyy *= r;
+    gxy *= r;
+    rot *= 0.5 * r;
+    if (rot != 0.0) {
+      const double cs = std::cos(rot), sn = std::sin(rot);
+      const double sxx = stress[0], syy = stress[1], sxy = stress[2];
+      stress[0] = cs * cs * sxx - 2.0 * cs * sn * sxy + sn * sn * syy;
+      stress[1] = sn * sn * sxx + 2.0 * cs * sn * sxy + cs * cs * syy;
+      stress[2] = cs * sn * (sxx - syy) + (cs * cs - sn * sn) * sxy;
+    }
+    stress += d * Vec3(exx, eyy, gxy);
+    last = x;
+  }
+  const Cst g = cst(x);
+  if (!(g.area > 0.0)) return 2;
+  for (int i = 0; i < 3; ++i)
+    f[i] = Vec2{-0.5 * (g.b[i] * stress[0] + g.c[i] * stress[2]), -0.5 * (g.b[i] * stress[2] + g.c[i] * stress[1])};
+  return 0;
 }
 
 inline double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {

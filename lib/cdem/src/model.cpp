@@ -4,7 +4,10 @@
 //   Sect. 3   touch detection, time of impact ............ model_touch.cpp
 //   Sect. 4.1 clone nodes, inelastic impact, Eqs. 4-5 .... model_clone.cpp
 //   Sect. 4.2 interaction force and separation, Eqs. 6-11  model_separation.cpp
-//   Sect. 5   local subdivision, patch steps, Eq. 12 ..... model_subdivision.cpp
+//   Sect. 5   sub-model of the colliding elements, Eq. 12  model_submodel.cpp
+//             (the paper's steps 1-5; SubdivisionMode::kSubModel)
+//   Sect. 5   in-place refinement, patch steps ........... model_subdivision.cpp
+//             (beyond the paper; SubdivisionMode::kInPlace)
 //   energy, momentum and other read-out ................. model_energy.cpp
 //   baseline: node-to-edge penalty contact (not Paper B)  model_penalty.cpp
 #include "dda/cdem/model.hpp"
@@ -58,10 +61,15 @@ void Model::step() {
   // Sects. 2-3: touches on the collision path of the step, with their time
   // of impact t0 + dt1.
   const std::vector<Touch> touches = coarse_touches(t0);
-  if (!opt_.subdivision) {
+  if (!opt_.subdivision || submodel_mode()) {
     // Sects. 3-4.1: free motion over dt1, the clone node and its inelastic
     // impact (Eqs. 4-5), motion as a clone over dt2.
     literal_two_stage(touches, t0);
+    // Sect. 5 as written (kSubModel): the sub-models of the colliding
+    // elements integrated over the step with dt/n, driven by the coarse
+    // nodes' motion (steps 2-4, Eq. 12); this step's touches get theirs
+    // (step 1).
+    if (submodel_mode()) advance_submodels(t0, t1);
   } else {
     // Sect. 5: the contact zone refined at each touch and integrated with
     // steps dt/n (Eq. 12), touches inside found at the patch scale.
@@ -72,8 +80,13 @@ void Model::step() {
   // Sect. 2, Eqs. 2-3: element forces at t1; Sect. 4.2: clone forces
   // (Eq. 11) and separation (Eqs. 6-10); the second half-kick.
   forces_and_second_half_kick();
-  // Sect. 5: patches whose clone nodes all separated are deleted.
-  if (opt_.subdivision && dissolve_free_patches()) refresh_forces_after_patch_change(t1);
+  // Sect. 5: sub-models (kSubModel) or patches (kInPlace) whose clone
+  // nodes all separated are deleted.
+  if (submodel_mode()) {
+    if (delete_separated_submodels()) refresh_forces_after_patch_change(t1);
+  } else if (opt_.subdivision && dissolve_free_patches()) {
+    refresh_forces_after_patch_change(t1);
+  }
   ++steps_;
   check_state();
 }

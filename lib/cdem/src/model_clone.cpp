@@ -250,7 +250,10 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
   rec.target_block = bt;
   rec.point = point;
 
-  if (opt_.subdivision) refine_contact_zone(m, point, ea, eb, xi, rec);
+  if (submodel_mode())
+    request_submodel(m, point, ea, eb, rec);  // Sect. 5 step 1, built at the step end
+  else if (opt_.subdivision)
+    refine_contact_zone(m, point, ea, eb, xi, rec);
 
   Clone c;
   c.main = m;

@@ -40,60 +40,24 @@ void Model::add_node_force(int n, Vec2 f, bool patch_eval) {
 // D d_eps; nodal forces -A B^T sigma with B of the current configuration.
 void Model::element_force(Elem& e, bool patch_eval) {
   const std::array<Vec2, 3> x{x_[e.n[0]], x_[e.n[1]], x_[e.n[2]]};
-  std::array<Vec2, 3> du, mid;
-  bool moved = false;
-  for (int i = 0; i < 3; ++i) {
-    du[i] = x[i] - e.last[i];
-    mid[i] = 0.5 * (x[i] + e.last[i]);
-    moved = moved || du[i] != Vec2{};
-  }
-  if (moved) {
-    const Cst g = cst(mid);
-    if (!(g.area > 0.0)) {
-      std::ostringstream s;
-      s << "cdem: element of block " << e.block << " inverted at t = " << time_ << " (step " << steps_ << ")";
-      throw SimulationError(s.str());
-    }
-    const double r = 1.0 / (2.0 * g.area);
-    double exx = 0.0, eyy = 0.0, gxy = 0.0, rot = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      exx += g.b[i] * du[i].x;
-      eyy += g.c[i] * du[i].y;
-      gxy += g.c[i] * du[i].x + g.b[i] * du[i].y;
-      rot += g.b[i] * du[i].y - g.c[i] * du[i].x;
-    }
-    exx *= r;
-    eyy *= r;
-    gxy *= r;
-    rot *= 0.5 * r;
-    if (rot != 0.0) {
-      const double cs = std::cos(rot), sn = std::sin(rot);
-      const double sxx = e.stress[0], syy = e.stress[1], sxy = e.stress[2];
-      e.stress[0] = cs * cs * sxx - 2.0 * cs * sn * sxy + sn * sn * syy;
-      e.stress[1] = sn * sn * sxx + 2.0 * cs * sn * sxy + cs * cs * syy;
-      e.stress[2] = cs * sn * (sxx - syy) + (cs * cs - sn * sn) * sxy;
-    }
-    e.stress += d_[blocks_[e.block].material] * Vec3(exx, eyy, gxy);
-    e.last = x;
-  }
-  const Cst g = cst(x);
-  if (!(g.area > 0.0)) {
+  std::array<Vec2, 3> f;
+  if (cst_incremental_force(x, e.last, e.stress, d_[blocks_[e.block].material], f) != 0) {
     std::ostringstream s;
     s << "cdem: element of block " << e.block << " inverted at t = " << time_ << " (step " << steps_ << ")";
     throw SimulationError(s.str());
   }
-  for (int i = 0; i < 3; ++i) {
-    const Vec2 f{-0.5 * (g.b[i] * e.stress[0] + g.c[i] * e.stress[2]),
-                 -0.5 * (g.b[i] * e.stress[2] + g.c[i] * e.stress[1])};
-    add_node_force(e.n[i], f, patch_eval);
-  }
+  for (int i = 0; i < 3; ++i) add_node_force(e.n[i], f[i], patch_eval);
 }
 
 void Model::compute_coarse_forces() {
   const Vec2 g = scene_.gravity;
   for (int n : coarse_dofs_) f_[n] = m_[n] * g - opt_.mass_damping * m_[n] * v_[n];
-  for (int e : coarse_eval_)
-    if (!blocks_[elem(e).block].fixed) element_force(elem(e), false);
+  for (int e : coarse_eval_) {
+    if (blocks_[elem(e).block].fixed) continue;
+    if (!elem_sub_.empty() && elem_sub_[e] >= 0) continue;  // Sect. 5 step 5: its sub-model's force instead
+    element_force(elem(e), false);
+  }
+  add_submodel_forces();
   solve_clones(false, time_);
   if (opt_.contact == ContactMode::kNodeToEdgePenalty) add_penalty_forces();
 }

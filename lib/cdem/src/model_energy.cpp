@@ -24,10 +24,12 @@ CdemEnergy Model::energy() const {
   en.contact = penalty_energy();
   for (const std::vector<int>* list : {&coarse_elems_, &fine_elems_})
     for (int ei : *list) {
+      if (!elem_sub_.empty() && elem_sub_[ei] >= 0) continue;  // counted in its sub-model
       const Elem& e = elem(ei);
       const double a = cst({x_[e.n[0]], x_[e.n[1]], x_[e.n[2]]}).area;
       en.strain += 0.5 * a * e.stress.dot(c_[blocks_[e.block].material] * e.stress);
     }
+  if (!subs_.empty()) en.strain += submodel_strain();
   for (std::size_t i = 0; i < x_.size(); ++i)
     if (kind_[i] == NodeKind::kCoarse || kind_[i] == NodeKind::kFine) en.gravity -= m_[i] * dot(scene_.gravity, x_[i]);
   return en;
@@ -111,8 +113,10 @@ int Model::active_elements(bool fine) const {
 Snapshot Model::snapshot() const {
   Snapshot s;
   s.time = time_;
-  for (const Elem& e : elems_) {
+  for (std::size_t ei = 0; ei < elems_.size(); ++ei) {
+    const Elem& e = elems_[ei];
     if (!e.active) continue;
+    if (!elem_sub_.empty() && elem_sub_[ei] >= 0) continue;  // drawn as its sub-model
     Snapshot::Tri t;
     t.x = {x_[e.n[0]], x_[e.n[1]], x_[e.n[2]]};
     t.velocity = (v_[e.n[0]] + v_[e.n[1]] + v_[e.n[2]]) / 3.0;
@@ -120,6 +124,15 @@ Snapshot Model::snapshot() const {
     t.fine = e.level > 0;
     s.tris.push_back(t);
   }
+  for (const SubModel& sm : subs_)
+    for (const SubElem& se : sm.elems) {
+      Snapshot::Tri t;
+      t.x = {sm.x[se.n[0]], sm.x[se.n[1]], sm.x[se.n[2]]};
+      t.velocity = (sm.v[se.n[0]] + sm.v[se.n[1]] + sm.v[se.n[2]]) / 3.0;
+      t.block = elem(se.parent).block;
+      t.fine = true;
+      s.tris.push_back(t);
+    }
   for (const Clone& c : clones_) s.clone_points.push_back(x_[c.main]);
   return s;
 }
@@ -137,6 +150,7 @@ CdemEnergyAccount Model::energy_account() const {
   a.touch_loss_eq5_group = touch_loss_eq5_group_;
   a.refine_loss = refine_loss_;
   a.deletion_loss = deletion_loss_;
+  a.submodel_kinetic = submodel_kinetic();
   a.other = a.initial - e.total() - a.touch_loss - a.refine_loss - a.deletion_loss;
   return a;
 }

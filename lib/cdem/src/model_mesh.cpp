@@ -70,6 +70,10 @@ void Model::build(const CdemScene& scene) {
     scene_fail("options.contact_point_mass", "must be finite and >= 0");
   if (opt_.contact_point_mass > 0.0 && !opt_.subdivision)
     scene_fail("options.contact_point_mass", "is set through the subdivision (Sect. 5): needs subdivision on");
+  if (opt_.contact_point_mass > 0.0 && opt_.subdivision && opt_.subdivision_mode == SubdivisionMode::kSubModel)
+    scene_fail("options.contact_point_mass",
+               "is set through the in-place refinement (SubdivisionMode::kInPlace); the sub-model (kSubModel) keeps "
+               "the coarse contact masses");
   if (!(std::isfinite(opt_.mass_damping) && opt_.mass_damping >= 0.0))
     scene_fail("options.mass_damping", "must be >= 0");
   if (scene.materials.empty()) scene_fail("materials", "at least one material is needed");

@@ -60,6 +60,7 @@ CdemScene oblique_squares(bool subdivision = true) {
   b.divisions = 2;
   s.blocks = {a, b};
   s.options.subdivision = subdivision;
+  s.options.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   s.options.strength.friction_deg = 0.0;
   return s;
 }
@@ -70,6 +71,7 @@ TEST_CASE("energy account of the prisms (Paper B Sect. 6) closes", "[cdem][energ
   for (bool sub : {true, false}) {
     CdemOptions o;
     o.subdivision = sub;
+    o.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
     const Worst w = run_account(two_prisms(2, o), 0.5);
     INFO("subdivision " << sub << " worst |other|/E0 " << w.other << " touch " << w.last.touch_loss << " deletion "
                         << w.last.deletion_loss);
@@ -107,6 +109,7 @@ TEST_CASE("energy-matched patch deletion keeps the energy the restriction drops"
     double loss[2] = {0.0, 0.0};
     for (PatchDeletion d : {PatchDeletion::kAtSeparation, PatchDeletion::kEnergyMatched}) {
       CdemScene s = scene == 0 ? two_prisms(2) : oblique_squares();
+      s.options.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement's patch deletion
       s.options.patch_deletion = d;
       const double t_end = scene == 0 ? 0.5 : 0.03;
       const Worst w = run_account(s, t_end);
@@ -132,13 +135,16 @@ TEST_CASE("energy-matched patch deletion keeps the energy the restriction drops"
 constexpr double kEq5Relative = 1e-9;  // one touch: the projection is Eq. 5 up to round-off (measured 2e-16)
 
 TEST_CASE("contact-point mass sets the touch's loss (Eq. 5)", "[cdem][energy]") {
-  Model paper(two_prisms(2));
+  CdemOptions inplace;
+  inplace.subdivision_mode = SubdivisionMode::kInPlace;
+  Model paper(two_prisms(2, inplace));
   paper.advance_to(0.34);
   const double m_node = Model(two_prisms(2)).node_mass(paper.touches().front().main_node);  // coarse lumped mass
   double previous = 0.0;
   for (int k : {8, 4, 2}) {  // rising mass
     CdemOptions o;
     o.contact_point_mass = m_node / (k * k);
+    o.subdivision_mode = SubdivisionMode::kInPlace;  // contact_point_mass is an in-place option
     o.max_subdivision = 8;
     Model m(two_prisms(2, o));
     m.advance_to(0.34);
@@ -153,6 +159,7 @@ TEST_CASE("contact-point mass sets the touch's loss (Eq. 5)", "[cdem][energy]") 
   }
   CdemOptions too_light;
   too_light.contact_point_mass = m_node / 1000.0;  // needs k = 32 > max_subdivision 6
+  too_light.subdivision_mode = SubdivisionMode::kInPlace;
   Model m(two_prisms(2, too_light));
   CHECK_THROWS_AS(m.advance_to(0.34), dda::SceneError);
   CdemOptions coarse;
@@ -184,6 +191,7 @@ CdemScene bars(int ny, bool subdivision, double dt = 0.0) {
   b.mesh = mesh_rectangle(b.outline.front(), length, width, 5 * ny, ny);
   s.blocks = {a, b};
   s.options.subdivision = subdivision;
+  s.options.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   return s;
 }
 

@@ -47,6 +47,7 @@ CdemScene impact_scene(const Cell& c) {
   bb.divisions = 2;
   s.blocks = {ba, bb};
   s.options.subdivision = c.subdivision;
+  s.options.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   s.options.strength.friction_deg = std::atan(c.mu) * 180.0 / kPi;
   const dda::Material& m = s.materials.front();
   s.duration = gap / v.x + 8.0 * 2.0 * kSide / std::sqrt(m.young / m.density);

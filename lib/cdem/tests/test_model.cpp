@@ -29,6 +29,7 @@ CdemScene squares(double gap, Vec2 velocity, bool subdivision, double dt = 1e-4,
   b.divisions = divisions;
   s.blocks = {a, b};
   s.options.subdivision = subdivision;
+  s.options.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   return s;
 }
 
@@ -87,6 +88,7 @@ TEST_CASE("clone node: Eq. 4 velocity, Eq. 5 loss, momentum conserved through im
   for (bool sub : {false, true}) {
     CdemOptions o;
     o.subdivision = sub;
+    o.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
     Model m(two_prisms(2, o));
     const Vec2 p0 = m.momentum();
     const double e0 = m.energy().total();
@@ -129,6 +131,7 @@ TEST_CASE("subdivision shrinks the clone masses and the Eq. 5 loss", "[cdem][sub
   CdemOptions coarse, fine;
   coarse.subdivision = false;
   fine.subdivision = true;
+  fine.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   Model a(two_prisms(2, coarse)), b(two_prisms(2, fine));
   run_until(a, 0.334);
   run_until(b, 0.334);

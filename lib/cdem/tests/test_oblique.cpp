@@ -38,6 +38,7 @@ CdemScene oblique(Vec2 velocity, double tan_phi, bool subdivision, double gap = 
   b.divisions = 2;
   s.blocks = {a, b};
   s.options.subdivision = subdivision;
+  s.options.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   s.options.strength.friction_deg = std::atan(tan_phi) * 180.0 / kPi;
   return s;
 }

@@ -103,6 +103,7 @@ TEST_CASE("penalty: a kn far too small stops the run with a ContactError", "[pen
 TEST_CASE("penalty: options are checked and the two-scale default is untouched", "[penalty]") {
   CdemOptions sub = penalty();
   sub.subdivision = true;
+  sub.subdivision_mode = SubdivisionMode::kInPlace;  // the in-place refinement under test
   CHECK_THROWS_AS(Model(two_squares(4, sub)), dda::SceneError);
   CHECK_THROWS_AS(Model(two_squares(4, penalty(-1.0))), dda::SceneError);
   // dt above the critical step with the springs (kn 100 E: 1.2e-5 s)

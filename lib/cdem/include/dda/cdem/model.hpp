@@ -22,28 +22,49 @@
 //    perfectly inelastic momentum conservation (Eq. 4, energy loss Eq. 5);
 //    the interaction force (Eq. 11) is checked against the tensile limit
 //    (Eq. 6) and the Mohr-Coulomb shear limit (Eqs. 7-10) for separation;
-//  * local subdivision (Sect. 5): at a touch, the elements within c dt2 of
-//    the contact point (c = sqrt(E/rho) of each block) are refined k x k
-//    (k = ceil(h_e / (c dt2)), clamped), mass and momentum moved exactly;
-//    the patch (its elements and the coarse elements touching its nodes) is
-//    integrated with steps dt/n, the coarse nodes around it moving with
-//    their coarse-step velocity (the velocity boundary condition of
-//    Eq. 12); the patch forces on those coarse nodes are returned to them
-//    (centred kicks plus an O(dt^3) correction at the step end, so that
-//    momentum stays exact). Edges between refined and unrefined elements
-//    carry hanging nodes tied linearly to the edge. The clone is formed
-//    between patch nodes, so its masses (Eq. 5 loss) are the small patch
-//    masses. The patch is deleted (restricted back to the coarse elements,
-//    momentum exact, stress area-averaged) when its clone nodes separated.
-//    THIS DIFFERS FROM SECT. 5 AS WRITTEN: the paper builds a separate
-//    sub-model of subdivided elements, driven by the initial nodes'
-//    velocities as boundary conditions (its steps 2-3), solves it with steps
-//    dt/n over dt (Eq. 12, step 4) and returns its element forces to the
-//    initial nodes (step 5), the coarse model staying as it is. Here the
-//    colliding elements are refined in place (hanging nodes), so the coarse
-//    elements are replaced while the patch lives and its state must be
-//    restricted back when it is deleted (the deletion loss of the energy
-//    account). The paper's sub-model mode is not implemented (issue 23 item 3).
+//  * local subdivision (Sect. 5), two modes (CdemOptions::subdivision_mode):
+//    - kSubModel, Sect. 5 as written (steps 1-5, Eq. 12; model_submodel.cpp):
+//      the coarse model stays as it is (contact, clone and Eqs. 4-11 at
+//      coarse nodes with coarse masses, exactly as without subdivision). At
+//      a touch the colliding elements (within c dt2 of the contact point,
+//      c = sqrt(E/rho), and at least those holding the touching node and
+//      the touched point) get a separate sub-model, each split k x k (k =
+//      ceil(h_e / (c dt2)), clamped; one k per sub-model), built at the end
+//      of the touch's step. Its sub-nodes at the coarse nodes and on edges
+//      shared with elements outside it follow the coarse nodes' motion over
+//      each step (velocity boundary conditions, step 3); the others
+//      (inside, on edges between colliding elements, on the free boundary)
+//      are free. It is integrated with n = ceil(dt / (substep_safety x the
+//      sub-elements' element-bound critical step)) substeps per coarse step
+//      (step 4); the sub-elements' force on its prescribed nodes at the step
+//      end is returned to the coarse nodes with linear weights and replaces
+//      the colliding elements' own force (step 5). Deleted when no clone
+//      ties its parents' corners (the contact points separated): the
+//      parents take the area-averaged stress. Interpretations: the shared
+//      edges are prescribed too (conforming with the coarse neighbours);
+//      the force at the step end, not the substep average (centred for the
+//      coarse kick-drift-kick). Measured, not assumed: the free sub-nodes
+//      carry mass the coarse nodes also carry, and the returned forces
+//      include their inertia, so the coarse momentum and energy are not
+//      conserved while a sub-model lives (a property of the procedure as
+//      written; the energy account's `other` shows it).
+//    - kInPlace (the default until the paper's mode is shown on the
+//      drivers; beyond the paper): at a touch, the elements within c dt2 of
+//      the contact point are refined k x k in place
+//      (k = ceil(h_e / (c dt2)), clamped), mass and momentum moved exactly;
+//      the patch (its elements and the coarse elements touching its nodes)
+//      is integrated with steps dt/n, the coarse nodes around it moving
+//      with their coarse-step velocity (the velocity boundary condition of
+//      Eq. 12); the patch forces on those coarse nodes are returned to them
+//      (centred kicks plus an O(dt^3) correction at the step end, so that
+//      momentum stays exact). Edges between refined and unrefined elements
+//      carry hanging nodes tied linearly to the edge. The clone is formed
+//      between patch nodes, so its masses (Eq. 5 loss) are the small patch
+//      masses. The patch is deleted (restricted back to the coarse
+//      elements, momentum exact, stress area-averaged) when its clone nodes
+//      separated. This differs from Sect. 5 as written: the coarse elements
+//      are replaced while the patch lives and its state must be restricted
+//      back when it is deleted (the deletion loss of the energy account).
 //
 // Approximations relative to Paper B (which gives no algorithm tables):
 // the tie is node-to-node or node-to-edge-point (the point shares its mass
@@ -123,6 +144,20 @@ enum class PatchDeletion : std::uint8_t {
 // baseline on the same CST blocks (model_penalty.cpp).
 enum class ContactMode : std::uint8_t { kTwoScale, kNodeToEdgePenalty };
 
+// How Sect. 5's local subdivision is done (CdemOptions::subdivision true).
+enum class SubdivisionMode : std::uint8_t {
+  // Paper B Sect. 5 steps (1)-(5) as written (model_submodel.cpp): the
+  // coarse model stays as it is (contact, clone and Eqs. 4-11 at coarse
+  // nodes, as without subdivision); the colliding elements get a separate
+  // sub-model of k x k sub-elements driven by the coarse nodes' velocities
+  // (Eq. 12, steps dt/n), whose element forces replace the colliding
+  // elements' own force on their coarse nodes.
+  kSubModel,
+  // Beyond the paper: the colliding elements refined in place with hanging
+  // nodes, the clone formed between patch nodes (model_subdivision.cpp).
+  kInPlace,
+};
+
 // The impact that forms a clone at a touch (Sect. 4.1).
 enum class TouchImpact : std::uint8_t {
   // Paper B Eq. 4: perfectly inelastic, the contact points take one velocity
@@ -149,6 +184,7 @@ struct CdemOptions {
   double tolerance = 5e-3;  // contact tolerance d_tol, m (Paper B Sect. 6)
   CloneStrength strength;
   bool subdivision = true;  // Sect. 5 local subdivision; off: clones of coarse nodes
+  SubdivisionMode subdivision_mode = SubdivisionMode::kInPlace;
   // Refinement k x k of an element in the contact zone: k = ceil(h_e / (c dt2))
   // (h_e = sqrt(2 A_e), the element's length scale), clamped to this range.
   // One k per run, fixed by the first touch, so that refined neighbours share
@@ -291,6 +327,28 @@ struct CloneView {
   bool fine = false;
 };
 
+// One sub-model of SubdivisionMode::kSubModel (Sect. 5), from the touch
+// that made it to its deletion.
+struct SubModelRecord {
+  double created = 0.0;   // s, end of the touch's step (its state is built at t1)
+  double deleted = -1.0;  // s, end of the step its parents' clones all separated; -1 while it lives
+  int main_node = -1, main_block = -1, target_block = -1;  // the touch
+  int elements = 0;         // colliding (parent) coarse elements
+  int k = 0;                // each parent split k x k
+  int sub_nodes = 0, free_nodes = 0;
+  int substeps = 0;         // n: dt / n <= substep_safety * sub_critical_dt
+  double sub_critical_dt = 0.0;  // min over sub-elements of 2 / omega_max(e), s
+  std::int64_t substeps_taken = 0;
+  double radius = 0.0;      // c dt2 of the touch, m
+  // At deletion, J/m: the kinetic energy of its free sub-nodes relative to
+  // the coarse velocity field interpolated at them (the fine-scale part,
+  // dropped: the coarse nodes carry that mass too and keep their own
+  // velocities), and
+  // the strain-energy change of setting each parent's stress to its
+  // sub-elements' area average (in deletion_loss of the energy account).
+  double kinetic_dropped = 0.0, strain_change = 0.0;
+};
+
 struct CdemEnergy {
   double kinetic = 0.0;
   double strain = 0.0;
@@ -318,6 +376,11 @@ struct CdemEnergyAccount {
   double touch_loss_eq5_group = 0.0;  // sum of TouchRecord::energy_loss_eq5_group
   double refine_loss = 0.0, deletion_loss = 0.0;
   double other = 0.0;
+  // SubdivisionMode::kSubModel: the kinetic energy of the live sub-models'
+  // free sub-nodes relative to the coarse velocity field interpolated at
+  // them, J/m. NOT in the balance above (their mass is also carried by the
+  // coarse nodes); strain counts the sub-elements instead of their parents.
+  double submodel_kinetic = 0.0;
 };
 
 class Model {
@@ -373,6 +436,12 @@ class Model {
   int patch_substeps() const { return substeps_; }
   int active_elements(bool fine) const;
   std::int64_t patch_substeps_taken() const { return substeps_taken_; }
+  // SubdivisionMode::kSubModel: every sub-model made so far, and how many live.
+  const std::vector<SubModelRecord>& submodels() const { return submodel_records_; }
+  int live_submodels() const { return static_cast<int>(subs_.size()); }
+  // kSubModel: the force the live sub-models returned to coarse node i at
+  // the last force evaluation (Sect. 5 step 5), N/m; zero without one.
+  Vec2 submodel_node_force(int i) const;
 
   int node_count() const { return static_cast<int>(x_.size()); }
   Vec2 node_position(int i) const { return x_[i]; }
@@ -422,6 +491,38 @@ class Model {
     // point follows the node along the target's boundary.
     bool sliding = false;
     Vec2 lambda{};
+  };
+  // SubdivisionMode::kSubModel (model_submodel.cpp).
+  struct SubElem {
+    std::array<int, 3> n{};  // sub-node ids
+    int parent = -1;         // coarse element
+    Vec3 stress = Vec3::Zero();
+    std::array<Vec2, 3> last{};
+    double mass = 0.0;
+  };
+  struct SubModel {
+    int record = -1;  // index into submodel_records_
+    int k = 0, substeps = 1;
+    std::vector<int> parents;
+    std::vector<Vec2> x, v, f;        // sub-node state; f: force of the last evaluation
+    std::vector<double> m, inv_m;     // lumped masses (inv_m 0 for prescribed nodes)
+    std::vector<int> block;           // sub-node's block
+    // prescribed sub-nodes follow (1 - w) X_a + w X_b of coarse nodes a, b
+    std::vector<std::array<int, 2>> drive;
+    std::vector<double> drive_w;
+    std::vector<char> prescribed;
+    // where each sub-node sits in a parent: x = X0 + a (X1 - X0) + b (X2 - X0)
+    std::vector<int> home;
+    std::vector<std::array<double, 2>> home_ab;
+    std::vector<SubElem> elems;
+    std::vector<int> coarse;          // the coarse nodes that drive it
+    std::vector<Vec2> coarse_x0;      // their positions at the last sync
+    std::vector<Vec2> coarse_force;   // step 5: force returned to them, N/m
+  };
+  struct SubRequest {
+    int main_node = -1, ea = -1, eb = -1;
+    Vec2 point{};
+    double dt2 = 0.0;
   };
   struct Touch {     // a detected touch, not yet processed
     double s = 0.0;  // fraction of the interval
@@ -482,6 +583,20 @@ class Model {
   bool in_clone(int node) const;
   bool touch_blocked(int node) const;
   std::vector<int> tied_partners(int node) const;
+  // Sect. 5 as written: the sub-model (model_submodel.cpp)
+  bool submodel_mode() const {
+    return opt_.subdivision && opt_.subdivision_mode == SubdivisionMode::kSubModel &&
+           opt_.contact == ContactMode::kTwoScale;
+  }
+  void request_submodel(int main_node, Vec2 point, int ea, int eb, const TouchRecord& rec);
+  void create_submodel(const SubRequest& req, int touch_index, double t);
+  void advance_submodels(double t0, double t1);
+  void submodel_forces(SubModel& s, double t);
+  void add_submodel_forces();
+  bool delete_separated_submodels();
+  double submodel_strain() const;
+  double submodel_kinetic() const;
+  double submodel_kinetic(const SubModel& s) const;
   // node-to-edge penalty baseline (model_penalty.cpp)
   void setup_penalty();
   void penalty_step();
@@ -547,6 +662,13 @@ class Model {
   // node-to-edge penalty baseline
   double penalty_kn_ = 0.0, contact_critical_dt_ = 0.0, penalty_max_depth_ = 0.0;
   std::vector<PenaltyContact> penalty_contacts_;
+  // SubdivisionMode::kSubModel
+  std::vector<SubModel> subs_;
+  std::vector<SubModelRecord> submodel_records_;
+  std::vector<SubRequest> sub_requests_;  // touches of the current step
+  std::vector<int> touch_of_request_;     // their index into touches_
+  std::vector<int> elem_sub_;             // coarse element -> index into subs_, -1
+  std::int64_t sub_substeps_taken_ = 0;
 };
 
 }  // namespace dda::cdem

@@ -1,0 +1,462 @@
+// Paper B Sect. 5 as written (SubdivisionMode::kSubModel): the two space
+// scales by a separate sub-model of the colliding elements.
+//
+// The paper's steps, and how each is done here:
+//  (1) At a touch at P_i the circles of radius c dt2 (c = sqrt(E / rho) of
+//      each block, dt2 the contact part of the step, Sect. 3) give the
+//      colliding elements. Here: the unowned coarse elements of the two
+//      blocks within c dt2 of the contact point, and at least those holding
+//      the touching node and those holding the touched point (the touched
+//      node, or both nodes of the touched edge). Elements of a fixed block
+//      get none (they do not move). Each colliding element is split k x k,
+//      k = ceil(h_e / (c dt2)) (h_e = sqrt(2 A_e), the largest of the
+//      colliding elements; c dt2 the smaller of the two blocks' radii),
+//      clamped to [min_subdivision, max_subdivision]; k per sub-model
+//      (each sub-model is separate, so no k is shared between them).
+//  (2) The initial (coarse) nodes are integrated with dt as without
+//      subdivision: the contact is Sects. 3-4 at coarse nodes (two-stage
+//      step, clone, Eqs. 4-5 with coarse masses, separation Eqs. 6-11), the
+//      coarse masses unchanged.
+//  (3) The initial nodes' motion is the velocity boundary condition of the
+//      sub-model: the sub-nodes at the initial nodes, and the sub-nodes on
+//      edges the colliding elements share with an element outside the
+//      sub-model, are prescribed ((1 - w) X_a + w X_b of the edge's coarse
+//      nodes a, b; the coarse nodes moving linearly over the step from their
+//      position at t0 to the one at t1, i.e. with their mean velocity of the
+//      step, which includes the touch's velocity jump). The other sub-nodes
+//      (inside, on edges between two colliding elements, on the block's free
+//      boundary) are free. Interpretation: the paper fixes the 'corresponding
+//      inside nodes' of the initial nodes; the shared edges are fixed too so
+//      that the sub-model stays conforming with its coarse neighbours.
+//  (4) Eq. 12, m_j u_j'' = -sum_k K_jk u_k, over the sub-nodes, solved with
+//      steps dt/n over the coarse step (kick-drift-kick, the sub-elements'
+//      incremental CST forces of Eqs. 2-3 as the coarse elements', gravity
+//      and mass damping on the free sub-nodes as Eq. 1). n = ceil(dt /
+//      (substep_safety * dt_sub)), dt_sub = min over sub-elements of
+//      2 / omega_max(e) (the element bound, Irons). A new sub-model is built
+//      at the end of its touch's step (t1) from its parents' state then:
+//      positions and velocities interpolated linearly from the parents'
+//      corners (the velocities are the coarse half-step ones), stress the
+//      parent's; lumped sub-element masses.
+//  (5) The sub-elements' force on the prescribed sub-nodes at the end of the
+//      integration (t1; chosen over the average of the substeps because the
+//      coarse kick-drift-kick needs the force AT t1, and a step average lags
+//      by dt/2, which pumps energy into a leapfrog scheme) is distributed to
+//      the coarse nodes with the same linear weights and REPLACES the
+//      colliding elements' own element force. The parents' stress is frozen
+//      while they are owned.
+// The sub-model lives from the touch until no clone ties a corner of its
+// parents (the contact points separated); it is deleted at the end of that
+// step: each parent takes its sub-elements' area-averaged stress, its
+// reference positions reset to its current corners. The strain-energy
+// change of that is deletion_loss; the free sub-nodes' kinetic energy is
+// dropped (SubModelRecord::kinetic_dropped; it is not in the coarse balance).
+//
+// Energy and momentum (measured, not assumed): the coarse model's kinetic
+// energy and momentum are those of the coarse nodes; its strain energy
+// counts the sub-elements in place of their parents. The free sub-nodes'
+// mass is also carried by the coarse nodes, so their kinetic energy is shown
+// beside the balance (CdemEnergyAccount::submodel_kinetic), not in it. The
+// returned forces do not sum to zero when the free sub-nodes accelerate
+// (their inertia), so the coarse momentum is not exactly conserved while a
+// sub-model lives: a property of the paper's procedure, reported as such.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+#include "dda/cdem/mesh.hpp"
+#include "dda/cdem/model.hpp"
+#include "geometry.hpp"
+
+namespace dda::cdem {
+
+using namespace detail;
+
+namespace {
+
+// A point this close to an element counts as inside it (relative to the
+// point's distance from the origin + 1 m): round-off of the positions, m.
+constexpr double kInsideRelTol = 1e-12;
+// ceil(dt / h) - this: a ratio that is an integer up to round-off is not
+// pushed to the next integer.
+constexpr double kCeilSlack = 1e-9;
+
+double strain_energy(const std::array<Vec2, 3>& x, const Vec3& stress, const Mat3& c) {
+  return 0.5 * cst(x).area * stress.dot(c * stress);
+}
+
+}  // namespace
+
+Vec2 Model::submodel_node_force(int i) const {
+  Vec2 f{};
+  for (const SubModel& s : subs_)
+    for (std::size_t c = 0; c < s.coarse.size(); ++c)
+      if (s.coarse[c] == i) f += s.coarse_force[c];
+  return f;
+}
+
+// Step (1) at the touch: the request; the sub-model is built at t1.
+void Model::request_submodel(int main_node, Vec2 point, int ea, int eb, const TouchRecord& rec) {
+  SubRequest r;
+  r.main_node = main_node;
+  r.point = point;
+  r.ea = ea;
+  r.eb = eb;
+  r.dt2 = rec.dt2;
+  sub_requests_.push_back(r);
+  touch_of_request_.push_back(static_cast<int>(touches_.size()));
+}
+
+void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
+  if (elem_sub_.empty()) elem_sub_.assign(elems_.size(), -1);
+  const int m = req.main_node;
+  const int bm = node_block_[m], bt = node_block_[req.ea];
+  const double rm = wave_speed_[blocks_[bm].material] * req.dt2;
+  const double rt = wave_speed_[blocks_[bt].material] * req.dt2;
+  const double eps = kInsideRelTol * (length(req.point) + 1.0);
+  auto tri = [&](int e) { return std::array<Vec2, 3>{x_[elem(e).n[0]], x_[elem(e).n[1]], x_[elem(e).n[2]]}; };
+  auto has = [&](int e, int a) { return std::find(elem(e).n.begin(), elem(e).n.end(), a) != elem(e).n.end(); };
+  // the touched point: a node, or both nodes of the touched edge
+  const Vec2 ed = x_[req.eb] - x_[req.ea];
+  const double xi = std::clamp(dot(req.point - x_[req.ea], ed) / length_squared(ed), 0.0, 1.0);
+  std::vector<int> touched;
+  if (xi <= kNodeTieXi)
+    touched = {req.ea};
+  else if (xi >= 1.0 - kNodeTieXi)
+    touched = {req.eb};
+  else
+    touched = {req.ea, req.eb};
+  std::vector<int> parents;
+  for (int e : coarse_elems_) {
+    const int b = elem(e).block;
+    if ((b != bm && b != bt) || blocks_[b].fixed || elem_sub_[e] >= 0) continue;
+    const double d = point_triangle_distance(req.point, tri(e));
+    bool in = (b == bm && d <= rm + eps) || (b == bt && d <= rt + eps) || (b == bm && has(e, m));
+    if (b == bt) {
+      bool all = true;
+      for (int a : touched) all = all && has(e, a);
+      in = in || all;
+    }
+    if (in) parents.push_back(e);
+  }
+  TouchRecord* rec = touch_index < static_cast<int>(touches_.size()) ? &touches_[touch_index] : nullptr;
+  if (rec) rec->radius = std::max(rm, rt);
+  if (parents.empty()) return;  // every colliding element already has a sub-model
+
+  double he = 0.0;
+  for (int e : parents) he = std::max(he, std::sqrt(2.0 * cst(tri(e)).area));
+  const double r = std::min(rm, rt);
+  int k = opt_.max_subdivision;
+  if (r > 0.0 && he > 0.0) k = static_cast<int>(std::ceil(he / r - kCeilSlack));
+  k = std::clamp(k, opt_.min_subdivision, opt_.max_subdivision);
+
+  const double energy_before = energy().strain;
+  SubModel s;
+  s.k = k;
+  s.parents = parents;
+  std::unordered_map<int, int> coarse_index;  // coarse node -> index into s.coarse
+  auto coarse_of = [&](int a) {
+    const auto it = coarse_index.find(a);
+    if (it != coarse_index.end()) return it->second;
+    const int i = static_cast<int>(s.coarse.size());
+    coarse_index.emplace(a, i);
+    s.coarse.push_back(a);
+    s.coarse_x0.push_back(x_[a]);
+    return i;
+  };
+  auto add_node = [&](Vec2 x, Vec2 v, int block, bool prescribed, int a, int b, double w) {
+    s.x.push_back(x);
+    s.v.push_back(v);
+    s.f.push_back(Vec2{});
+    s.m.push_back(0.0);
+    s.block.push_back(block);
+    s.prescribed.push_back(prescribed ? 1 : 0);
+    s.drive.push_back({prescribed ? coarse_of(a) : -1, prescribed ? coarse_of(b) : -1});
+    s.drive_w.push_back(w);
+    s.home.push_back(-1);
+    s.home_ab.push_back({0.0, 0.0});
+    return static_cast<int>(s.x.size()) - 1;
+  };
+  std::unordered_map<int, int> corner;                      // coarse node -> sub-node
+  std::map<std::uint64_t, std::vector<int>> edge_subnodes;  // coarse edge -> k - 1 sub-nodes, lo to hi
+  auto in_parents = [&](int e) { return std::find(parents.begin(), parents.end(), e) != parents.end(); };
+  auto edge_nodes = [&](int a, int b, int block) {
+    const std::uint64_t key = edge_key(a, b);
+    auto it = edge_subnodes.find(key);
+    if (it == edge_subnodes.end()) {
+      const EdgeInfo& info = edges_.at(key);
+      // prescribed where the edge is shared with an element outside the sub-model
+      bool shared_out = false;
+      for (int e2 : info.elems)
+        if (e2 >= 0 && !in_parents(e2)) shared_out = true;
+      std::vector<int> ids;
+      for (int q = 1; q < k; ++q) {
+        const double w = static_cast<double>(q) / k;
+        ids.push_back(add_node(lerp(x_[info.lo], x_[info.hi], w), lerp(v_[info.lo], v_[info.hi], w), block, shared_out,
+                               info.lo, info.hi, w));
+      }
+      it = edge_subnodes.emplace(key, std::move(ids)).first;
+    }
+    std::vector<int> ids = it->second;
+    if (a > b) std::reverse(ids.begin(), ids.end());
+    return ids;
+  };
+  const auto lattice = lattice_triangles(k);
+  for (int e : parents) {
+    const Elem& pe = elem(e);
+    std::array<int, 3> c{};
+    for (int q = 0; q < 3; ++q) {
+      const int a = pe.n[q];
+      auto it = corner.find(a);
+      if (it == corner.end()) it = corner.emplace(a, add_node(x_[a], v_[a], pe.block, true, a, a, 0.0)).first;
+      c[q] = it->second;
+    }
+    const std::vector<int> e01 = edge_nodes(pe.n[0], pe.n[1], pe.block);
+    const std::vector<int> e12 = edge_nodes(pe.n[1], pe.n[2], pe.block);
+    const std::vector<int> e02 = edge_nodes(pe.n[0], pe.n[2], pe.block);
+    std::vector<int> lat(static_cast<std::size_t>(lattice_count(k)), -1);
+    std::vector<std::array<double, 2>> lat_ab(static_cast<std::size_t>(lattice_count(k)));
+    const std::array<Vec2, 3> px = tri(e);
+    const std::array<Vec2, 3> pv{v_[pe.n[0]], v_[pe.n[1]], v_[pe.n[2]]};
+    for (int j = 0; j <= k; ++j)
+      for (int i = 0; i + j <= k; ++i) {
+        int id = lattice_boundary_node(i, j, k, c, e01, e12, e02);
+        if (id < 0) {
+          const double a = static_cast<double>(i) / k, b = static_cast<double>(j) / k;
+          id = add_node(px[0] + a * (px[1] - px[0]) + b * (px[2] - px[0]), pv[0] + a * (pv[1] - pv[0]) + b * (pv[2] - pv[0]),
+                        pe.block, false, -1, -1, 0.0);
+        }
+        lat[static_cast<std::size_t>(lattice_index(i, j, k))] = id;
+        lat_ab[static_cast<std::size_t>(lattice_index(i, j, k))] = {static_cast<double>(i) / k, static_cast<double>(j) / k};
+        if (s.home[id] < 0) {
+          s.home[id] = e;
+          s.home_ab[id] = {static_cast<double>(i) / k, static_cast<double>(j) / k};
+        }
+      }
+    const double mass = pe.mass / (static_cast<double>(k) * k);
+    for (const auto& lt : lattice) {
+      SubElem se;
+      se.n = {lat[static_cast<std::size_t>(lt[0])], lat[static_cast<std::size_t>(lt[1])], lat[static_cast<std::size_t>(lt[2])]};
+      se.parent = e;
+      // the parent's stress and reference configuration (its corners at its
+      // last evaluation, interpolated): the first evaluation adds the
+      // parent's strain increment since then, as the parent's would
+      se.stress = pe.stress;
+      for (int q = 0; q < 3; ++q) {
+        const auto& ab = lat_ab[static_cast<std::size_t>(lt[q])];
+        se.last[q] = pe.last[0] + ab[0] * (pe.last[1] - pe.last[0]) + ab[1] * (pe.last[2] - pe.last[0]);
+      }
+      se.mass = mass;
+      for (int a : se.n) s.m[a] += mass / 3.0;
+      s.elems.push_back(se);
+    }
+  }
+  s.inv_m.resize(s.m.size());
+  int free_nodes = 0;
+  for (std::size_t i = 0; i < s.m.size(); ++i) {
+    s.inv_m[i] = s.prescribed[i] ? 0.0 : 1.0 / s.m[i];
+    free_nodes += s.prescribed[i] ? 0 : 1;
+  }
+  s.coarse_force.assign(s.coarse.size(), Vec2{});
+  // step (4)'s n from the sub-elements' critical step (element bound)
+  double omega = 0.0;
+  for (const SubElem& se : s.elems) {
+    const auto kk = element_stiffness({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, d_[blocks_[elem(se.parent).block].material]);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(kk, Eigen::EigenvaluesOnly);
+    omega = std::max(omega, std::sqrt(std::max(es.eigenvalues().maxCoeff(), 0.0) / (se.mass / 3.0)));
+  }
+  const double sub_critical = omega > 0.0 ? 2.0 / omega : dt_;
+  s.substeps = std::max(1, static_cast<int>(std::ceil(dt_ / (opt_.substep_safety * sub_critical) - kCeilSlack)));
+
+  SubModelRecord record;
+  record.created = t;
+  record.main_node = m;
+  record.main_block = bm;
+  record.target_block = bt;
+  record.elements = static_cast<int>(parents.size());
+  record.k = k;
+  record.sub_nodes = static_cast<int>(s.x.size());
+  record.free_nodes = free_nodes;
+  record.substeps = s.substeps;
+  record.sub_critical_dt = sub_critical;
+  record.radius = std::max(rm, rt);
+  s.record = static_cast<int>(submodel_records_.size());
+  submodel_records_.push_back(record);
+  if (rec) {
+    rec->subdivision = k;
+    rec->refined_elements = static_cast<int>(parents.size());
+  }
+  const int index = static_cast<int>(subs_.size());
+  for (int e : parents) elem_sub_[e] = index;
+  subs_.push_back(std::move(s));
+  submodel_forces(subs_.back(), t);
+  // the sub-elements take their parents' stress on the same area: the strain
+  // energy changes by round-off only; measured as refine_loss
+  refine_loss_ += energy_before - energy().strain;
+}
+
+// Eqs. 2-3 on the sub-elements at their current positions: the forces on
+// the free sub-nodes (with gravity and mass damping, Eq. 1) and, step (5),
+// the forces on the prescribed ones returned to the coarse nodes.
+void Model::submodel_forces(SubModel& s, double t) {
+  const Vec2 g = scene_.gravity;
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    s.f[i] = s.prescribed[i] ? Vec2{} : s.m[i] * g - opt_.mass_damping * s.m[i] * s.v[i];
+  std::fill(s.coarse_force.begin(), s.coarse_force.end(), Vec2{});
+  std::vector<Vec2> bc(s.x.size(), Vec2{});
+  for (std::size_t q = 0; q < s.elems.size(); ++q) {
+    SubElem& se = s.elems[q];
+    const std::array<Vec2, 3> x{s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]};
+    std::array<Vec2, 3> f;
+    const int block = elem(se.parent).block;
+    if (cst_incremental_force(x, se.last, se.stress, d_[blocks_[block].material], f) != 0) {
+      std::ostringstream msg;
+      msg << "cdem: sub-element " << q << " of the sub-model of element " << se.parent << " of block " << block
+          << " inverted at t = " << t << " (step " << steps_ + 1 << ")";
+      throw SimulationError(msg.str());
+    }
+    for (int i = 0; i < 3; ++i) (s.prescribed[se.n[i]] ? bc : s.f)[se.n[i]] += f[i];
+  }
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    if (!is_finite(s.x[i]) || !is_finite(s.v[i]) || !is_finite(s.f[i]) || !is_finite(bc[i])) {
+      int parent = -1;
+      for (const SubElem& se : s.elems)
+        for (int a : se.n)
+          if (a == static_cast<int>(i)) parent = se.parent;
+      std::ostringstream msg;
+      msg << "cdem: non-finite state at sub-node " << i << " of the sub-model of element " << parent << " of block "
+          << s.block[i] << ", t = " << t << " (step " << steps_ + 1 << ")";
+      throw SimulationError(msg.str());
+    }
+    if (!s.prescribed[i]) continue;
+    const double w = s.drive_w[i];
+    s.coarse_force[static_cast<std::size_t>(s.drive[i][0])] += (1.0 - w) * bc[i];
+    s.coarse_force[static_cast<std::size_t>(s.drive[i][1])] += w * bc[i];
+  }
+}
+
+// Steps (2)-(4) for the live sub-models over the coarse step t0 -> t1 (the
+// coarse nodes already at t1), then step (1)'s sub-models of this step's
+// touches built at t1.
+void Model::advance_submodels(double t0, double t1) {
+  const double span = t1 - t0;
+  for (SubModel& s : subs_) {
+    std::vector<Vec2> x1(s.coarse.size()), vc(s.coarse.size());
+    for (std::size_t c = 0; c < s.coarse.size(); ++c) {
+      x1[c] = x_[s.coarse[c]];
+      vc[c] = (x1[c] - s.coarse_x0[c]) / span;
+    }
+    const int n = s.substeps;
+    const double h = span / n;
+    for (int j = 0; j < n; ++j) {
+      const double tau = static_cast<double>(j + 1) / n;
+      for (std::size_t i = 0; i < s.x.size(); ++i) {
+        if (s.prescribed[i]) {
+          const auto a = static_cast<std::size_t>(s.drive[i][0]), b = static_cast<std::size_t>(s.drive[i][1]);
+          const double w = s.drive_w[i];
+          s.x[i] = (1.0 - w) * lerp(s.coarse_x0[a], x1[a], tau) + w * lerp(s.coarse_x0[b], x1[b], tau);
+          s.v[i] = (1.0 - w) * vc[a] + w * vc[b];
+        } else {
+          s.v[i] += (0.5 * h * s.inv_m[i]) * s.f[i];
+          s.x[i] += h * s.v[i];
+        }
+      }
+      submodel_forces(s, t0 + (j + 1) * h);
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        if (!s.prescribed[i]) s.v[i] += (0.5 * h * s.inv_m[i]) * s.f[i];
+    }
+    s.coarse_x0 = x1;
+    submodel_records_[static_cast<std::size_t>(s.record)].substeps_taken += n;
+    sub_substeps_taken_ += n;
+  }
+  for (std::size_t r = 0; r < sub_requests_.size(); ++r) create_submodel(sub_requests_[r], touch_of_request_[r], t1);
+  sub_requests_.clear();
+  touch_of_request_.clear();
+}
+
+void Model::add_submodel_forces() {
+  for (const SubModel& s : subs_)
+    for (std::size_t c = 0; c < s.coarse.size(); ++c) f_[s.coarse[c]] += s.coarse_force[c];
+}
+
+// The end of a sub-model: no clone ties a corner of its parents any more.
+bool Model::delete_separated_submodels() {
+  std::vector<char> busy(x_.size(), 0);
+  for (const Clone& c : clones_) {
+    busy[c.main] = 1;
+    for (int a : c.t)
+      if (a >= 0) busy[a] = 1;
+  }
+  bool any = false;
+  for (std::size_t q = subs_.size(); q-- > 0;) {
+    SubModel& s = subs_[q];
+    bool live = false;
+    for (int e : s.parents)
+      for (int a : elem(e).n) live = live || busy[a];
+    if (live) continue;
+    SubModelRecord& record = submodel_records_[static_cast<std::size_t>(s.record)];
+    record.kinetic_dropped = submodel_kinetic(s);
+    double change = 0.0;
+    for (int e : s.parents) {
+      Elem& pe = elem(e);
+      const Mat3& c = c_[blocks_[pe.block].material];
+      Vec3 sum = Vec3::Zero();
+      double area = 0.0, before = 0.0;
+      for (const SubElem& se : s.elems) {
+        if (se.parent != e) continue;
+        const std::array<Vec2, 3> x{s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]};
+        const double a = cst(x).area;
+        sum += a * se.stress;
+        area += a;
+        before += strain_energy(x, se.stress, c);
+      }
+      pe.stress = sum / area;
+      pe.last = {x_[pe.n[0]], x_[pe.n[1]], x_[pe.n[2]]};
+      change += strain_energy(pe.last, pe.stress, c) - before;
+      elem_sub_[e] = -1;
+    }
+    record.strain_change = change;
+    record.deleted = time_;
+    deletion_loss_ -= change;
+    subs_.erase(subs_.begin() + static_cast<std::ptrdiff_t>(q));
+    any = true;
+  }
+  if (any) {
+    std::fill(elem_sub_.begin(), elem_sub_.end(), -1);
+    for (std::size_t q = 0; q < subs_.size(); ++q)
+      for (int e : subs_[q].parents) elem_sub_[e] = static_cast<int>(q);
+  }
+  return any;
+}
+
+double Model::submodel_strain() const {
+  double e = 0.0;
+  for (const SubModel& s : subs_)
+    for (const SubElem& se : s.elems)
+      e += strain_energy({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, se.stress,
+                         c_[blocks_[elem(se.parent).block].material]);
+  return e;
+}
+
+double Model::submodel_kinetic(const SubModel& s) const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    if (s.prescribed[i]) continue;
+    const Elem& pe = elem(s.home[i]);
+    const double a = s.home_ab[i][0], b = s.home_ab[i][1];
+    const Vec2 vc = v_[pe.n[0]] + a * (v_[pe.n[1]] - v_[pe.n[0]]) + b * (v_[pe.n[2]] - v_[pe.n[0]]);
+    e += 0.5 * s.m[i] * length_squared(s.v[i] - vc);
+  }
+  return e;
+}
+
+double Model::submodel_kinetic() const {
+  double e = 0.0;
+  for (const SubModel& s : subs_) e += submodel_kinetic(s);
+  return e;
+}
+
+}  // namespace dda::cdem
