@@ -24,6 +24,21 @@ struct Crossings {
   void add(double x) {
     if (x > 0.0 && x < 1.0 && count < static_cast<int>(t.size())) t[static_cast<std::size_t>(count++)] = x;
   }
+  // add(x[0]) then add(x[1]) for the lanes whose bit is set in `hits`,
+  // without a branch per crossing (which of a block's vertex rays an IP
+  // edge crosses changes from edge to edge: a branch on it is mispredicted
+  // about as often as taken): each lane is stored at the end and counted
+  // only when it is a hit in (0, 1). No capacity test is needed: the vertex
+  // rays of one side add at most n <= kMaxVertices crossings on top of at
+  // most 2 n from the other side's listed rays (a vertex and a virtual
+  // node per edge), so every store lands below 3 kMaxVertices, within t.
+  void add_lanes(detail::Lanes x, unsigned hits) {
+    hits &= detail::lane_bits(x > detail::Lanes{0.0, 0.0}) & detail::lane_bits(x < detail::Lanes{1.0, 1.0});
+    t[static_cast<std::size_t>(count)] = x[0];
+    count += static_cast<int>(hits & 1u);
+    t[static_cast<std::size_t>(count)] = x[1];
+    count += static_cast<int>(hits >> 1);
+  }
   // Insertion sort: a handful of points.
   void sort() {
     for (int i = 1; i < count; ++i) {
@@ -124,11 +139,10 @@ struct EdgeLines {
     return c_at(la) + s_at(la) * t >= ray.d0 ? t : -1.0;
   }
   // crossing() for the polygon's vertex rays, ray i between lines i - 1 and
-  // i (line n - 1 for i = 0) with d0 = 0, two rays at a time; add(t) for
-  // each hit in ray order. An odd count's repeated line meets itself
-  // (num = 0): never a hit.
-  template <class Add>
-  void vertex_crossings(Add&& add) const {
+  // i (line n - 1 for i = 0) with d0 = 0, two rays at a time; cr.add(t) for
+  // each hit in ray order (Crossings::add_lanes). An odd count's repeated
+  // line meets itself (num = 0): never a hit.
+  void vertex_crossings(Crossings& cr) const {
     const Lanes zero = {0.0, 0.0};
     const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
     for (int p = 0; p < pairs(); ++p) {
@@ -140,8 +154,7 @@ struct EdgeLines {
       if (!hits) continue;
       const Lanes t = num / den;
       hits &= lane_bits(ca + sa * t >= zero);
-      if (hits & 1u) add(t[0]);
-      if (hits & 2u) add(t[1]);
+      cr.add_lanes(t, hits);
     }
   }
 };
@@ -231,7 +244,7 @@ inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, In
     // bisectors() gives exactly n rays when no small edge has a virtual node
     // (which adds one ray, or replaces two by one): the vertex rays in order.
     if (rays.count == lines.size())
-      lines.vertex_crossings([&cr](double t) { cr.add(t); });
+      lines.vertex_crossings(cr);
     else
       for (int r = 0; r < rays.count; ++r) cr.add(lines.crossing(rays.b[r]));
   } else {
@@ -269,7 +282,9 @@ template <int kN, bool kMinus>
 
 // one_side_edge with the vertex count a compile-time constant where it is
 // a common one (unrolled loops over the edge lines: triangles, quadrilaterals
-// and pentagons are most blocks of a jointed rock mass), else read at run time.
+// and pentagons are most blocks of a jointed rock mass; hexagons to octagons,
+// Box2D's limit, are the other common small blocks), else read at run time.
+// The same operations in the same order either way: the same bits.
 template <int kN, bool kMinus>
 bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab, double tol,
                      bool zero_start, bool zero_end, EdgeSums& sums) {
@@ -278,6 +293,9 @@ bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integrati
     case 3: return one_side_edge<3, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
     case 4: return one_side_edge<4, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
     case 5: return one_side_edge<5, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 6: return one_side_edge<6, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 7: return one_side_edge<7, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 8: return one_side_edge<8, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
     default: return one_side_edge<0, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
   }
 }
