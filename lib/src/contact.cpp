@@ -362,14 +362,16 @@ void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
                             double tol, const IpEdge* source, LoadingPoint where) {
-  NormalForce out;
-  if (ip.count < 3) return out;
+  if (ip.count < 3) return NormalForce{};
   const AreaMoments am = area_centroid(ip);
-  out.ip_area = am.area;
-  out.ip_centroid = am.centroid;
   const Vec2 c = am.centroid;
+  // The sums in locals, the result built once at the end: a NormalForce
+  // made first would be zeroed (a string store) and its counters summed
+  // through memory in the edge loop.
   Vec2 force{};
-  double moment = 0.0;  // about the IP centroid
+  double moment = 0.0;     // about the IP centroid
+  double perimeter = 0.0;  // NormalForce::ip_perimeter
+  int segments = 0;        // NormalForce::segments
   // Bisectors (paper rule only): the caller's, or built here into
   // thread-local scratch (a BisectorSet is 1 KB that would otherwise be
   // zeroed on every call).
@@ -387,10 +389,13 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   }
   // Where an IP edge lies as far as its source tells: on CP's boundary, on
   // TP's, or neither (unknown source).
-  enum class On { kNeither, kCp, kTp };
+  // Found by arithmetic, not by branches on the source (which of an IP's
+  // edges lies on which polygon changes from pair to pair).
+  enum class On { kNeither = 0, kCp = 1, kTp = 2 };
   auto on = [source](int k) {
-    if (!source || !source[k].known()) return On::kNeither;
-    return source[k].on_contact ? On::kCp : On::kTp;
+    if (!source) return On::kNeither;
+    const IpEdge s = source[k];
+    return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
   };
   // The previous, this and the next edge's, carried along the loop.
   On on_prev = On::kNeither, on_this = on(ip.count - 1), on_next = on(0);
@@ -402,7 +407,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
     const double len = length(ab);
     if (len <= tol) continue;
-    out.ip_perimeter += len;
+    perimeter += len;
     // A vertex where an edge on CP's boundary starts or ends is on that
     // boundary: d_exit = 0 there (likewise for TP). For the potential of a
     // side that is used on edge e (so e is not on that side's boundary),
@@ -419,7 +424,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
                             : one_side_edge_n<kNc, false>(*cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol,
                                                           on_prev == On::kCp, on_next == On::kCp, sums);
       if (!used) {
-        out.segments += 2;
+        segments += 2;
         continue;
       }
     } else {
@@ -433,7 +438,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       const bool use_cp = !(mid_cp <= tol);
       const bool use_tp = !(mid_tp <= tol);
       if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
-        out.segments += 2;
+        segments += 2;
         continue;
       }
       // Demarcation points: the end points, the midpoint, and the crossings
@@ -461,21 +466,21 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
                                     use_tp && on_next != On::kTp ? lines_tp.at_end() : 0.0);
       sums = integrate_edge(cr, f_start, f_mid, f_end, traction_at);
     }
-    out.segments += sums.segments;
+    segments += sums.segments;
     const Vec2 n = ip.normal(e);
     force += (0.5 * len * sums.s0) * n;
     moment += cross((0.5 * len * sums.s0) * (a - c) + (len * sums.s1 * kSixth) * ab, n);
   }
+  // Every member written (in declaration order: force, point, moment,
+  // couple, ip_centroid, ip_area, ip_perimeter, segments, valid), so that
+  // nothing is zeroed first.
   const double f2 = length_squared(force);
-  if (!(f2 > 0.0)) return out;
+  if (!(f2 > 0.0)) return NormalForce{Vec2{}, Vec2{}, 0.0, 0.0, c, am.area, perimeter, segments, false};
   // Acting line: points p with (p - c) x f = moment. pg = c + lambda t with
   // t = perp_left(f) / |f|, so lambda (t x f) = moment, t x f = -|f|.
   const double fl = std::sqrt(f2);
   const double lambda = -moment / fl;
-  out.force = force;
-  out.moment = moment;
-  out.point = c + lambda * (perp_left(force) / fl);
-  out.valid = true;
+  NormalForce out{force, c + lambda * (perp_left(force) / fl), moment, 0.0, c, am.area, perimeter, segments, true};
   if (where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
   return out;
 }
