@@ -24,21 +24,6 @@ struct Crossings {
   void add(double x) {
     if (x > 0.0 && x < 1.0 && count < static_cast<int>(t.size())) t[static_cast<std::size_t>(count++)] = x;
   }
-  // add(x[0]) then add(x[1]) for the lanes whose bit is set in `hits`,
-  // without a branch per crossing (which of a block's vertex rays an IP
-  // edge crosses changes from edge to edge: a branch on it is mispredicted
-  // about as often as taken): each lane is stored at the end and counted
-  // only when it is a hit in (0, 1). No capacity test is needed: the vertex
-  // rays of one side add at most n <= kMaxVertices crossings on top of at
-  // most 2 n from the other side's listed rays (a vertex and a virtual
-  // node per edge), so every store lands below 3 kMaxVertices, within t.
-  void add_lanes(detail::Lanes x, unsigned hits) {
-    hits &= detail::lane_bits(x > detail::Lanes{0.0, 0.0}) & detail::lane_bits(x < detail::Lanes{1.0, 1.0});
-    t[static_cast<std::size_t>(count)] = x[0];
-    count += static_cast<int>(hits & 1u);
-    t[static_cast<std::size_t>(count)] = x[1];
-    count += static_cast<int>(hits >> 1);
-  }
   // Insertion sort: a handful of points.
   void sort() {
     for (int i = 1; i < count; ++i) {
@@ -140,8 +125,8 @@ struct EdgeLines {
   }
   // crossing() for the polygon's vertex rays, ray i between lines i - 1 and
   // i (line n - 1 for i = 0) with d0 = 0, two rays at a time; cr.add(t) for
-  // each hit in ray order (Crossings::add_lanes). An odd count's repeated
-  // line meets itself (num = 0): never a hit.
+  // each hit in ray order. An odd count's repeated line meets itself
+  // (num = 0): never a hit.
   void vertex_crossings(Crossings& cr) const {
     const Lanes zero = {0.0, 0.0};
     const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
@@ -154,7 +139,8 @@ struct EdgeLines {
       if (!hits) continue;
       const Lanes t = num / den;
       hits &= lane_bits(ca + sa * t >= zero);
-      cr.add_lanes(t, hits);
+      if (hits & 1u) cr.add(t[0]);
+      if (hits & 2u) cr.add(t[1]);
     }
   }
 };
@@ -239,7 +225,7 @@ template <class TractionAt>
 // Demarcation points of one side on an edge (Sect. 3.2.3 steps 1-4): the
 // crossings with its bisectors, or its envelope's kinks.
 template <int kN>
-inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, Integration rule, Crossings& cr) {
+[[gnu::always_inline]] inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, Integration rule, Crossings& cr) {
   if (rule == Integration::kPaperBisector) {
     // bisectors() gives exactly n rays when no small edge has a virtual node
     // (which adds one ray, or replaces two by one): the vertex rays in order.
