@@ -22,9 +22,11 @@
 // the manifold's O(n).
 // Friction (Eqs. 24-26) is not included: it needs the pair's history, which
 // lives in the simulation; bench_collapse times it in the full step.
-// The bisectors of each polygon (Sect. 3.2.3) are built once, outside the
-// timed loop, as the simulation builds them once per block and step; Box2D's
-// shapes likewise carry their normals.
+// The bisectors of each polygon (Sect. 3.2.3) and its geometric tolerance
+// are built once, outside the timed loop, as the simulation builds them once
+// per block and step (update_block_geometry: sides_[i].tol, the bisector
+// store) and takes the pair's tolerance as the larger of the two
+// (pair_forces); Box2D's shapes likewise carry their normals.
 //
 // After the runs it prints, per n, both costs per pair and their ratio.
 #include <benchmark/benchmark.h>
@@ -32,6 +34,7 @@
 #include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -68,6 +71,7 @@ struct Side {
   dda::Polygon poly;
   std::vector<dda::Bisector> bisectors;
   dda::PotentialSide side;
+  double tol = 0.0;  // geometric_tolerance(poly), m
   b2PolygonShape b2;
 };
 
@@ -80,12 +84,16 @@ Side make_side(const dda::Polygon& p) {
   s.side.kn_over_h = kKn / kH;
   s.side.small_edge = small;
   s.side.bisector_count = nb;
+  s.tol = dda::geometric_tolerance(p);
   s.b2 = to_box2d(p);
   return s;
 }
 
 struct Pair {
   Side a, b;
+  // pair_tolerance(a, b), as the simulation's pair loop takes it from the
+  // blocks' stored tolerances.
+  double tol() const { return std::max(a.tol, b.tol); }
 };
 
 bool boxes_overlap(const dda::Polygon& a, const dda::Polygon& b) {
@@ -129,7 +137,7 @@ void BM_DdaNormalContact(benchmark::State& state) {
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   for (auto _ : state) {
     const Pair& p = v[i++ & (kPairs - 1)];
-    const double tol = dda::pair_tolerance(p.a.poly, p.b.poly);
+    const double tol = p.tol();
     if (dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data()) == dda::OverlapState::kOverlapping) {
       const dda::NormalForce nf = dda::normal_contact_force(p.a.side, p.b.side, ip, dda::Integration::kPaperBisector,
                                                             tol, source.data(), dda::LoadingPoint::kWithinIp);
@@ -147,7 +155,7 @@ void BM_DdaOverlapIp(benchmark::State& state) {
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   for (auto _ : state) {
     const Pair& p = v[i++ & (kPairs - 1)];
-    const double tol = dda::pair_tolerance(p.a.poly, p.b.poly);
+    const double tol = p.tol();
     const dda::OverlapState s = dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data());
     benchmark::DoNotOptimize(s);
     benchmark::DoNotOptimize(ip);

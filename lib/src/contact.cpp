@@ -124,11 +124,10 @@ struct EdgeLines {
     return c_at(la) + s_at(la) * t >= ray.d0 ? t : -1.0;
   }
   // crossing() for the polygon's vertex rays, ray i between lines i - 1 and
-  // i (line n - 1 for i = 0) with d0 = 0, two rays at a time; add(t) for
+  // i (line n - 1 for i = 0) with d0 = 0, two rays at a time; cr.add(t) for
   // each hit in ray order. An odd count's repeated line meets itself
   // (num = 0): never a hit.
-  template <class Add>
-  void vertex_crossings(Add&& add) const {
+  void vertex_crossings(Crossings& cr) const {
     const Lanes zero = {0.0, 0.0};
     const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
     for (int p = 0; p < pairs(); ++p) {
@@ -140,8 +139,8 @@ struct EdgeLines {
       if (!hits) continue;
       const Lanes t = num / den;
       hits &= lane_bits(ca + sa * t >= zero);
-      if (hits & 1u) add(t[0]);
-      if (hits & 2u) add(t[1]);
+      if (hits & 1u) cr.add(t[0]);
+      if (hits & 2u) cr.add(t[1]);
     }
   }
 };
@@ -226,12 +225,12 @@ template <class TractionAt>
 // Demarcation points of one side on an edge (Sect. 3.2.3 steps 1-4): the
 // crossings with its bisectors, or its envelope's kinks.
 template <int kN>
-inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, Integration rule, Crossings& cr) {
+[[gnu::always_inline]] inline void add_side_crossings(const EdgeLines<kN>& lines, BisectorSpan rays, Integration rule, Crossings& cr) {
   if (rule == Integration::kPaperBisector) {
     // bisectors() gives exactly n rays when no small edge has a virtual node
     // (which adds one ray, or replaces two by one): the vertex rays in order.
     if (rays.count == lines.size())
-      lines.vertex_crossings([&cr](double t) { cr.add(t); });
+      lines.vertex_crossings(cr);
     else
       for (int r = 0; r < rays.count; ++r) cr.add(lines.crossing(rays.b[r]));
   } else {
@@ -269,7 +268,9 @@ template <int kN, bool kMinus>
 
 // one_side_edge with the vertex count a compile-time constant where it is
 // a common one (unrolled loops over the edge lines: triangles, quadrilaterals
-// and pentagons are most blocks of a jointed rock mass), else read at run time.
+// and pentagons are most blocks of a jointed rock mass; hexagons to octagons,
+// Box2D's limit, are the other common small blocks), else read at run time.
+// The same operations in the same order either way: the same bits.
 template <int kN, bool kMinus>
 bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab, double tol,
                      bool zero_start, bool zero_end, EdgeSums& sums) {
@@ -278,6 +279,9 @@ bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integrati
     case 3: return one_side_edge<3, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
     case 4: return one_side_edge<4, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
     case 5: return one_side_edge<5, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 6: return one_side_edge<6, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 7: return one_side_edge<7, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+    case 8: return one_side_edge<8, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
     default: return one_side_edge<0, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
   }
 }
@@ -344,14 +348,16 @@ void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
                             double tol, const IpEdge* source, LoadingPoint where) {
-  NormalForce out;
-  if (ip.count < 3) return out;
+  if (ip.count < 3) return NormalForce{};
   const AreaMoments am = area_centroid(ip);
-  out.ip_area = am.area;
-  out.ip_centroid = am.centroid;
   const Vec2 c = am.centroid;
+  // The sums in locals, the result built once at the end: a NormalForce
+  // made first would be zeroed (a string store) and its counters summed
+  // through memory in the edge loop.
   Vec2 force{};
-  double moment = 0.0;  // about the IP centroid
+  double moment = 0.0;     // about the IP centroid
+  double perimeter = 0.0;  // NormalForce::ip_perimeter
+  int segments = 0;        // NormalForce::segments
   // Bisectors (paper rule only): the caller's, or built here into
   // thread-local scratch (a BisectorSet is 1 KB that would otherwise be
   // zeroed on every call).
@@ -369,10 +375,13 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   }
   // Where an IP edge lies as far as its source tells: on CP's boundary, on
   // TP's, or neither (unknown source).
-  enum class On { kNeither, kCp, kTp };
+  // Found by arithmetic, not by branches on the source (which of an IP's
+  // edges lies on which polygon changes from pair to pair).
+  enum class On { kNeither = 0, kCp = 1, kTp = 2 };
   auto on = [source](int k) {
-    if (!source || !source[k].known()) return On::kNeither;
-    return source[k].on_contact ? On::kCp : On::kTp;
+    if (!source) return On::kNeither;
+    const IpEdge s = source[k];
+    return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
   };
   // The previous, this and the next edge's, carried along the loop.
   On on_prev = On::kNeither, on_this = on(ip.count - 1), on_next = on(0);
@@ -384,7 +393,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
     const double len = length(ab);
     if (len <= tol) continue;
-    out.ip_perimeter += len;
+    perimeter += len;
     // A vertex where an edge on CP's boundary starts or ends is on that
     // boundary: d_exit = 0 there (likewise for TP). For the potential of a
     // side that is used on edge e (so e is not on that side's boundary),
@@ -401,7 +410,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
                             : one_side_edge_n<kNc, false>(*cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol,
                                                           on_prev == On::kCp, on_next == On::kCp, sums);
       if (!used) {
-        out.segments += 2;
+        segments += 2;
         continue;
       }
     } else {
@@ -415,7 +424,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       const bool use_cp = !(mid_cp <= tol);
       const bool use_tp = !(mid_tp <= tol);
       if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
-        out.segments += 2;
+        segments += 2;
         continue;
       }
       // Demarcation points: the end points, the midpoint, and the crossings
@@ -443,21 +452,21 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
                                     use_tp && on_next != On::kTp ? lines_tp.at_end() : 0.0);
       sums = integrate_edge(cr, f_start, f_mid, f_end, traction_at);
     }
-    out.segments += sums.segments;
+    segments += sums.segments;
     const Vec2 n = ip.normal(e);
     force += (0.5 * len * sums.s0) * n;
     moment += cross((0.5 * len * sums.s0) * (a - c) + (len * sums.s1 * kSixth) * ab, n);
   }
+  // Every member written (in declaration order: force, point, moment,
+  // couple, ip_centroid, ip_area, ip_perimeter, segments, valid), so that
+  // nothing is zeroed first.
   const double f2 = length_squared(force);
-  if (!(f2 > 0.0)) return out;
+  if (!(f2 > 0.0)) return NormalForce{Vec2{}, Vec2{}, 0.0, 0.0, c, am.area, perimeter, segments, false};
   // Acting line: points p with (p - c) x f = moment. pg = c + lambda t with
   // t = perp_left(f) / |f|, so lambda (t x f) = moment, t x f = -|f|.
   const double fl = std::sqrt(f2);
   const double lambda = -moment / fl;
-  out.force = force;
-  out.moment = moment;
-  out.point = c + lambda * (perp_left(force) / fl);
-  out.valid = true;
+  NormalForce out{force, c + lambda * (perp_left(force) / fl), moment, 0.0, c, am.area, perimeter, segments, true};
   if (where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
   return out;
 }

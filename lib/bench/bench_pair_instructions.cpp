@@ -1,0 +1,111 @@
+// bench_pair_instructions: a fixed amount of pair work for an instruction
+// counter, where the machine has no hardware counters (perf stat -e
+// instructions is "not supported" on this virtual machine) or its time is
+// shared with other jobs. The same random pairs as bench_pair_cost (same
+// generator, seeds and tolerance per polygon), `passes` passes over them;
+// no timing. Count with callgrind and difference two pass counts, so that
+// the set-up cancels:
+//   valgrind --tool=callgrind --callgrind-out-file=/dev/null
+//       build/bin/bench_pair_instructions N MODE PASSES
+//   instructions per pair = (I(PASSES = 3) - I(PASSES = 1)) / (2 * 1024)
+// MODE 0: overlap + IP + normal force, moment and loading point (what
+// BM_DdaNormalContact times); 1: overlap + IP alone (BM_DdaOverlapIp);
+// 2: Box2D's b2CollidePolygons on the same pairs (BM_Box2dOverlapping).
+// Prints a checksum of the results: the same bits give the same line.
+// Linked with Google Benchmark only for pair_bench.hpp's helpers.
+#include <box2d/b2_collision.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+#include "dda/contact.hpp"
+#include "dda/overlap.hpp"
+#include "dda/potential.hpp"
+#include "pair_bench.hpp"
+
+namespace {
+
+constexpr std::size_t kPairs = 1024;          // as bench_pair_cost
+constexpr double kKn = 1e9;                   // Pa, as bench_pair_cost
+constexpr double kH = 1.0;                    // m
+constexpr double kSmallEdgeFraction = 0.05;   // of H
+
+struct Side {
+  dda::Polygon poly;
+  std::vector<dda::Bisector> bisectors;
+  dda::PotentialSide side;
+  double tol = 0.0;  // geometric_tolerance(poly), m
+  b2PolygonShape b2;
+};
+
+Side make_side(const dda::Polygon& p) {
+  Side s;
+  s.poly = p;
+  s.bisectors.resize(2 * dda::kMaxVertices);
+  const double small = kSmallEdgeFraction * kH;
+  s.side.kn_over_h = kKn / kH;
+  s.side.small_edge = small;
+  s.side.bisector_count = dda::bisectors(p, small, dda::SmallEdgeRays::kVirtualAndVertex, s.bisectors.data());
+  s.tol = dda::geometric_tolerance(p);
+  std::array<b2Vec2, b2_maxPolygonVertices> v{};
+  for (int k = 0; k < p.count && k < b2_maxPolygonVertices; ++k)
+    v[static_cast<std::size_t>(k)] = b2Vec2(static_cast<float>(p.v[k].x), static_cast<float>(p.v[k].y));
+  if (p.count <= b2_maxPolygonVertices) s.b2.Set(v.data(), p.count);
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: %s N MODE PASSES  (N vertices, MODE 0 contact / 1 overlap + IP / 2 Box2D)\n", argv[0]);
+    return 2;
+  }
+  const int n = std::atoi(argv[1]), mode = std::atoi(argv[2]), passes = std::atoi(argv[3]);
+  if (n < 3 || n > b2_maxPolygonVertices || mode < 0 || mode > 2 || passes < 0) return 2;
+  // bench_pair_cost's overlapping pairs for this n.
+  std::mt19937_64 rng(0x5eed0000u + static_cast<unsigned>(n));
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::pair<Side, Side>> v;
+  while (v.size() < kPairs) {
+    const dda::Polygon a = bench::random_convex(n, rng);
+    const double ang = 2 * bench::kPi * u(rng), dist = 1.2 * u(rng);
+    const dda::Polygon b = dda::translated(bench::random_convex(n, rng), {dist * std::cos(ang), dist * std::sin(ang)});
+    if (dda::overlap_state(a, b) == dda::OverlapState::kOverlapping) v.push_back({make_side(a), make_side(b)});
+  }
+  for (auto& p : v)
+    for (Side* s : {&p.first, &p.second}) {
+      s->side.poly = &s->poly;
+      s->side.bisectors = s->bisectors.data();
+    }
+  dda::Polygon ip;
+  std::array<dda::IpEdge, dda::kMaxVertices> source{};
+  const b2Transform identity(b2Vec2(0.0f, 0.0f), b2Rot(0.0f));
+  b2Manifold m;
+  double sum = 0.0;
+  for (int r = 0; r < passes; ++r)
+    for (const auto& p : v) {
+      if (mode == 2) {
+        b2CollidePolygons(&m, &p.first.b2, identity, &p.second.b2, identity);
+        sum += m.pointCount;
+        continue;
+      }
+      const double tol = std::max(p.first.tol, p.second.tol);
+      const dda::OverlapState s = dda::overlap_and_intersection(p.first.poly, p.second.poly, tol, ip, source.data());
+      if (mode == 0 && s == dda::OverlapState::kOverlapping) {
+        const dda::NormalForce nf = dda::normal_contact_force(p.first.side, p.second.side, ip, dda::Integration::kPaperBisector,
+                                                              tol, source.data(), dda::LoadingPoint::kWithinIp);
+        sum += nf.force.x + nf.point.y + nf.moment;
+      } else {
+        sum += ip.count;
+      }
+    }
+  std::printf("%.17g\n", sum);
+  return 0;
+}
