@@ -525,8 +525,8 @@ int run_skips(const Options& o) {
   std::printf("== what a scene skips: 1 thread; the collapse %d warm-up + %d timed steps, the squares their whole "
               "%.1f s run; %s\n",
               o.warmup, o.steps, squares.duration, load_note().c_str());
-  std::printf("%-40s %7s %10s %11s %10s %10s %9s\n", "scene", "blocks", "touch/step", "cpu us/step", "ns/touch",
-              "kB/block", "B/touch");
+  std::printf("%-40s %7s %10s %11s %10s %10s %9s %7s\n", "scene", "blocks", "touch/step", "cpu us/step", "ns/touch",
+              "kB/block", "B/touch", "B/pair");
   for (const SkipRow& r : rows) {
     const double before = heap_bytes();
     dda::Simulation sim(r.scene);
@@ -539,13 +539,14 @@ int run_skips(const Options& o) {
     char per_touch[32] = "-", per_touch_heap[32] = "-";
     if (st.touching_per_step >= 1.0) std::snprintf(per_touch, sizeof per_touch, "%.1f", 1e3 * cpu_us / st.touching_per_step);
     if (touching > 0.0) std::snprintf(per_touch_heap, sizeof per_touch_heap, "%.0f", (heap_bytes() - built) / touching);
-    std::printf("%-40s %7d %10.2f %11.2f %10s %10.2f %9s\n", r.name, st.blocks, st.touching_per_step, cpu_us, per_touch,
-                (built - before) / st.blocks / 1e3, per_touch_heap);
+    std::printf("%-40s %7d %10.2f %11.2f %10s %10.2f %9s %7zu\n", r.name, st.blocks, st.touching_per_step, cpu_us,
+                per_touch, (built - before) / st.blocks / 1e3, per_touch_heap, sim.bytes_per_near_pair());
     std::fflush(stdout);
   }
   std::printf("   cpu us/step: process CPU time per step (robust to a shared machine); ns/touch: the same per\n"
               "   touching pair; kB/block: heap of the constructed simulation per block; B/touch: heap growth\n"
-              "   over the run per touching pair at its end\n");
+              "   over the run per touching pair at its end; B/pair: solver state per broad-phase near pair\n"
+              "   (a frictionless scene has no friction history: Simulation::bytes_per_near_pair)\n");
   return 0;
 }
 

@@ -163,12 +163,17 @@ class Simulation {
   // overlapping, touching or not): with contacts().size() the per-pair cost
   // of a step can be measured.
   std::size_t candidate_count() const { return candidate_count_; }
+  // Bytes of solver state per broad-phase near pair in this scene (its
+  // pair, result, load and two block-list entries; plus the friction
+  // history only when the scene has friction), for the benchmarks.
+  std::size_t bytes_per_near_pair() const;
   // Times the sweep broad phase rebuilt its pair list (BroadPhase::kSweep).
   std::int64_t broad_phase_rebuilds() const { return broad_phase_rebuilds_; }
 
  private:
   // Defined in lib/src/simulation/internal.hpp (users need not see them).
-  struct PairHistory;  // a pair's friction history
+  struct PairHistory;   // a pair's friction history
+  struct PairFriction;  // its history and friction work (scenes with friction only)
   struct PairResult;   // a near pair's contact of the last force evaluation
   struct NearPair;     // a broad-phase pair
   struct PairLoad;     // what a block's force sum reads of a pair
@@ -213,7 +218,7 @@ class Simulation {
   void pair_forces(bool with_energy);
   bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault);
   // friction.cpp
-  void pair_friction(PairResult& r, bool was_active, const NormalForce& nf);
+  void pair_friction(PairResult& r, PairFriction& fr, bool was_active, const NormalForce& nf);
   double friction_tan(int a, int b) const;
   // guards.cpp, penetration_guard.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
@@ -289,6 +294,7 @@ class Simulation {
   // that fixed order.
   std::vector<NearPair> near_pairs_;
   std::vector<PairResult> pair_results_;
+  std::vector<PairFriction> pair_friction_;  // same slots; empty without friction
   std::vector<PairLoad> pair_loads_;
   std::vector<int> near_pair_offset_;
   std::vector<BlockPair> block_pairs_;

@@ -121,6 +121,7 @@ void Simulation::rebuild_near_pairs() {
   // both (its boxes overlap, so its grown boxes do).
   if (friction_) bank_friction_work(pairs);  // energy.cpp: the leaving pairs' friction work
   std::vector<PairResult> results(pairs.size());
+  std::vector<PairFriction> friction(friction_ ? pairs.size() : 0);
   std::vector<PairLoad> loads(pairs.size());
   std::size_t h = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -128,11 +129,13 @@ void Simulation::rebuild_near_pairs() {
     if (h < near_pairs_.size() && !pair_before(pairs[k], near_pairs_[h])) {
       pairs[k].witness = near_pairs_[h].witness;
       results[k] = pair_results_[h];
+      if (friction_) friction[k] = pair_friction_[h];
       loads[k] = pair_loads_[h];
     }
   }
   near_pairs_.swap(pairs);
   pair_results_.swap(results);
+  pair_friction_.swap(friction);
   pair_loads_.swap(loads);
   // Each block's pairs in increasing order (CSR).
   near_pair_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -148,6 +151,11 @@ void Simulation::rebuild_near_pairs() {
     block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j, true};
     block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i, false};
   }
+}
+
+std::size_t Simulation::bytes_per_near_pair() const {
+  return sizeof(NearPair) + sizeof(PairResult) + sizeof(PairLoad) + 2 * sizeof(BlockPair) +
+         (friction_ ? sizeof(PairFriction) : 0);
 }
 
 }  // namespace dda

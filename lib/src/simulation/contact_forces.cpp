@@ -51,7 +51,7 @@ constexpr long kWorkOther = 1;
   info.ip_area = nf.ip_area;
   info.ip_length = 0.5 * nf.ip_perimeter;
   info.sliding = false;
-  if (friction_) pair_friction(r, was_active, nf);  // friction.cpp, Eqs. 24-26
+  if (friction_) pair_friction(r, pair_friction_[static_cast<std::size_t>(k)], was_active, nf);  // friction.cpp, Eqs. 24-26
   const StabilityGuards& g = scene_.guards;
   if (g.max_penetration > 0.0 || g.max_approach_energy > 0.0) {
     // The penetration guard's measures (penetration_guard.cpp): the depth

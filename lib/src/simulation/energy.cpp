@@ -56,10 +56,10 @@ void Simulation::add_friction_energy(Energy& e) const {
   const double half_compliance = 0.5 / scene_.contact.kt;
   double work = dropped_friction_work_;
   for (std::size_t k = 0; k < pair_results_.size(); ++k) {
-    const PairResult& r = pair_results_[k];
-    work += r.friction_work;
-    if (!pair_loads_[k].active || (restarts && r.history.sliding)) continue;
-    e.friction_spring += half_compliance * length_squared(r.info.tangential_force);
+    const PairFriction& fr = pair_friction_[k];
+    work += fr.friction_work;
+    if (!pair_loads_[k].active || (restarts && fr.history.sliding)) continue;
+    e.friction_spring += half_compliance * length_squared(pair_results_[k].info.tangential_force);
   }
   e.dissipated = work - e.friction_spring;
 }
@@ -72,7 +72,7 @@ void Simulation::bank_friction_work(const std::vector<NearPair>& kept) {
   for (std::size_t h = 0; h < near_pairs_.size(); ++h) {
     while (k < kept.size() && before(kept[k], near_pairs_[h])) ++k;
     const bool stays = k < kept.size() && !before(near_pairs_[h], kept[k]);
-    if (!stays) dropped_friction_work_ += pair_results_[h].friction_work;
+    if (!stays) dropped_friction_work_ += pair_friction_[h].friction_work;
   }
 }
 

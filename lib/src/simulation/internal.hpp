@@ -47,6 +47,15 @@ struct Simulation::PairHistory {
   bool sliding = false;
 };
 
+// A near pair's friction state, in its own array (pair_friction_, beside
+// pair_results_) that a frictionless scene never allocates.
+struct Simulation::PairFriction {
+  PairHistory history;
+  // Work friction took out of the two blocks while this pair was near
+  // (outlives the history's restarts), J/m.
+  double friction_work = 0.0;
+};
+
 // One near pair's contact, computed independently of all others (whether
 // it is a candidate and in contact: its PairLoad).
 struct Simulation::PairResult {
@@ -61,10 +70,6 @@ struct Simulation::PairResult {
   double depth = 0.0;
   double depth_bound = 0.0;
   double approach_energy = 0.0;
-  // Work friction took out of the two blocks while this pair was near
-  // (outlives the history's restarts), J/m; only with friction.
-  double friction_work = 0.0;
-  PairHistory history;
 };
 
 // A near pair of the broad phase (i < j).
