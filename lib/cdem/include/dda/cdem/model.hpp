@@ -48,8 +48,8 @@
 //      include their inertia, so the coarse momentum and energy are not
 //      conserved while a sub-model lives (a property of the procedure as
 //      written; the energy account's `other` shows it).
-//    - kInPlace (the default until the paper's mode is shown on the
-//      drivers; beyond the paper): at a touch, the elements within c dt2 of
+//    - kInPlace (an option beyond the paper; the default before the flip to
+//      the paper's sub-model): at a touch, the elements within c dt2 of
 //      the contact point are refined k x k in place
 //      (k = ceil(h_e / (c dt2)), clamped), mass and momentum moved exactly;
 //      the patch (its elements and the coarse elements touching its nodes)
