@@ -62,6 +62,7 @@ inline Result simulate(const dda::cdem::CdemScene& scene,
     }
     r.peak_mean_vj = std::max(r.peak_mean_vj, m.block_velocity(1).x);
     r.max_substeps = std::max(r.max_substeps, m.patch_substeps());
+    for (const auto& sm : m.submodels()) r.max_substeps = std::max(r.max_substeps, sm.substeps);  // kSubModel
     if (std::fabs(m.time() - kFig14cTime) < 0.5 * m.dt()) r.peak_node_vj_at_fig14c = m.block_max_velocity_x(1);
     r.accounts.push_back(m.energy_account());
     if (on_step) on_step(m);
@@ -259,7 +260,7 @@ inline std::vector<repro::Claim> rows(const Result& r, const Result& coarse) {
                     "radius " + format_short(touch.radius) + " m (c dt2 = " + format_short(r_expected) + " m), " +
                         std::to_string(touch.refined_elements) + " coarse elements refined " +
                         std::to_string(touch.subdivision) + " x " + std::to_string(touch.subdivision) +
-                        ", patch step dt/" + std::to_string(r.max_substeps) + " while refined; clone masses " +
+                        ", fine step dt/" + std::to_string(r.max_substeps) + " while refined (sub-model or patch); clone masses " +
                         format_short(touch.mass_main) + " / " + format_short(touch.mass_target) + " kg/m",
                     "radius = c dt2 to 1e-12; >= 1 element refined", refined_within_c_dt2(touch)});
   claims.back().control = repro::control_test(kTestRefined);
@@ -351,8 +352,14 @@ struct MeshPoint {
   double node_vj_fig14c = 0.0;  // j's largest nodal x-velocity at 0.3400 s (what Fig. 14c plots), m/s
   double t_sep = -1.0;        // first separation, s
 };
+// The in-place refinement (kInPlace, an option beyond the paper), set
+// explicitly: mesh_study.csv is its refinement study; the paper's sub-model
+// has its own (submodel_mesh_point, mesh_study_submodel.csv), which stops at
+// 32 divisions.
 inline MeshPoint mesh_point(int divisions) {
-  dda::cdem::CdemScene s = dda::cdem::two_prisms(divisions);
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(divisions, o);
   s.dt = kPaperDt * kPaperDivisions / divisions;
   const Result r = simulate(s);
   return {divisions, s.dt, r.vj, r.peak_node_vj_at_fig14c, r.t_sep};
@@ -585,6 +592,43 @@ inline repro::Claim submodel_mesh_row(const std::vector<SubMeshPoint>& pts) {
       text + "; table mesh_study_submodel.csv",
       "the sub-model's free sub-nodes duplicate the colliding elements' mass: the drift shrinks with the colliding "
       "elements (h)");
+}
+
+// The default flipped to the paper's sub-model (issue 23 item 3): the rows
+// of prisms::rows on the sub-model run (`sub`, the paper's figure data) and,
+// beside each check the sub-model fails, the same claim on the in-place
+// option (`inplace`, beyond the paper) as a row of its own. A failing
+// sub-model row without a cause gets paper_method with the measured numbers.
+inline const char* const kInPlacePrefix = "(in-place option, beyond the paper) ";
+inline std::vector<repro::Claim> flipped_rows(const Result& sub, const Result& inplace, const Result& coarse) {
+  using repro::format_short;
+  const std::vector<repro::Claim> a = rows(sub, coarse), b = rows(inplace, coarse);
+  const std::string reason =
+      "Sect. 5 steps 3-5 as written (model_submodel.cpp): the free sub-nodes of the sub-model (inside the colliding "
+      "elements and on their free boundary) carry mass the coarse nodes carry too, and the sub-elements' force "
+      "returned to the coarse nodes in step 5 includes those sub-nodes' inertia, so while the sub-model lives the "
+      "coarse forces do not sum to zero and do work the account does not hold: max |p - p0| / p0 " +
+      format_short(sub.worst_momentum, 3) + ", worst |other| / E0 " + format_short(worst_energy_remainder(sub.accounts), 3) +
+      ", E(0.5 s) / E0 " + format_short(sub.e_end.total() / sub.e0, 4) + ", v_j(0.5 s) " + format_short(sub.vj, 4) +
+      " m/s, j's largest nodal v_x at 0.3400 s " + format_short(sub.peak_node_vj_at_fig14c, 4) +
+      " m/s, touch loss " + format_short(sub.touch.energy_loss, 4) + " J/m at coarse nodes (" +
+      format_short(sub.touch.mass_main) + " / " + format_short(sub.touch.mass_target) +
+      " kg/m: Sect. 5 leaves the coarse contact as it is); with k = 1 (no free sub-node) momentum is exact. The row "
+      "beside, the in-place option (beyond the paper: mass moved into the patch, the clone between patch nodes), "
+      "gets it right: max |p - p0| / p0 " + format_short(inplace.worst_momentum, 3) + ", v_j(0.5 s) " +
+      format_short(inplace.vj, 4) + " m/s";
+  std::vector<repro::Claim> out;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out.push_back(a[i]);
+    if (a[i].kind != repro::Kind::kCheck || a[i].pass || i >= b.size()) continue;
+    if (a[i].cause_text.empty()) repro::explain_fail(out.back(), repro::Cause::kPaperMethod, reason);
+    if (b[i].pass == a[i].pass) continue;  // the same verdict: no row beside
+    repro::Claim c = b[i];
+    c.claim = kInPlacePrefix + c.claim;
+    c.measured = "in-place option (SubdivisionMode::kInPlace): " + c.measured;
+    out.push_back(c);
+  }
+  return out;
 }
 
 }  // namespace prisms

@@ -23,4 +23,24 @@ inline void names_test(const prisms::Result& r, const prisms::Result& coarse, co
   FAIL("B-6: no row '" << claim << "'");
 }
 
+// The default flipped to the sub-model: the row `claim` of
+// prisms::flipped_rows(sub, inplace, coarse) and the in-place option's row
+// beside it (the sub-model's row fails) both name `test`.
+inline void names_test_both(const prisms::Result& sub, const prisms::Result& inplace, const prisms::Result& coarse,
+                            const std::string& claim, const char* test) {
+  int found = 0;
+  for (const repro::Claim& c : prisms::flipped_rows(sub, inplace, coarse))
+    if (c.claim == claim || c.claim == prisms::kInPlacePrefix + claim) {
+      CHECK(c.kind == repro::Kind::kCheck);
+      CHECK(c.control == repro::control_test(test));
+      ++found;
+    }
+  CHECK(found == 2);
+}
+inline dda::cdem::CdemOptions in_place() {
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;
+  return o;
+}
+
 }  // namespace controls_b6

@@ -72,25 +72,40 @@ TEST_CASE(prisms::kTestSeparation, "[controls][B-6]") {
   CHECK_FALSE(prisms::separates_at_fig15a(prisms_run({}, g)));
 }
 
+// The default is the sub-model (Sect. 5 as written), whose row fails
+// (paper_method: the free sub-nodes' inertia returned in step 5); the
+// in-place option's row beside it passes. The control: the in-place run
+// passes, the sub-model's verdict is its FAIL, the bad inputs fail.
 TEST_CASE(prisms::kTestLittleLoss, "[controls][B-6]") {
   const prisms::Result paper = prisms_run(), coarse = prisms_run(no_subdivision());
-  names_test(paper, coarse, "a little energy is lost in the collision", prisms::kTestLittleLoss);
-  CHECK(prisms::little_loss(paper));
+  const prisms::Result inplace = prisms_run(controls_b6::in_place());
+  controls_b6::names_test_both(paper, inplace, coarse, "a little energy is lost in the collision",
+                               prisms::kTestLittleLoss);
+  CHECK(prisms::little_loss(inplace));
+  CHECK_FALSE(prisms::little_loss(paper));
   // Coarse clone nodes: the Eq. 5 loss of the heavy coarse masses, 7.1 % of
   // E0 (above the 5 % bound of 'a little').
   CHECK_FALSE(prisms::little_loss(coarse));
   // Mass damping alpha = 1/s: 63 % lost, nearly all of it outside the
-  // impact and remap balance.
-  dda::cdem::CdemOptions damped;
+  // impact and remap balance (both modes).
+  dda::cdem::CdemOptions damped = controls_b6::in_place();
   damped.mass_damping = 1.0;
+  CHECK_FALSE(prisms::little_loss(prisms_run(damped)));
+  damped.subdivision_mode = dda::cdem::SubdivisionMode::kSubModel;
   CHECK_FALSE(prisms::little_loss(prisms_run(damped)));
 }
 
 TEST_CASE(prisms::kTestSubdivisionLoss, "[controls][B-6]") {
   const prisms::Result paper = prisms_run(), coarse = prisms_run(no_subdivision());
-  names_test(paper, coarse, "subdivision makes the clone's inelastic loss small (Eq. 5: it falls with the "
-             "contact-point mass)", prisms::kTestSubdivisionLoss);
-  CHECK(prisms::subdivision_reduces_loss(paper, coarse));  // 517 against 18605 J/m
+  const prisms::Result inplace = prisms_run(controls_b6::in_place());
+  controls_b6::names_test_both(paper, inplace, coarse,
+                               "subdivision makes the clone's inelastic loss small (Eq. 5: it falls with the "
+                               "contact-point mass)",
+                               prisms::kTestSubdivisionLoss);
+  CHECK(prisms::subdivision_reduces_loss(inplace, coarse));  // 517 against 18605 J/m
+  // The sub-model leaves the contact at the coarse nodes (Sect. 5 as
+  // written): the coarse loss, its row's FAIL.
+  CHECK_FALSE(prisms::subdivision_reduces_loss(paper, coarse));
   // The 'subdivided' run with coarse clone nodes too: the same masses, the
   // same loss, nothing smaller.
   CHECK_FALSE(prisms::subdivision_reduces_loss(prisms_run(no_subdivision()), coarse));

@@ -398,8 +398,13 @@ void make_j_denser(SceneT& s, double factor) {
 // The rows of a run of the prisms scene with geometry g, block j
 // j_density_factor times as dense and fixed if asked; the coarse run beside
 // it is the paper's scene without subdivision.
-std::vector<repro::Claim> prism_rows(const dda::cdem::PrismGeometry& g, double j_density_factor, bool j_fixed) {
-  dda::cdem::CdemScene s = dda::cdem::two_prisms(2, {}, g);
+// mode: the subdivision (the default: Sect. 5 as written, the sub-model; the
+// rows beside its failing ones use the in-place option).
+std::vector<repro::Claim> prism_rows(const dda::cdem::PrismGeometry& g, double j_density_factor, bool j_fixed,
+                                     dda::cdem::SubdivisionMode mode = dda::cdem::SubdivisionMode::kSubModel) {
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = mode;
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(2, o, g);
   if (j_density_factor != 1.0) make_j_denser(s, j_density_factor);
   s.blocks[1].fixed = j_fixed;
   dda::cdem::CdemOptions coarse;
@@ -415,27 +420,43 @@ std::vector<bool> verdicts_of(const std::vector<repro::Claim>& rows, const char*
 }
 }  // namespace
 
+// Each in both modes: the sub-model (the paper's rows) and the in-place
+// option (the rows beside the sub-model's failing ones).
 TEST_CASE("B-6 touch: FAIL with the gap 0.1 m wider", "[controls][B-6]") {
-  const std::vector<bool> paper = verdicts_of(prism_rows({}, 1.0, false), prisms::kControlTouch);
-  REQUIRE(paper.size() == 2);
-  for (bool v : paper) CHECK(v);
-  dda::cdem::PrismGeometry g;
-  g.gap += 0.1;  // touch at 1.1 / 3 s
-  for (bool v : verdicts_of(prism_rows(g, 1.0, false), prisms::kControlTouch)) CHECK_FALSE(v);
+  for (auto mode : {dda::cdem::SubdivisionMode::kSubModel, dda::cdem::SubdivisionMode::kInPlace}) {
+    const std::vector<bool> paper = verdicts_of(prism_rows({}, 1.0, false, mode), prisms::kControlTouch);
+    REQUIRE(paper.size() == 2);
+    for (bool v : paper) CHECK(v);
+    dda::cdem::PrismGeometry g;
+    g.gap += 0.1;  // touch at 1.1 / 3 s
+    for (bool v : verdicts_of(prism_rows(g, 1.0, false, mode), prisms::kControlTouch)) CHECK_FALSE(v);
+  }
 }
 
 TEST_CASE("B-6 exchange: FAIL with block j twice as dense", "[controls][B-6]") {
   // Unequal masses: j leaves at 2 m / (m + M) v = 2 m/s, not i's 3 m/s.
-  const std::vector<bool> wrong = verdicts_of(prism_rows({}, 2.0, false), prisms::kControlExchange);
-  REQUIRE(wrong.size() == 2);
-  for (bool v : wrong) CHECK_FALSE(v);
+  for (auto mode : {dda::cdem::SubdivisionMode::kSubModel, dda::cdem::SubdivisionMode::kInPlace}) {
+    const std::vector<bool> wrong = verdicts_of(prism_rows({}, 2.0, false, mode), prisms::kControlExchange);
+    REQUIRE(wrong.size() == 2);
+    for (bool v : wrong) CHECK_FALSE(v);
+  }
+  // The real run: the in-place option passes both (the sub-model's FAILs are
+  // its rows' paper_method verdicts).
+  for (bool v : verdicts_of(prism_rows({}, 1.0, false, dda::cdem::SubdivisionMode::kInPlace), prisms::kControlExchange))
+    CHECK(v);
 }
 
 TEST_CASE("B-6 momentum: FAIL with block j fixed", "[controls][B-6]") {
   // A fixed j is a wall: i bounces back and the momentum is not conserved.
-  const std::vector<bool> wrong = verdicts_of(prism_rows({}, 1.0, true), prisms::kControlMomentum);
-  REQUIRE(wrong.size() == 1);
-  CHECK_FALSE(wrong[0]);
+  for (auto mode : {dda::cdem::SubdivisionMode::kSubModel, dda::cdem::SubdivisionMode::kInPlace}) {
+    const std::vector<bool> wrong = verdicts_of(prism_rows({}, 1.0, true, mode), prisms::kControlMomentum);
+    REQUIRE(wrong.size() == 1);
+    CHECK_FALSE(wrong[0]);
+  }
+  const std::vector<bool> inplace =
+      verdicts_of(prism_rows({}, 1.0, false, dda::cdem::SubdivisionMode::kInPlace), prisms::kControlMomentum);
+  REQUIRE(inplace.size() == 1);
+  CHECK(inplace[0]);
 }
 
 // --- A against B on the same collisions (B-7): the squares at the base dt ---------

@@ -23,7 +23,7 @@
 //    the interaction force (Eq. 11) is checked against the tensile limit
 //    (Eq. 6) and the Mohr-Coulomb shear limit (Eqs. 7-10) for separation;
 //  * local subdivision (Sect. 5), two modes (CdemOptions::subdivision_mode):
-//    - kSubModel, Sect. 5 as written (steps 1-5, Eq. 12; model_submodel.cpp):
+//    - kSubModel (the default), Sect. 5 as written (steps 1-5, Eq. 12; model_submodel.cpp):
 //      the coarse model stays as it is (contact, clone and Eqs. 4-11 at
 //      coarse nodes with coarse masses, exactly as without subdivision). At
 //      a touch the colliding elements (within c dt2 of the contact point,
@@ -48,8 +48,8 @@
 //      include their inertia, so the coarse momentum and energy are not
 //      conserved while a sub-model lives (a property of the procedure as
 //      written; the energy account's `other` shows it).
-//    - kInPlace (the default until the paper's mode is shown on the
-//      drivers; beyond the paper): at a touch, the elements within c dt2 of
+//    - kInPlace (an option beyond the paper; the default before the flip to
+//      the paper's sub-model): at a touch, the elements within c dt2 of
 //      the contact point are refined k x k in place
 //      (k = ceil(h_e / (c dt2)), clamped), mass and momentum moved exactly;
 //      the patch (its elements and the coarse elements touching its nodes)
@@ -151,10 +151,11 @@ enum class SubdivisionMode : std::uint8_t {
   // nodes, as without subdivision); the colliding elements get a separate
   // sub-model of k x k sub-elements driven by the coarse nodes' velocities
   // (Eq. 12, steps dt/n), whose element forces replace the colliding
-  // elements' own force on their coarse nodes.
+  // elements' own force on their coarse nodes. The default.
   kSubModel,
-  // Beyond the paper: the colliding elements refined in place with hanging
-  // nodes, the clone formed between patch nodes (model_subdivision.cpp).
+  // Beyond the paper, an option: the colliding elements refined in place
+  // with hanging nodes, the clone formed between patch nodes
+  // (model_subdivision.cpp).
   kInPlace,
 };
 
@@ -184,7 +185,9 @@ struct CdemOptions {
   double tolerance = 5e-3;  // contact tolerance d_tol, m (Paper B Sect. 6)
   CloneStrength strength;
   bool subdivision = true;  // Sect. 5 local subdivision; off: clones of coarse nodes
-  SubdivisionMode subdivision_mode = SubdivisionMode::kInPlace;
+  // Default: the paper's sub-model (Sect. 5 as written); kInPlace is the
+  // in-place refinement beyond the paper, a named option.
+  SubdivisionMode subdivision_mode = SubdivisionMode::kSubModel;
   // Refinement k x k of an element in the contact zone: k = ceil(h_e / (c dt2))
   // (h_e = sqrt(2 A_e), the element's length scale), clamped to this range.
   // One k per run, fixed by the first touch, so that refined neighbours share
