@@ -27,40 +27,9 @@
 #include "dda/contact.hpp"
 #include "dda/overlap.hpp"
 #include "dda/potential.hpp"
-#include "pair_bench.hpp"
+#include "pair_sides.hpp"
 
-namespace {
-
-constexpr std::size_t kPairs = 1024;          // as bench_pair_cost
-constexpr double kKn = 1e9;                   // Pa, as bench_pair_cost
-constexpr double kH = 1.0;                    // m
-constexpr double kSmallEdgeFraction = 0.05;   // of H
-
-struct Side {
-  dda::Polygon poly;
-  std::vector<dda::Bisector> bisectors;
-  dda::PotentialSide side;
-  double tol = 0.0;  // geometric_tolerance(poly), m
-  b2PolygonShape b2;
-};
-
-Side make_side(const dda::Polygon& p) {
-  Side s;
-  s.poly = p;
-  s.bisectors.resize(2 * dda::kMaxVertices);
-  const double small = kSmallEdgeFraction * kH;
-  s.side.kn_over_h = kKn / kH;
-  s.side.small_edge = small;
-  s.side.bisector_count = dda::bisectors(p, small, dda::SmallEdgeRays::kVirtualAndVertex, s.bisectors.data());
-  s.tol = dda::geometric_tolerance(p);
-  std::array<b2Vec2, b2_maxPolygonVertices> v{};
-  for (int k = 0; k < p.count && k < b2_maxPolygonVertices; ++k)
-    v[static_cast<std::size_t>(k)] = b2Vec2(static_cast<float>(p.v[k].x), static_cast<float>(p.v[k].y));
-  if (p.count <= b2_maxPolygonVertices) s.b2.Set(v.data(), p.count);
-  return s;
-}
-
-}  // namespace
+using bench::Pair;
 
 int main(int argc, char** argv) {
   if (argc != 4) {
@@ -70,20 +39,8 @@ int main(int argc, char** argv) {
   const int n = std::atoi(argv[1]), mode = std::atoi(argv[2]), passes = std::atoi(argv[3]);
   if (n < 3 || n > b2_maxPolygonVertices || mode < 0 || mode > 2 || passes < 0) return 2;
   // bench_pair_cost's overlapping pairs for this n.
-  std::mt19937_64 rng(0x5eed0000u + static_cast<unsigned>(n));
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<std::pair<Side, Side>> v;
-  while (v.size() < kPairs) {
-    const dda::Polygon a = bench::random_convex(n, rng);
-    const double ang = 2 * bench::kPi * u(rng), dist = 1.2 * u(rng);
-    const dda::Polygon b = dda::translated(bench::random_convex(n, rng), {dist * std::cos(ang), dist * std::sin(ang)});
-    if (dda::overlap_state(a, b) == dda::OverlapState::kOverlapping) v.push_back({make_side(a), make_side(b)});
-  }
-  for (auto& p : v)
-    for (Side* s : {&p.first, &p.second}) {
-      s->side.poly = &s->poly;
-      s->side.bisectors = s->bisectors.data();
-    }
+  std::vector<Pair> v;
+  bench::fill_pairs(n, true, v);
   dda::Polygon ip;
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   const b2Transform identity(b2Vec2(0.0f, 0.0f), b2Rot(0.0f));
@@ -92,14 +49,14 @@ int main(int argc, char** argv) {
   for (int r = 0; r < passes; ++r)
     for (const auto& p : v) {
       if (mode == 2) {
-        b2CollidePolygons(&m, &p.first.b2, identity, &p.second.b2, identity);
+        b2CollidePolygons(&m, &p.a.b2, identity, &p.b.b2, identity);
         sum += m.pointCount;
         continue;
       }
-      const double tol = std::max(p.first.tol, p.second.tol);
-      const dda::OverlapState s = dda::overlap_and_intersection(p.first.poly, p.second.poly, tol, ip, source.data());
+      const double tol = p.tol();
+      const dda::OverlapState s = dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data());
       if (mode == 0 && s == dda::OverlapState::kOverlapping) {
-        const dda::NormalForce nf = dda::normal_contact_force(p.first.side, p.second.side, ip, dda::Integration::kPaperBisector,
+        const dda::NormalForce nf = dda::normal_contact_force(p.a.side, p.b.side, ip, dda::Integration::kPaperBisector,
                                                               tol, source.data(), dda::LoadingPoint::kWithinIp);
         sum += nf.force.x + nf.point.y + nf.moment;
       } else {

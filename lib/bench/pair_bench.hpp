@@ -1,4 +1,4 @@
-// Shared by the pair benchmarks (bench_geometry, bench_pair_cost): random
+// Shared by the pair benchmarks (bench_geometry, pair_sides.hpp): random
 // convex polygons and the per-pair counter.
 #pragma once
 #include <benchmark/benchmark.h>
