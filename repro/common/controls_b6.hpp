@@ -8,19 +8,15 @@
 
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/claims.hpp"
+#include "repro/common/controls_rows.hpp"
 
 namespace controls_b6 {
 
 // The row `claim` of prisms::rows(r, coarse) must be a check naming `test`.
 inline void names_test(const prisms::Result& r, const prisms::Result& coarse, const std::string& claim,
                        const char* test) {
-  for (const repro::Claim& c : prisms::rows(r, coarse))
-    if (c.claim == claim) {
-      CHECK(c.kind == repro::Kind::kCheck);
-      CHECK(c.control == repro::control_test(test));
-      return;
-    }
-  FAIL("B-6: no row '" << claim << "'");
+  controls::row_names_test(prisms::rows(r, coarse), [&claim](const repro::Claim& c) { return c.claim == claim; },
+                           test, "B-6 '" + claim + "'");
 }
 
 // The default flipped to the sub-model: the row `claim` of

@@ -12,6 +12,7 @@
 
 #include "repro/B_9_impact_study/impact_study.hpp"
 #include "repro/common/claims.hpp"
+#include "repro/common/controls_rows.hpp"
 
 namespace {
 
@@ -32,13 +33,7 @@ const CellResult& good_option_cell() {
 
 // The row with key `key` names `test` as its control.
 void names_test(const std::string& key, const char* test) {
-  for (const repro::Claim& c : impact::rows({good_cell()}, {}, {good_option_cell()}))
-    if (c.key == key) {
-      CHECK(c.kind == repro::Kind::kCheck);
-      CHECK(c.control == repro::control_test(test));
-      return;
-    }
-  FAIL("B-9: no row with key " << key);
+  controls::key_names_test(impact::rows({good_cell()}, {}, {good_option_cell()}), key, test);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/B_9_impact_study/impact_study.hpp"
 #include "repro/common/claims.hpp"
+#include "repro/common/controls_rows.hpp"
 
 namespace {
 
@@ -39,32 +40,31 @@ prisms::Result sub_prisms(const std::function<void(dda::cdem::CdemScene&)>& edit
 
 // The B-6 mode row `claim` must be a check naming `test`.
 void b6_names_test(const std::string& claim_start, const char* test) {
-  for (const repro::Claim& c : prisms::mode_rows(sub_run(), inplace_run(), inplace_run().r))
-    if (c.claim.rfind(claim_start, 0) == 0) {
-      CHECK(c.kind == repro::Kind::kCheck);
-      CHECK(c.control == repro::control_test(test));
-      return;
-    }
-  FAIL("B-6: no row starting '" << claim_start << "'");
+  controls::row_names_test(
+      prisms::mode_rows(sub_run(), inplace_run(), inplace_run().r),
+      [&claim_start](const repro::Claim& c) { return c.claim.rfind(claim_start, 0) == 0; }, test,
+      "B-6 starting '" + claim_start + "'");
 }
 
 using impact::Cell;
 using impact::CellResult;
 
-// A finished sub-model cell (30 deg, 5 m/s, mu 0.3).
+// The good sub-model cell (30 deg, 5 m/s, mu 0.3) and its finished run.
+const Cell kGoodSubCell{30.0, 5.0, 0.3, true, false, true};
 const CellResult& good_sub_cell() {
-  static const CellResult r = impact::run_cell(Cell{30.0, 5.0, 0.3, true, false, true});
+  static const CellResult r = impact::run_cell(kGoodSubCell);
   return r;
 }
 
+// The good sub-model cell run on its scene changed by `edit`, at step dt.
+CellResult good_sub_cell_with(const std::function<void(dda::cdem::CdemScene&)>& edit, double dt = impact::kDt) {
+  dda::cdem::CdemScene s = impact::scene_of(kGoodSubCell, dt);
+  edit(s);
+  return impact::run_cell(kGoodSubCell, dt, &s);
+}
+
 void b9_names_test(const std::string& key, const char* test) {
-  for (const repro::Claim& c : impact::submodel_rows({good_sub_cell()}, {}))
-    if (c.key == key) {
-      CHECK(c.kind == repro::Kind::kCheck);
-      CHECK(c.control == repro::control_test(test));
-      return;
-    }
-  FAIL("B-9: no row with key " << key);
+  controls::key_names_test(impact::submodel_rows({good_sub_cell()}, {}), key, test);
 }
 
 }  // namespace
@@ -133,11 +133,8 @@ TEST_CASE(impact::kTestSubPassThrough, "[controls][B-9][submodel]") {
 TEST_CASE(impact::kTestSubEnergy, "[controls][B-9][submodel]") {
   b9_names_test("submodel-kinetic-energy", impact::kTestSubEnergy);
   CHECK(impact::energy_never_grows(good_sub_cell()));
-  const Cell c{30.0, 5.0, 0.3, true, false, true};
-  const double dt = 1.5 * dda::cdem::Model(impact::scene_of(c)).critical_dt();
-  dda::cdem::CdemScene s = impact::scene_of(c, dt);
-  s.options.check_stability = false;
-  const CellResult r = impact::run_cell(c, dt, &s);
+  const double dt = 1.5 * dda::cdem::Model(impact::scene_of(kGoodSubCell)).critical_dt();
+  const CellResult r = good_sub_cell_with([](dda::cdem::CdemScene& s) { s.options.check_stability = false; }, dt);
   INFO("outcome " << r.outcome << ", max KE/KE0 - 1 = " << r.ke_growth);
   CHECK_FALSE(impact::energy_never_grows(r));
 }
@@ -145,11 +142,10 @@ TEST_CASE(impact::kTestSubEnergy, "[controls][B-9][submodel]") {
 TEST_CASE(impact::kTestSubSeparation, "[controls][B-9][submodel]") {
   b9_names_test("submodel-separation", impact::kTestSubSeparation);
   CHECK(impact::separates(good_sub_cell()));
-  const Cell c{30.0, 5.0, 0.3, true, false, true};
-  dda::cdem::CdemScene s = impact::scene_of(c);
-  s.options.strength.tensile = 1e12;
-  s.options.strength.cohesion = 1e12;
-  const CellResult r = impact::run_cell(c, impact::kDt, &s);
+  const CellResult r = good_sub_cell_with([](dda::cdem::CdemScene& s) {
+    s.options.strength.tensile = 1e12;
+    s.options.strength.cohesion = 1e12;
+  });
   INFO("outcome " << r.outcome);
   CHECK_FALSE(impact::separates(r));
 }
@@ -165,10 +161,7 @@ TEST_CASE(impact::kTestSubTouchLoss, "[controls][B-9][submodel]") {
 TEST_CASE(impact::kTestSubTotalLoss, "[controls][B-9][submodel]") {
   b9_names_test("submodel-total-loss-eq5", impact::kTestSubTotalLoss);
   CHECK(impact::total_loss_within_block_eq5(good_sub_cell()));
-  const Cell c{30.0, 5.0, 0.3, true, false, true};
-  dda::cdem::CdemScene s = impact::scene_of(c);
-  s.options.mass_damping = 2000.0;
-  const CellResult r = impact::run_cell(c, impact::kDt, &s);
+  const CellResult r = good_sub_cell_with([](dda::cdem::CdemScene& s) { s.options.mass_damping = 2000.0; });
   INFO("outcome " << r.outcome << ", loss / block Eq. 5 = " << r.total_loss / r.block_eq5);
   CHECK_FALSE(impact::total_loss_within_block_eq5(r));
 }
