@@ -93,6 +93,12 @@ inline int cst_incremental_force(const std::array<Vec2, 3>& x, std::array<Vec2, 
   return 0;
 }
 
+// Strain energy of a constant-strain triangle at corners x with stress
+// sigma and compliance C: 1/2 A sigma^T C sigma, J per unit thickness.
+inline double cst_strain_energy(const std::array<Vec2, 3>& x, const Vec3& stress, const Mat3& c) {
+  return 0.5 * cst(x).area * stress.dot(c * stress);
+}
+
 inline double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 e = b - a;
   const double l2 = length_squared(e);

@@ -54,7 +54,7 @@ void Model::compute_coarse_forces() {
   for (int n : coarse_dofs_) f_[n] = m_[n] * g - opt_.mass_damping * m_[n] * v_[n];
   for (int e : coarse_eval_) {
     if (blocks_[elem(e).block].fixed) continue;
-    if (!elem_sub_.empty() && elem_sub_[e] >= 0) continue;  // Sect. 5 step 5: its sub-model's force instead
+    if (in_submodel(e)) continue;  // Sect. 5 step 5: its sub-model's force instead
     element_force(elem(e), false);
   }
   add_submodel_forces();

@@ -24,10 +24,9 @@ CdemEnergy Model::energy() const {
   en.contact = penalty_energy();
   for (const std::vector<int>* list : {&coarse_elems_, &fine_elems_})
     for (int ei : *list) {
-      if (!elem_sub_.empty() && elem_sub_[ei] >= 0) continue;  // counted in its sub-model
+      if (in_submodel(ei)) continue;  // counted in its sub-model
       const Elem& e = elem(ei);
-      const double a = cst({x_[e.n[0]], x_[e.n[1]], x_[e.n[2]]}).area;
-      en.strain += 0.5 * a * e.stress.dot(c_[blocks_[e.block].material] * e.stress);
+      en.strain += cst_strain_energy({x_[e.n[0]], x_[e.n[1]], x_[e.n[2]]}, e.stress, c_[blocks_[e.block].material]);
     }
   if (!subs_.empty()) en.strain += submodel_strain();
   for (std::size_t i = 0; i < x_.size(); ++i)
@@ -116,7 +115,7 @@ Snapshot Model::snapshot() const {
   for (std::size_t ei = 0; ei < elems_.size(); ++ei) {
     const Elem& e = elems_[ei];
     if (!e.active) continue;
-    if (!elem_sub_.empty() && elem_sub_[ei] >= 0) continue;  // drawn as its sub-model
+    if (in_submodel(static_cast<int>(ei))) continue;  // drawn as its sub-model
     Snapshot::Tri t;
     t.x = {x_[e.n[0]], x_[e.n[1]], x_[e.n[2]]};
     t.velocity = (v_[e.n[0]] + v_[e.n[1]] + v_[e.n[2]]) / 3.0;

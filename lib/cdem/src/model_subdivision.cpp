@@ -297,9 +297,9 @@ void Model::unrefine(const std::vector<int>& parents) {
       double fine_strain = 0.0;
       for (int chi : lat.children) {
         const Elem& ch = elem(chi);
-        fine_strain += 0.5 * cst({x_[ch.n[0]], x_[ch.n[1]], x_[ch.n[2]]}).area * ch.stress.dot(cm * ch.stress);
+        fine_strain += cst_strain_energy({x_[ch.n[0]], x_[ch.n[1]], x_[ch.n[2]]}, ch.stress, cm);
       }
-      const double coarse_strain = 0.5 * cst({x_[c[0]], x_[c[1]], x_[c[2]]}).area * parent.stress.dot(cm * parent.stress);
+      const double coarse_strain = cst_strain_energy({x_[c[0]], x_[c[1]], x_[c[2]]}, parent.stress, cm);
       if (coarse_strain > 0.0)
         parent.stress *= std::min(kMaxEnergyScale, std::sqrt(std::max(1.0, fine_strain / coarse_strain)));
     }

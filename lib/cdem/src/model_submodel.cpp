@@ -84,19 +84,7 @@ constexpr double kInsideRelTol = 1e-12;
 // pushed to the next integer.
 constexpr double kCeilSlack = 1e-9;
 
-double strain_energy(const std::array<Vec2, 3>& x, const Vec3& stress, const Mat3& c) {
-  return 0.5 * cst(x).area * stress.dot(c * stress);
-}
-
 }  // namespace
-
-Vec2 Model::submodel_node_force(int i) const {
-  Vec2 f{};
-  for (const SubModel& s : subs_)
-    for (std::size_t c = 0; c < s.coarse.size(); ++c)
-      if (s.coarse[c] == i) f += s.coarse_force[c];
-  return f;
-}
 
 // Step (1) at the touch: the request; the sub-model is built at t1.
 void Model::request_submodel(int main_node, Vec2 point, int ea, int eb, const TouchRecord& rec) {
@@ -306,7 +294,8 @@ void Model::submodel_forces(SubModel& s, double t) {
   for (std::size_t i = 0; i < s.x.size(); ++i)
     s.f[i] = s.prescribed[i] ? Vec2{} : s.m[i] * g - opt_.mass_damping * s.m[i] * s.v[i];
   std::fill(s.coarse_force.begin(), s.coarse_force.end(), Vec2{});
-  std::vector<Vec2> bc(s.x.size(), Vec2{});
+  std::vector<Vec2>& bc = s.bc;  // element forces on the prescribed sub-nodes
+  bc.assign(s.x.size(), Vec2{});
   for (std::size_t q = 0; q < s.elems.size(); ++q) {
     SubElem& se = s.elems[q];
     const std::array<Vec2, 3> x{s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]};
@@ -411,11 +400,11 @@ bool Model::delete_separated_submodels() {
         const double a = cst(x).area;
         sum += a * se.stress;
         area += a;
-        before += strain_energy(x, se.stress, c);
+        before += cst_strain_energy(x, se.stress, c);
       }
       pe.stress = sum / area;
       pe.last = {x_[pe.n[0]], x_[pe.n[1]], x_[pe.n[2]]};
-      change += strain_energy(pe.last, pe.stress, c) - before;
+      change += cst_strain_energy(pe.last, pe.stress, c) - before;
       elem_sub_[e] = -1;
     }
     record.strain_change = change;
@@ -436,7 +425,7 @@ double Model::submodel_strain() const {
   double e = 0.0;
   for (const SubModel& s : subs_)
     for (const SubElem& se : s.elems)
-      e += strain_energy({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, se.stress,
+      e += cst_strain_energy({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, se.stress,
                          c_[blocks_[elem(se.parent).block].material]);
   return e;
 }

@@ -442,9 +442,6 @@ class Model {
   // SubdivisionMode::kSubModel: every sub-model made so far, and how many live.
   const std::vector<SubModelRecord>& submodels() const { return submodel_records_; }
   int live_submodels() const { return static_cast<int>(subs_.size()); }
-  // kSubModel: the force the live sub-models returned to coarse node i at
-  // the last force evaluation (Sect. 5 step 5), N/m; zero without one.
-  Vec2 submodel_node_force(int i) const;
 
   int node_count() const { return static_cast<int>(x_.size()); }
   Vec2 node_position(int i) const { return x_[i]; }
@@ -521,6 +518,7 @@ class Model {
     std::vector<int> coarse;          // the coarse nodes that drive it
     std::vector<Vec2> coarse_x0;      // their positions at the last sync
     std::vector<Vec2> coarse_force;   // step 5: force returned to them, N/m
+    std::vector<Vec2> bc;             // scratch: element forces on the prescribed sub-nodes, N/m
   };
   struct SubRequest {
     int main_node = -1, ea = -1, eb = -1;
@@ -591,6 +589,9 @@ class Model {
     return opt_.subdivision && opt_.subdivision_mode == SubdivisionMode::kSubModel &&
            opt_.contact == ContactMode::kTwoScale;
   }
+  // Coarse element e is a parent of a live sub-model: its force, strain
+  // energy and drawing come from the sub-model (step 5).
+  bool in_submodel(int e) const { return !elem_sub_.empty() && elem_sub_[static_cast<std::size_t>(e)] >= 0; }
   void request_submodel(int main_node, Vec2 point, int ea, int eb, const TouchRecord& rec);
   void create_submodel(const SubRequest& req, int touch_index, double t);
   void advance_submodels(double t0, double t1);
