@@ -100,9 +100,9 @@ void Model::check_state() const {
     if (kind_[i] == NodeKind::kDead) continue;
     if (!is_finite(x_[i]) || !is_finite(v_[i])) {
       std::ostringstream s;
-      s << "cdem: non-finite state at node " << i << " of block " << node_block_[i] << ", t = " << time_ << " (step "
+      s << "cdem: non-finite state at node " << i << " of block " << node_block_[i] << ", t = " << time_ << " s (step "
         << steps_ << ")";
-      throw SimulationError(s.str());
+      throw SimulationError(s.str(), StopReason::kNonFinite);
     }
   }
 }

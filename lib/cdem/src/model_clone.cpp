@@ -230,7 +230,7 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
     s << "cdem: node " << m << " of block " << bm << " touched block " << bt << " " << kMaxTouchesPerStep
       << " times within step " << steps_ + 1 << " (t = " << t << " s, depth " << depth
       << " m): each clone separates at once and the contact is not resolved; try a smaller dt";
-    throw ContactError(s.str(), m, bm, bt, steps_ + 1, t, depth);
+    throw ContactError(s.str(), m, bm, bt, steps_ + 1, t, depth, StopReason::kOther);
   }
   double xi = touch.xi;
   {

@@ -43,8 +43,8 @@ void Model::element_force(Elem& e, bool patch_eval) {
   std::array<Vec2, 3> f;
   if (cst_incremental_force(x, e.last, e.stress, d_[blocks_[e.block].material], f) != 0) {
     std::ostringstream s;
-    s << "cdem: element of block " << e.block << " inverted at t = " << time_ << " (step " << steps_ << ")";
-    throw SimulationError(s.str());
+    s << "cdem: element of block " << e.block << " inverted at t = " << time_ << " s (step " << steps_ << ")";
+    throw SimulationError(s.str(), StopReason::kAreaCollapsed);
   }
   for (int i = 0; i < 3; ++i) add_node_force(e.n[i], f[i], patch_eval);
 }

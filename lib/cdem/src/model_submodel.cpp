@@ -304,8 +304,8 @@ void Model::submodel_forces(SubModel& s, double t) {
     if (cst_incremental_force(x, se.last, se.stress, d_[blocks_[block].material], f) != 0) {
       std::ostringstream msg;
       msg << "cdem: sub-element " << q << " of the sub-model of element " << se.parent << " of block " << block
-          << " inverted at t = " << t << " (step " << steps_ + 1 << ")";
-      throw SimulationError(msg.str());
+          << " inverted at t = " << t << " s (step " << steps_ + 1 << ")";
+      throw SimulationError(msg.str(), StopReason::kAreaCollapsed);
     }
     for (int i = 0; i < 3; ++i) (s.prescribed[se.n[i]] ? bc : s.f)[se.n[i]] += f[i];
   }
@@ -317,8 +317,8 @@ void Model::submodel_forces(SubModel& s, double t) {
           if (a == static_cast<int>(i)) parent = se.parent;
       std::ostringstream msg;
       msg << "cdem: non-finite state at sub-node " << i << " of the sub-model of element " << parent << " of block "
-          << s.block[i] << ", t = " << t << " (step " << steps_ + 1 << ")";
-      throw SimulationError(msg.str());
+          << s.block[i] << ", t = " << t << " s (step " << steps_ + 1 << ")";
+      throw SimulationError(msg.str(), StopReason::kNonFinite);
     }
     if (!s.prescribed[i]) continue;
     const double w = s.drive_w[i];

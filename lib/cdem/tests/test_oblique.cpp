@@ -166,6 +166,7 @@ TEST_CASE("a node deeper than d_tol inside another block stops the run with a Co
         CHECK(e.depth == Approx(depth).epsilon(1e-9));
         CHECK(e.step == 1);
         CHECK(e.block != e.other_block);
+        CHECK(e.reason == dda::StopReason::kPenetration);  // callers classify by the reason, not the text
         CHECK_THAT(std::string(e.what()), Catch::Contains("node " + std::to_string(e.node)) &&
                                               Catch::Contains("inside block") && Catch::Contains("step 1"));
       }

@@ -27,16 +27,16 @@ struct SceneError : std::runtime_error {
 };
 
 // Why a run stopped: the guard that fired (guards.cpp,
-// penetration_guard.cpp), so that callers classify a stop by its cause, not
-// by its message text.
+// penetration_guard.cpp; the CDEM model's checks, lib/cdem), so that
+// callers classify a stop by its cause, not by its message text.
 enum class StopReason : std::uint8_t {
-  kOther,           // not one of the guards below (e.g. the CDEM model's stops)
-  kNonFinite,       // a block's velocity or position is not finite
-  kAreaCollapsed,   // a block's area is no longer positive
+  kOther,           // none of the below (an internal bookkeeping error; CDEM: a touch repeated without end)
+  kNonFinite,       // a block's (CDEM: a node's or sub-node's) velocity or position is not finite
+  kAreaCollapsed,   // a block's area is no longer positive (CDEM: an element or sub-element inverted)
   kStepMotion,      // a vertex moved more than guards.max_step_motion in one step
   kEnergyGrowth,    // the total energy grew by more than guards.max_energy_growth
   kEnergyBudget,    // the energy budget is off by more than guards.max_balance_error
-  kPenetration,     // a pair is deeper than guards.max_penetration
+  kPenetration,     // a pair is deeper than guards.max_penetration (CDEM: a node deeper than d_tol)
   kApproachEnergy,  // a first contact brings more energy than the pair can store
 };
 

@@ -258,8 +258,8 @@ enum class SeparationCriterion : std::uint8_t { kTension, kShear, kSlidOff };
 // in an earlier step), or a touch that does not let the step advance.
 struct ContactError : SimulationError {
   ContactError(const std::string& what, int node_, int block_, int other_block_, std::int64_t step_, double time_,
-               double depth_)
-      : SimulationError(what),
+               double depth_, StopReason why = StopReason::kPenetration)
+      : SimulationError(what, why),
         node(node_),
         block(block_),
         other_block(other_block_),
