@@ -15,7 +15,7 @@ DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
 
 BIN := $(BUILD)/bin
 
-.PHONY: all deps configure build test sanitize repro fuzz bench clean figures report verdicts verdict-run \
+.PHONY: all deps configure build test sanitize repro fuzz bench profile clean figures report verdicts verdict-run \
         expected-verdicts
 
 all: build
@@ -123,6 +123,21 @@ bench: build
 	$(BIN)/bench_collapse --scaling --max-blocks $(BENCH_MAX_BLOCKS) --csv $(OUT)/bench/scaling.csv && \
 	$(PY) figures/bench_scaling.py $(OUT)/bench/scaling.csv $(OUT)/bench/scaling.png && \
 	echo "== make bench: $$(( $$(date +%s) - start )) s (figure $(OUT)/bench/scaling.png)"
+
+# Where the Sect. 6.1 collapse's (case 1) time goes, by phase of the step,
+# with 1 and 2 threads: perf's cpu-clock samples (no hardware counters
+# needed) summed by lib/bench/perf_phases.py. Needs perf (Debian: linux-perf,
+# not installed by deps: only this target uses it).
+PROFILE_DURATION ?= 7.5
+profile: build
+	@command -v perf > /dev/null || { echo "make profile: perf not found (Debian package linux-perf)"; exit 2; }
+	@mkdir -p $(OUT)/profile && for t in 1 2; do \
+	  perf record -q -e cpu-clock -o $(OUT)/profile/collapse_t$$t.data $(BIN)/collapse --case 1 --threads $$t \
+	    --duration $(PROFILE_DURATION) --out $(OUT)/profile/run_t$$t > /dev/null && \
+	  perf report -i $(OUT)/profile/collapse_t$$t.data --no-children --sort symbol --percent-limit 0.01 --stdio 2> /dev/null | \
+	  $(PY) lib/bench/perf_phases.py \
+	    --title "== 6.1 collapse, case 1, $$t thread(s), $(PROFILE_DURATION) s simulated: CPU samples by phase" || exit 1; \
+	done
 
 # 'repro' builds the tools, then a sub-make rebuilds only the figures whose
 # driver binary, data or script changed (one rule per figure below).
