@@ -246,6 +246,9 @@ struct ThreadRuns {
   // broad-phase boxes), and the heap growth over the warm-up and the timed
   // steps per touching pair at the end (the contacts' state and buffers).
   double bytes_per_block = 0.0, growth_per_touching = 0.0;
+  // Of it, the block geometry: the pooled vertices and normals and their
+  // offsets per block (Simulation::geometry_bytes_per_block; issue 25 item 3).
+  std::size_t geometry_per_block = 0;
 };
 
 ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps) {
@@ -258,6 +261,7 @@ ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps) {
     out.runs.push_back(timed_run(*sim, threads, warmup, steps));
     if (!first) {
       out.bytes_per_block = (built - before) / sim->scene_block_count();
+      out.geometry_per_block = sim->geometry_bytes_per_block();
       const double touching = static_cast<double>(sim->contacts().size());
       out.growth_per_touching = touching > 0.0 ? (heap_bytes() - built) / touching : 0.0;
       out.x_pairs = x_overlap_pairs(*sim);
@@ -462,22 +466,23 @@ int run_scaling(const Options& o) {
               o.shape == Shape::kWide ? "50 m high, widening" : "20:50 columns, scaled", openmp_note());
   std::printf("   warm-up %d steps, then %g / blocks steps (%d to %d); %s\n", o.warmup, kBlockStepBudget,
               kMinScalingSteps, kMaxScalingSteps, load_note().c_str());
-  std::printf("   sizeof(dda::Polygon) = %zu bytes (capacity %d vertices and normals)\n", sizeof(dda::Polygon),
-              dda::kMaxVertices);
-  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %9s %11s %8s %8s %5s %8s %8s\n", "blocks", "region m", "thr",
+  std::printf("   sizeof(dda::Polygon) = %zu bytes (capacity %d vertices and normals; scratch and intersection "
+              "polygons), sizeof(dda::PolygonView) = %zu bytes (a pooled block's view)\n",
+              sizeof(dda::Polygon), dda::kMaxVertices, sizeof(dda::PolygonView));
+  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %9s %11s %8s %8s %5s %8s %9s %8s\n", "blocks", "region m", "thr",
               "steps", "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "cpu us", "ns/blk-step", "ns/cand",
-              "ns/touch", "same", "kB/block", "B/touch");
+              "ns/touch", "same", "kB/block", "geo B/blk", "B/touch");
   std::vector<ScalingRow> rows;
   for (int target : kTargetBlocks) {
     if (target > o.max_blocks) continue;
     rows.push_back(scaling_row(base, o.shape, target, o.warmup));
     const ScalingRow& r = rows.back();
     for (const RunStats& s : r.t.runs)
-      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %9.1f %11.1f %8.1f %8.1f %5s %8.2f %8.0f\n",
+      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %9.1f %11.1f %8.1f %8.1f %5s %8.2f %9zu %8.0f\n",
                   s.blocks, r.width, r.height, s.threads, static_cast<long long>(s.steps), s.cpu_per_wall(),
                   s.candidates_per_step, s.touching_per_step, static_cast<long long>(r.t.x_pairs), s.us_per_step(),
                   s.cpu_us_per_step(), s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(), r.t.same ? "yes" : "NO",
-                  r.t.bytes_per_block / 1e3, r.t.growth_per_touching);
+                  r.t.bytes_per_block / 1e3, r.t.geometry_per_block, r.t.growth_per_touching);
     std::fflush(stdout);
   }
   bool all_same = true;
@@ -489,7 +494,8 @@ int run_scaling(const Options& o) {
                   kThreadCounts[k], growth_exponent(rows, k, false), growth_exponent(rows, k, true));
   std::printf("   x-overlap: pairs whose x-intervals overlap at the end (one x sort-and-sweep pass visits them);"
               " same: 1- and 2-thread final states bit-identical;\n   kB/block: heap per block of the constructed "
-              "simulation; B/touch: heap growth over the run per touching pair at its end (mallinfo2)\n");
+              "simulation; geo B/blk: of it, the pooled block geometry (vertices, normals, offsets);\n   B/touch: heap "
+              "growth over the run per touching pair at its end (mallinfo2)\n");
   if (!o.csv.empty()) {
     write_csv(o.csv, rows, o.shape);
     std::printf("   wrote %s\n", o.csv.c_str());
@@ -525,8 +531,8 @@ int run_skips(const Options& o) {
   std::printf("== what a scene skips: 1 thread; the collapse %d warm-up + %d timed steps, the squares their whole "
               "%.1f s run; %s\n",
               o.warmup, o.steps, squares.duration, load_note().c_str());
-  std::printf("%-40s %7s %10s %11s %10s %10s %9s %7s\n", "scene", "blocks", "touch/step", "cpu us/step", "ns/touch",
-              "kB/block", "B/touch", "B/pair");
+  std::printf("%-40s %7s %10s %11s %10s %10s %9s %9s %7s\n", "scene", "blocks", "touch/step", "cpu us/step",
+              "ns/touch", "kB/block", "geo B/blk", "B/touch", "B/pair");
   for (const SkipRow& r : rows) {
     const double before = heap_bytes();
     dda::Simulation sim(r.scene);
@@ -539,14 +545,18 @@ int run_skips(const Options& o) {
     char per_touch[32] = "-", per_touch_heap[32] = "-";
     if (st.touching_per_step >= 1.0) std::snprintf(per_touch, sizeof per_touch, "%.1f", 1e3 * cpu_us / st.touching_per_step);
     if (touching > 0.0) std::snprintf(per_touch_heap, sizeof per_touch_heap, "%.0f", (heap_bytes() - built) / touching);
-    std::printf("%-40s %7d %10.2f %11.2f %10s %10.2f %9s %7zu\n", r.name, st.blocks, st.touching_per_step, cpu_us,
-                per_touch, (built - before) / st.blocks / 1e3, per_touch_heap, sim.bytes_per_near_pair());
+    std::printf("%-40s %7d %10.2f %11.2f %10s %10.2f %9zu %9s %7zu\n", r.name, st.blocks, st.touching_per_step, cpu_us,
+                per_touch, (built - before) / st.blocks / 1e3, sim.geometry_bytes_per_block(), per_touch_heap,
+                sim.bytes_per_near_pair());
     std::fflush(stdout);
   }
   std::printf("   cpu us/step: process CPU time per step (robust to a shared machine); ns/touch: the same per\n"
-              "   touching pair; kB/block: heap of the constructed simulation per block; B/touch: heap growth\n"
+              "   touching pair; kB/block: heap of the constructed simulation per block; geo B/blk: of it, the\n"
+              "   pooled block geometry (vertices, normals, offsets; a Polygon value per block was %zu B);\n"
+              "   B/touch: heap growth\n"
               "   over the run per touching pair at its end; B/pair: solver state per broad-phase near pair\n"
-              "   (a frictionless scene has no friction history: Simulation::bytes_per_near_pair)\n");
+              "   (a frictionless scene has no friction history: Simulation::bytes_per_near_pair)\n",
+              sizeof(dda::Polygon));
   return 0;
 }
 

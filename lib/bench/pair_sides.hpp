@@ -91,7 +91,7 @@ inline void fill_pairs(int n, bool overlapping, std::vector<Pair>& v) {
   }
   for (Pair& p : v)
     for (Side* s : {&p.a, &p.b}) {
-      s->side.poly = &s->poly;
+      s->side.poly = s->poly;
       s->side.bisectors = s->bisectors.data();
     }
 }

@@ -13,7 +13,7 @@ using detail::Lanes;
 
 // displace_vertices for kN vertices (0: poly.count).
 template <int kN>
-double displace_n(Polygon& poly, Vec2 centroid, const Vec6& d) {
+double displace_n(const PolygonSpan& poly, Vec2 centroid, const Vec6& d) {
   const int count = kN ? kN : poly.count;
   const Lanes c = detail::lanes(centroid);
   const Vec6 dd = d;  // a local copy: the vertex stores cannot alias it, its lanes stay in registers
@@ -30,12 +30,12 @@ double displace_n(Polygon& poly, Vec2 centroid, const Vec6& d) {
 
 }  // namespace
 
-double displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d) {
+double displace_vertices(PolygonSpan poly, Vec2 centroid, const Vec6& d) {
   if (poly.count == 4) return displace_n<4>(poly, centroid, d);
   return displace_n<0>(poly, centroid, d);
 }
 
-double rotate_and_displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d) {
+double rotate_and_displace_vertices(PolygonSpan poly, Vec2 centroid, const Vec6& d) {
   // p' - p = u0 + E q + (R - I)(q + E q), q = p - c. cos r0 - 1 is taken as
   // -2 sin^2(r0 / 2): no cancellation for the small angles of a step.
   const double half = std::sin(0.5 * d[2]);

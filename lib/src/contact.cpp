@@ -77,7 +77,7 @@ struct EdgeLines {
   int pairs() const { return kN ? kCapacity : (count + 1) / 2; }
   double c_at(int i) const { return c[i >> 1][i & 1]; }
   double s_at(int i) const { return s[i >> 1][i & 1]; }
-  void build(const Polygon& poly, Vec2 a, Vec2 ab) {
+  void build(const PolygonView& poly, Vec2 a, Vec2 ab) {
     if (!kN) count = poly.count;
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
     for (int p = 0; p < pairs(); ++p) {
@@ -247,7 +247,7 @@ template <int kN>
 // Returns false when the edge is on this side's boundary as well (mid-point
 // distance within tol): zero traction, no sums.
 template <int kN, bool kMinus>
-[[gnu::always_inline]] inline bool one_side_edge(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab,
+[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab,
                           double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
   EdgeLines<kN> lines;
   lines.build(poly, a, ab);
@@ -272,7 +272,7 @@ template <int kN, bool kMinus>
 // Box2D's limit, are the other common small blocks), else read at run time.
 // The same operations in the same order either way: the same bits.
 template <int kN, bool kMinus>
-bool one_side_edge_n(const Polygon& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab, double tol,
+bool one_side_edge_n(const PolygonView& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab, double tol,
                      bool zero_start, bool zero_end, EdgeSums& sums) {
   if (kN) return one_side_edge<kN, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
   switch (poly.count) {
@@ -365,11 +365,11 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   BisectorSpan rays_cp{cp.bisectors, cp.bisector_count}, rays_tp{tp.bisectors, tp.bisector_count};
   if (rule == Integration::kPaperBisector) {
     if (!rays_cp.b) {
-      own_cp.count = bisectors(*cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.b.data());
+      own_cp.count = bisectors(cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.b.data());
       rays_cp = {own_cp.b.data(), own_cp.count};
     }
     if (!rays_tp.b) {
-      own_tp.count = bisectors(*tp.poly, tp.small_edge, tp.small_edge_rays, own_tp.b.data());
+      own_tp.count = bisectors(tp.poly, tp.small_edge, tp.small_edge_rays, own_tp.b.data());
       rays_tp = {own_tp.b.data(), own_tp.count};
     }
   }
@@ -405,9 +405,9 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       // it: only the other polygon's enters (or none, if the edge is on
       // both boundaries within tol: zero traction on its two halves).
       const bool used = on_this == On::kCp
-                            ? one_side_edge_n<kNt, true>(*tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol,
+                            ? one_side_edge_n<kNt, true>(tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol,
                                                          on_prev == On::kTp, on_next == On::kTp, sums)
-                            : one_side_edge_n<kNc, false>(*cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol,
+                            : one_side_edge_n<kNc, false>(cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol,
                                                           on_prev == On::kCp, on_next == On::kCp, sums);
       if (!used) {
         segments += 2;
@@ -418,8 +418,8 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       // midpoint's distance is within tol.
       EdgeLines<kNc> lines_cp;
       EdgeLines<kNt> lines_tp;
-      lines_cp.build(*cp.poly, a, ab);
-      lines_tp.build(*tp.poly, a, ab);
+      lines_cp.build(cp.poly, a, ab);
+      lines_tp.build(tp.poly, a, ab);
       const double mid_cp = lines_cp.at(0.5), mid_tp = lines_tp.at(0.5);
       const bool use_cp = !(mid_cp <= tol);
       const bool use_tp = !(mid_tp <= tol);
@@ -475,7 +475,7 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
 
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
                                  Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
-  if (cp.poly->count == 4 && tp.poly->count == 4) return contact_force_n<4, 4>(cp, tp, ip, rule, tol, source, where);
+  if (cp.poly.count == 4 && tp.poly.count == 4) return contact_force_n<4, 4>(cp, tp, ip, rule, tol, source, where);
   return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
 }
 
@@ -485,7 +485,7 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
   // n_j.v_j - n_i.v_i. On it phi = kn/H d_i is linear, so its integral is
   // area * phi(cell centroid). Each cell is cut from the region in two
   // small ping-pong rings (not Polygon copies: no normals are needed).
-  const Polygon& p = *side.poly;
+  const PolygonView& p = side.poly;
   const double snap = tol * 1e-3;  // a vertex this close to a cell line is on it
   double total = 0.0;
   std::array<Vec2, kMaxVertices> ring[2];  // left uninitialised: counts say how many are set

@@ -13,7 +13,7 @@ namespace {
 
 // Index of the lowest vertex (smallest y, then smallest x): the edge walk
 // starts there so that edge normals sweep angles in increasing order from -pi/2.
-int lowest_vertex(const Polygon& p, double sign) {
+int lowest_vertex(const PolygonView& p, double sign) {
   int best = 0;
   for (int i = 1; i < p.count; ++i) {
     const Vec2 q = sign * p.vertex(i), r = sign * p.vertex(best);
@@ -31,11 +31,11 @@ double pseudo_angle(Vec2 d) {
 
 }  // namespace
 
-double pair_tolerance(const Polygon& a, const Polygon& b) {
+double pair_tolerance(const PolygonView& a, const PolygonView& b) {
   return std::max(geometric_tolerance(a), geometric_tolerance(b));
 }
 
-EntranceBlock entrance_block(const Polygon& a, const Polygon& b, Vec2 a0) {
+EntranceBlock entrance_block(const PolygonView& a, const PolygonView& b, Vec2 a0) {
   // -A has vertices -a_i in the same (CCW) order; its edge i is -(edge i of A).
   EntranceBlock e;
   const int n = a.count, m = b.count;
@@ -96,7 +96,7 @@ struct EdgeLanes {
 
 // Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p.
 template <int kN>
-[[gnu::always_inline]] inline void edge_lanes(const Polygon& p, int pairs, EdgeLanes<kN>& e) {
+[[gnu::always_inline]] inline void edge_lanes(const PolygonView& p, int pairs, EdgeLanes<kN>& e) {
   const int n = kN ? kN : p.count;
   for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
     const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
@@ -113,7 +113,7 @@ template <int kN>
 // vertex is broadcast once and serves every pair. kN, kM: e's and q's
 // vertex counts when known at compile time (0: read them).
 template <bool kHi, int kN, int kM>
-[[gnu::always_inline]] inline void extremes(const EdgeLanes<kN>& e, int pairs, const Polygon& q, Lanes* lo,
+[[gnu::always_inline]] inline void extremes(const EdgeLanes<kN>& e, int pairs, const PolygonView& q, Lanes* lo,
                                             Lanes* hi) {
   const int np = kN ? (kN + 1) / 2 : pairs, m = kM ? kM : q.count;
   for (int k = 0; k < np; ++k) {
@@ -137,11 +137,11 @@ template <bool kHi, int kN, int kM>
 // dot products, folded in the same order, as the lanes of separating_axes_n.
 // kA, kB: the vertex counts when known at compile time (0: read them).
 template <int kA, int kB>
-double axis_distance(const Polygon& a, const Polygon& b, int axis) {
+double axis_distance(const PolygonView& a, const PolygonView& b, int axis) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   const bool on_b = axis < nb;
-  const Polygon& p = on_b ? b : a;  // the axis' polygon
-  const Polygon& q = on_b ? a : b;  // the other one
+  const PolygonView& p = on_b ? b : a;  // the axis' polygon
+  const PolygonView& q = on_b ? a : b;  // the other one
   const int e = on_b ? axis : axis - nb, m = on_b ? na : nb;
   const Vec2 n = p.normal(e);
   double lo = DBL_MAX;
@@ -153,7 +153,7 @@ double axis_distance(const Polygon& a, const Polygon& b, int axis) {
 // than tol (the caller found one; the last axis if none). Out of line: only
 // a pair that separates past its witness axis comes here, and keeping these
 // scalar loops apart keeps their loads out of the lanes' registers.
-[[gnu::noinline, gnu::cold]] int first_separating_axis(const Polygon& a, const Polygon& b, double tol) {
+[[gnu::noinline, gnu::cold]] int first_separating_axis(const PolygonView& a, const PolygonView& b, double tol) {
   const int last = a.count + b.count - 1;
   int axis = 0;
   while (axis < last && !(axis_distance<0, 0>(a, b, axis) > tol)) ++axis;
@@ -194,7 +194,8 @@ constexpr double kCutMargin = 0.5;
 // that the common pairs of triangles to pentagons run unrolled; every
 // distance is the same dot product, rounded the same way, either way.
 template <bool kCuts, int kA = 0, int kB = 0>
-OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, std::uint32_t* cuts, int* witness) {
+OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, double tol, std::uint32_t* cuts,
+                               int* witness) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   const int pa = (na + 1) / 2, pb = (nb + 1) / 2;
   if (witness && static_cast<unsigned>(*witness) < static_cast<unsigned>(nb + na))
@@ -235,7 +236,7 @@ OverlapState separating_axes_n(const Polygon& a, const Polygon& b, double tol, s
 // the counts of a and b when both are 3 to 5, else Op::run<0, 0>;
 // by_counts_b: on B's count, A's known to be kA.
 template <class Op, int kA, class... Args>
-OverlapState by_counts_b(const Polygon& a, const Polygon& b, Args&&... args) {
+OverlapState by_counts_b(const PolygonView& a, const PolygonView& b, Args&&... args) {
   switch (b.count) {
     case 3: return Op::template run<kA, 3>(a, b, args...);
     case 4: return Op::template run<kA, 4>(a, b, args...);
@@ -245,7 +246,7 @@ OverlapState by_counts_b(const Polygon& a, const Polygon& b, Args&&... args) {
 }
 
 template <class Op, class... Args>
-OverlapState by_counts(const Polygon& a, const Polygon& b, Args&&... args) {
+OverlapState by_counts(const PolygonView& a, const PolygonView& b, Args&&... args) {
   switch (a.count) {
     case 3: return by_counts_b<Op, 3>(a, b, args...);
     case 4: return by_counts_b<Op, 4>(a, b, args...);
@@ -260,7 +261,7 @@ constexpr int contact_label(int c) { return -1 - c; }
 // Edge i of an intersection polygon from its clipping label l (a target
 // edge j >= 0 or a contact edge -1 - c): its normal is the source edge's,
 // and its source that edge.
-inline void set_labelled_edge(int i, int l, const Polygon& contact, const Polygon& target, Polygon& result,
+inline void set_labelled_edge(int i, int l, const PolygonView& contact, const PolygonView& target, Polygon& result,
                               IpEdge* source) {
   const bool on_contact = l < 0;
   const int e = on_contact ? contact_label(l) : l;  // contact_label is its own inverse
@@ -320,7 +321,7 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
 // tested twice). Returns false when some vertex is removable (then `result`
 // is to be cleaned). kN as cut_ring's.
 template <int kN>
-bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& contact, const Polygon& target,
+bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView& contact, const PolygonView& target,
                double tol, Polygon& result, IpEdge* source) {
   const int n = kN ? kN : n_in;
   const bool removable = detail::ring_needs_clean<kN>(in, n, tol * tol);
@@ -336,8 +337,9 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
 // has a vertex to remove. clean_ring on the ring and its labels, then the
 // normals and sources again. Out of line: it keeps its registers out of
 // the clipping loop's.
-[[gnu::noinline, gnu::cold]] void clean_result(const int* in_label, const Polygon& contact, const Polygon& target,
-                                               double tol, Polygon& result, IpEdge* source) {
+[[gnu::noinline, gnu::cold]] void clean_result(const int* in_label, const PolygonView& contact,
+                                               const PolygonView& target, double tol, Polygon& result,
+                                               IpEdge* source) {
   std::array<int, kMaxVertices> label;
   for (int i = 0; i < result.count; ++i) label[static_cast<std::size_t>(i)] = in_label[i];
   result.count = clean_ring(result.v.data(), result.count, tol, label.data());
@@ -367,8 +369,8 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
 // a ring that has a vertex to remove (rare) is then cleaned (clean_result).
 // Out of line: OverlapAndClip::run inlines all else it calls, and one copy
 // of the clipper serves every pair of counts.
-[[gnu::noinline]] void clip_target(const Polygon& contact, const Polygon& target, double tol, std::uint32_t lines, Polygon& result,
-                 IpEdge* source) {
+[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
+                                   std::uint32_t lines, Polygon& result, IpEdge* source) {
   struct Ring {
     std::array<Vec2, kMaxVertices> v;
     std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
@@ -380,7 +382,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
     for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
     return l;
   }();
-  const Vec2* in = target.v.data();
+  const Vec2* in = target.v;
   const int* in_label = target_label.data();
   int in_count = target.count;
   Ring* out_ring = &rings[0];
@@ -465,8 +467,8 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const Polygon& con
 // candidates) costs the dispatch, this frame and the test, no more.
 struct OverlapAndClip {
   template <int kA, int kB>
-  [[gnu::noinline, gnu::flatten]] static OverlapState run(const Polygon& contact, const Polygon& target, double tol,
-                                                          Polygon& ip, IpEdge* source, int* witness) {
+  [[gnu::noinline, gnu::flatten]] static OverlapState run(const PolygonView& contact, const PolygonView& target,
+                                                          double tol, Polygon& ip, IpEdge* source, int* witness) {
     if (kA == 0 && (contact.count < 3 || target.count < 3)) return OverlapState::kSeparate;
     std::uint32_t lines = 0;
     const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness);
@@ -486,8 +488,8 @@ struct OverlapAndClip {
 
 // overlap_and_intersection with the pair's own tolerance, apart: the
 // dispatch with a given tolerance (the hot path) then needs no call frame.
-[[gnu::noinline, gnu::cold]] OverlapState overlap_and_intersection_own_tol(const Polygon& contact,
-                                                                          const Polygon& target, Polygon& ip,
+[[gnu::noinline, gnu::cold]] OverlapState overlap_and_intersection_own_tol(const PolygonView& contact,
+                                                                          const PolygonView& target, Polygon& ip,
                                                                           IpEdge* source, int* witness) {
   return overlap_and_intersection(contact, target, pair_tolerance(contact, target), ip, source, witness);
 }
@@ -496,7 +498,7 @@ constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
 
 }  // namespace
 
-OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
+OverlapState overlap_state(const PolygonView& a, const PolygonView& b, double tol) {
   if (a.count < 3 || b.count < 3) return OverlapState::kSeparate;
   if (tol < 0.0) tol = pair_tolerance(a, b);
   // overlap_and_intersection's verdict (kOverlapping only with an IP): one
@@ -505,19 +507,19 @@ OverlapState overlap_state(const Polygon& a, const Polygon& b, double tol) {
   return overlap_and_intersection(a, b, tol, ip, nullptr);
 }
 
-OverlapState overlap_and_intersection(const Polygon& contact, const Polygon& target, double tol, Polygon& ip,
+OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
                                       IpEdge* source, int* witness) {
   ip.count = 0;
   if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness);
   return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness);
 }
 
-void intersection_polygon(const Polygon& contact, const Polygon& target, double tol, Polygon& result) {
+void intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol, Polygon& result) {
   if (tol < 0.0) tol = pair_tolerance(contact, target);
   clip_target(contact, target, tol, kAllLines, result, nullptr);
 }
 
-Polygon intersection_polygon(const Polygon& contact, const Polygon& target, double tol) {
+Polygon intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol) {
   Polygon ip;
   intersection_polygon(contact, target, tol, ip);
   return ip;

@@ -16,6 +16,16 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kWindingSlack = kPi;
 }  // namespace
 
+Polygon copy_polygon(PolygonView view) {
+  Polygon poly;
+  poly.count = std::min(std::max(view.count, 0), kMaxVertices);
+  for (int i = 0; i < poly.count; ++i) {
+    poly.v[static_cast<std::size_t>(i)] = view.v[i];
+    poly.n[static_cast<std::size_t>(i)] = view.n[i];
+  }
+  return poly;
+}
+
 Polygon make_polygon(const Vec2* points, int count) {
   Polygon poly;
   poly.count = std::min(std::max(count, 0), kMaxVertices);
@@ -37,7 +47,7 @@ using detail::Lanes;
 // order). kN: the vertex count when known at compile time (0: poly.count),
 // so that a quadrilateral's loop is unrolled.
 template <int kN>
-Lanes edge_normals(Polygon& poly) {
+Lanes edge_normals(const PolygonSpan& poly) {
   using detail::high_lanes;
   using detail::lanes;
   using detail::low_lanes;
@@ -61,7 +71,7 @@ Lanes edge_normals(Polygon& poly) {
 
 }  // namespace
 
-void update_normals(Polygon& poly) {
+void update_normals(PolygonSpan poly) {
   if (poly.count == 4) edge_normals<4>(poly);
   else edge_normals<0>(poly);
 }
@@ -226,22 +236,22 @@ AreaMoments green_moments(const Vec2* v, int n) {
 
 }  // namespace
 
-AreaMoments area_moments(const Polygon& poly) {
-  if (poly.count == 4) return green_moments<4>(poly.v.data(), 4);
-  return green_moments(poly.v.data(), poly.count);
+AreaMoments area_moments(PolygonView poly) {
+  if (poly.count == 4) return green_moments<4>(poly.v, 4);
+  return green_moments(poly.v, poly.count);
 }
 
 // Mostly an intersection polygon: those of shallow contacts are triangles
 // and quadrilaterals (about half each in the Sect. 6.1 collapse).
-AreaMoments area_centroid(const Polygon& poly) {
-  if (poly.count == 4) return green_centroid<4>(poly.v.data(), 4);
-  if (poly.count == 3) return green_centroid<3>(poly.v.data(), 3);
-  return green_centroid(poly.v.data(), poly.count);
+AreaMoments area_centroid(PolygonView poly) {
+  if (poly.count == 4) return green_centroid<4>(poly.v, 4);
+  if (poly.count == 3) return green_centroid<3>(poly.v, 3);
+  return green_centroid(poly.v, poly.count);
 }
 
 AreaMoments area_centroid(const Vec2* ring, int count) { return green_centroid(ring, count); }
 
-double area(const Polygon& poly) {
+double area(PolygonView poly) {
   if (poly.count < 3) return 0.0;
   const Vec2 o = poly.v[0];
   double s = 0.0;
@@ -249,7 +259,7 @@ double area(const Polygon& poly) {
   return 0.5 * s;
 }
 
-Vec2 centroid(const Polygon& poly) { return area_moments(poly).centroid; }
+Vec2 centroid(PolygonView poly) { return area_moments(poly).centroid; }
 
 namespace {
 
@@ -257,7 +267,7 @@ namespace {
 // vertex order: lane_min / lane_max are std::min / std::max, operands in
 // that order.
 template <int kN>
-Aabb bounds_n(const Polygon& poly) {
+Aabb bounds_n(const PolygonView& poly) {
   const int count = kN ? kN : poly.count;
   const Aabb empty;
   Lanes lo = detail::lanes(empty.lo), hi = detail::lanes(empty.hi);
@@ -271,55 +281,55 @@ Aabb bounds_n(const Polygon& poly) {
 
 }  // namespace
 
-Aabb bounds(const Polygon& poly) { return bounds_n<0>(poly); }
+Aabb bounds(PolygonView poly) { return bounds_n<0>(poly); }
 
 namespace {
 
 // update_polygon_geometry for kN vertices (0: poly.count).
 template <int kN>
-PolygonGeometry polygon_geometry(Polygon& poly) {
+PolygonGeometry polygon_geometry(const PolygonSpan& poly) {
   const int count = kN ? kN : poly.count;
   PolygonGeometry g;
   const Lanes min2 = edge_normals<kN>(poly);
   g.min_edge2 = std::min(min2[0], min2[1]);
-  g.moments = green_moments<kN>(poly.v.data(), count);
+  g.moments = green_moments<kN>(poly.v, count);
   g.box = bounds_n<kN>(poly);
   return g;
 }
 
 }  // namespace
 
-PolygonGeometry update_polygon_geometry(Polygon& poly) {
+PolygonGeometry update_polygon_geometry(PolygonSpan poly) {
   if (poly.count == 4) return polygon_geometry<4>(poly);
   return polygon_geometry<0>(poly);
 }
 
-double diameter(const Polygon& poly) {
+double diameter(PolygonView poly) {
   double d = 0.0;
   for (int i = 0; i < poly.count; ++i)
     for (int j = i + 1; j < poly.count; ++j) d = std::max(d, distance(poly.vertex(i), poly.vertex(j)));
   return d;
 }
 
-double min_edge_length(const Polygon& poly) {
+double min_edge_length(PolygonView poly) {
   double l = DBL_MAX;
   for (int i = 0; i < poly.count; ++i) l = std::min(l, length(poly.edge(i)));
   return l;
 }
 
-double max_edge_length(const Polygon& poly) {
+double max_edge_length(PolygonView poly) {
   double l = 0.0;
   for (int i = 0; i < poly.count; ++i) l = std::max(l, length(poly.edge(i)));
   return l;
 }
 
-double perimeter(const Polygon& poly) {
+double perimeter(PolygonView poly) {
   double l = 0.0;
   for (int i = 0; i < poly.count; ++i) l += length(poly.edge(i));
   return l;
 }
 
-double geometric_tolerance(const Polygon& poly) { return geometric_tolerance(bounds(poly)); }
+double geometric_tolerance(PolygonView poly) { return geometric_tolerance(bounds(poly)); }
 
 double geometric_tolerance(const Aabb& b) {
   const double coord = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
@@ -327,7 +337,7 @@ double geometric_tolerance(const Aabb& b) {
   return kRoundoffUlps * DBL_EPSILON * (coord + size);
 }
 
-PointLocation locate_point(const Polygon& poly, Vec2 p, double tol) {
+PointLocation locate_point(PolygonView poly, Vec2 p, double tol) {
   if (tol < 0.0) tol = geometric_tolerance(poly);
   double d = -DBL_MAX;
   for (int i = 0; i < poly.count; ++i) d = std::max(d, dot(poly.normal(i), p - poly.vertex(i)));
@@ -387,7 +397,7 @@ int clip_ring(const Vec2* in, const double* dist, int n, Vec2* out, const int* i
                : detail::clip_ring_n<false, false>(in, dist, n, out, in_label, line_label, out_label);
 }
 
-void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above, double tol) {
+void split_polygon(PolygonView poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above, double tol) {
   if (tol < 0.0) tol = geometric_tolerance(poly);
   // Signed distances snapped within tol; `above` is the same clip with the
   // signs flipped (the crossing points come out bit-identical: negation is exact).
@@ -398,8 +408,8 @@ void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below,
     d[static_cast<std::size_t>(i)] = di;
     flipped[static_cast<std::size_t>(i)] = -di;
   }
-  below.count = clip_ring(poly.v.data(), d.data(), poly.count, below.v.data());
-  above.count = clip_ring(poly.v.data(), flipped.data(), poly.count, above.v.data());
+  below.count = clip_ring(poly.v, d.data(), poly.count, below.v.data());
+  above.count = clip_ring(poly.v, flipped.data(), poly.count, above.v.data());
   clean_polygon(below, tol);
   clean_polygon(above, tol);
 }

@@ -23,7 +23,7 @@ constexpr double kParallelBisectorsSin = 1e-14;
 
 }  // namespace
 
-Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
+Vec2 potential_gradient(PolygonView poly, Vec2 p, double kn, double h) {
   double d = DBL_MAX;
   int best = -1;
   for (int i = 0; i < poly.count; ++i) {
@@ -37,7 +37,7 @@ Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h) {
   return -(kn / h) * poly.normal(best);
 }
 
-InscribedCircle inscribed_circle(const Polygon& poly) {
+InscribedCircle inscribed_circle(PolygonView poly) {
   // Maximise r subject to n_i . (v_i - c) >= r for all i. The optimum is a
   // vertex of the feasible set in (c, r) space: three constraints tight.
   // The systems are solved relative to v_0, so that a large coordinate offset
@@ -88,7 +88,7 @@ namespace {
 // bisector_rays (Out = Ray) and bisectors (Out = Bisector): one walk, so the
 // two give the same rays in the same order.
 template <class Out>
-int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Out* out) {
+int make_bisectors(PolygonView poly, double small_edge, SmallEdgeRays mode, Out* out) {
   constexpr bool kDraw = std::is_same_v<Out, Ray>;
   const int n = poly.count;
   int count = 0;
@@ -131,11 +131,11 @@ int make_bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, O
 
 }  // namespace
 
-int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out) {
+int bisector_rays(PolygonView poly, double small_edge, SmallEdgeRays mode, Ray* out) {
   return make_bisectors(poly, small_edge, mode, out);
 }
 
-int bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Bisector* out) {
+int bisectors(PolygonView poly, double small_edge, SmallEdgeRays mode, Bisector* out) {
   return make_bisectors(poly, small_edge, mode, out);
 }
 

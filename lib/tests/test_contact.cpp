@@ -41,7 +41,7 @@ Polygon random_convex(Lcg& rng, Vec2 c, double r) {
 }
 
 NormalForce force(const Polygon& cp, const Polygon& tp, Integration rule, double h = 1.0) {
-  const PotentialSide a{&cp, 1e7 / h, 0.05 * h}, b{&tp, 1e7 / h, 0.05 * h};
+  const PotentialSide a{cp, 1e7 / h, 0.05 * h}, b{tp, 1e7 / h, 0.05 * h};
   const Polygon ip = intersection_polygon(cp, tp);
   return normal_contact_force(a, b, ip, rule, pair_tolerance(cp, tp));
 }
@@ -143,7 +143,7 @@ struct BarInSquare {
     tol = pair_tolerance(cp, tp);
   }
   NormalForce force(Integration rule, LoadingPoint where) const {
-    const PotentialSide a{&cp, 1e7, 0.05}, b{&tp, 1e7, 0.05};
+    const PotentialSide a{cp, 1e7, 0.05}, b{tp, 1e7, 0.05};
     return normal_contact_force(a, b, ip, rule, tol, nullptr, where);
   }
 };
@@ -184,7 +184,7 @@ TEST_CASE("opposed segment forces: pg stays inside the IP, force and moment unch
 
 TEST_CASE("a loading point inside the IP is the paper's, to the bit", "[contact]") {
   const Polygon a = hexagon({0, 0}, 1.0, 0.1), b = hexagon({1.5, 0.3}, 0.8, 0.5);
-  const PotentialSide sa{&a, 1e7, 0.05}, sb{&b, 1e7, 0.05};
+  const PotentialSide sa{a, 1e7, 0.05}, sb{b, 1e7, 0.05};
   const Polygon ip = intersection_polygon(a, b);
   for (Integration rule : {Integration::kPaperBisector, Integration::kExactEnvelope}) {
     const NormalForce paper = normal_contact_force(sa, sb, ip, rule, pair_tolerance(a, b), nullptr, LoadingPoint::kPaper);
@@ -198,10 +198,10 @@ TEST_CASE("a loading point inside the IP is the paper's, to the bit", "[contact]
 
 TEST_CASE("contact energy is the potential of the force: -dE/dx = f", "[contact]") {
   const Polygon tp = rect(0, 0, 3, 1), cp0 = hexagon({1.2, 1.3}, 0.6, 0.2);
-  const PotentialSide st{&tp, 1e7, 0.0};
+  const PotentialSide st{tp, 1e7, 0.0};
   auto energy = [&](Vec2 u) {
     const Polygon cp = translated(cp0, u);
-    const PotentialSide sc{&cp, 1e7, 0.0};
+    const PotentialSide sc{cp, 1e7, 0.0};
     return contact_energy(sc, st, intersection_polygon(cp, tp), 1e-12);
   };
   const double h = 1e-6;
@@ -240,7 +240,7 @@ TEST_CASE("edge sources from the fused overlap call change the force only by rou
     std::array<IpEdge, kMaxVertices> src;
     if (overlap_and_intersection(cp, tp, tol, ip, src.data()) != OverlapState::kOverlapping || ip.count < 3) continue;
     for (Integration rule : {Integration::kPaperBisector, Integration::kExactEnvelope}) {
-      const PotentialSide a{&cp, 1e7, 0.3}, b{&tp, 2e7, 0.3};
+      const PotentialSide a{cp, 1e7, 0.3}, b{tp, 2e7, 0.3};
       const NormalForce plain = normal_contact_force(a, b, ip, rule, tol);
       const NormalForce fused = normal_contact_force(a, b, ip, rule, tol, src.data());
       REQUIRE(plain.valid == fused.valid);
@@ -289,14 +289,14 @@ TEST_CASE("vertex rays: the paired crossing test gives the general one's bits", 
     rays_tp.count = bisectors(tp, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_tp.b.data());
     REQUIRE(rays_cp.count == cp.count);
     REQUIRE(rays_tp.count == tp.count);
-    const PotentialSide a{&cp, 1e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_cp.b.data(), rays_cp.count};
-    const PotentialSide b{&tp, 2e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_tp.b.data(), rays_tp.count};
+    const PotentialSide a{cp, 1e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_cp.count, rays_cp.b.data()};
+    const PotentialSide b{tp, 2e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, rays_tp.count, rays_tp.b.data()};
     // The same rays, the first one twice: n + 1 rays, the general test.
     BisectorSet more_cp = rays_cp, more_tp = rays_tp;
     more_cp.b[static_cast<std::size_t>(more_cp.count++)] = rays_cp.b[0];
     more_tp.b[static_cast<std::size_t>(more_tp.count++)] = rays_tp.b[0];
-    const PotentialSide a1{&cp, 1e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, more_cp.b.data(), more_cp.count};
-    const PotentialSide b1{&tp, 2e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, more_tp.b.data(), more_tp.count};
+    const PotentialSide a1{cp, 1e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, more_cp.count, more_cp.b.data()};
+    const PotentialSide b1{tp, 2e7, 1e-9, SmallEdgeRays::kVirtualAndVertex, more_tp.count, more_tp.b.data()};
     for (const IpEdge* sources : {static_cast<const IpEdge*>(nullptr), static_cast<const IpEdge*>(src.data())}) {
       const NormalForce paired = normal_contact_force(a, b, ip, Integration::kPaperBisector, tol, sources);
       const NormalForce general = normal_contact_force(a1, b1, ip, Integration::kPaperBisector, tol, sources);

@@ -190,7 +190,7 @@ TEST_CASE("the paper's segmentation: exact for a flat contact, not across a rect
           "[robustness][contact]") {
   auto rel_error = [](const Polygon& cp, const Polygon& tp, double small,
                       SmallEdgeRays mode = SmallEdgeRays::kVirtualAndVertex) {
-    const PotentialSide a{&cp, 1.0, small, mode}, b{&tp, 1.0, small, mode};
+    const PotentialSide a{cp, 1.0, small, mode}, b{tp, 1.0, small, mode};
     const double tol = pair_tolerance(cp, tp);
     const Polygon ip = intersection_polygon(cp, tp, tol);
     const NormalForce p = normal_contact_force(a, b, ip, Integration::kPaperBisector, tol);
@@ -216,7 +216,7 @@ TEST_CASE("the paper's segmentation next to a small edge: exact with vertex and 
   const double tol = pair_tolerance(upper, lower);
   const Polygon ip = intersection_polygon(upper, lower, tol);
   REQUIRE(ip.count >= 3);
-  PotentialSide a{&upper, 1.0 / h, small}, b{&lower, 1.0 / h, small};
+  PotentialSide a{upper, 1.0 / h, small}, b{lower, 1.0 / h, small};
   const NormalForce exact = normal_contact_force(a, b, ip, Integration::kExactEnvelope, tol);
   const NormalForce both = normal_contact_force(a, b, ip, Integration::kPaperBisector, tol);
   a.small_edge_rays = b.small_edge_rays = SmallEdgeRays::kVirtualReplacesVertex;

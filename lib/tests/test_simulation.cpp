@@ -1,11 +1,15 @@
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
+#include "dda/block.hpp"
 #include "dda/joint_sets.hpp"
 #include "dda/paper_scenes.hpp"
+#include "dda/potential.hpp"
+#include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "state_hash.hpp"
 
@@ -380,3 +384,78 @@ TEST_CASE("friction update: continuous sliding is the same with either rule (Sec
                     .epsilon(0.05));  // sliding (it leads Eq. 30 by the stick phase, 3 % at 0.2 s)
 }
 
+
+// Issue 25 item 3: the simulation pools its blocks' geometry by vertex
+// count and its kernels read it through PolygonView. The pool's view and a
+// view of a Polygon value with the same vertices and normals give the same
+// bits, and polygon(i) hands back the scene's block after 0 steps.
+TEST_CASE("pooled block polygons round-trip and read as Polygon values do", "[simulation]") {
+  const Scene scene = paper::collapse(15.0).scene;
+  Simulation sim(scene);
+  REQUIRE(sim.scene_block_count() == static_cast<int>(scene.blocks.size()));
+  for (int i = 0; i < sim.scene_block_count(); ++i) {
+    const BlockSpec& b = scene.blocks[static_cast<std::size_t>(i)];
+    const Polygon expect = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
+    const Polygon got = sim.polygon(i);
+    REQUIRE(got.count == expect.count);
+    CHECK(std::memcmp(got.v.data(), expect.v.data(), sizeof got.v) == 0);  // the rest zero, as make_polygon leaves it
+    CHECK(std::memcmp(got.n.data(), expect.n.data(), sizeof got.n) == 0);
+    const PolygonView view = sim.polygon_view(i);
+    REQUIRE(view.count == expect.count);
+    CHECK(view.v != got.v.data());  // the pool's storage, not a copy
+  }
+  // A few kernels on the pool's views against the same on Polygon values,
+  // once the blocks have settled onto each other (pairs that overlap, with
+  // intersection polygons).
+  sim.advance(300);
+  int overlapping = 0;
+  for (int i = 0; i < sim.block_count(); ++i) {
+    const PolygonView va = sim.polygon_view(i);
+    const Polygon pa = sim.polygon(i);
+    const AreaMoments m1 = area_moments(va), m2 = area_moments(pa);
+    CHECK(std::memcmp(&m1, &m2, sizeof m1) == 0);
+    const Aabb b1 = bounds(va), b2 = bounds(pa);
+    CHECK(std::memcmp(&b1, &b2, sizeof b1) == 0);
+    CHECK(geometric_tolerance(va) == geometric_tolerance(pa));
+    std::array<Bisector, 2 * kMaxVertices> r1{}, r2{};
+    const int n1 = bisectors(va, 0.1, SmallEdgeRays::kVirtualAndVertex, r1.data());
+    const int n2 = bisectors(pa, 0.1, SmallEdgeRays::kVirtualAndVertex, r2.data());
+    REQUIRE(n1 == n2);
+    CHECK(std::memcmp(r1.data(), r2.data(), sizeof(Bisector) * static_cast<std::size_t>(n1)) == 0);
+    for (int j = 0; j < sim.block_count(); ++j) {
+      if (j == i || !aabb_overlap(b1, bounds(sim.polygon_view(j)))) continue;
+      const PolygonView vb = sim.polygon_view(j);
+      const Polygon pb = sim.polygon(j);
+      const double tol = pair_tolerance(va, vb);
+      CHECK(tol == pair_tolerance(pa, pb));
+      Polygon ip1, ip2;
+      const OverlapState s1 = overlap_and_intersection(va, vb, tol, ip1, nullptr);
+      const OverlapState s2 = overlap_and_intersection(pa, pb, tol, ip2, nullptr);
+      REQUIRE(s1 == s2);
+      REQUIRE(ip1.count == ip2.count);
+      CHECK(std::memcmp(ip1.v.data(), ip2.v.data(), sizeof(Vec2) * static_cast<std::size_t>(ip1.count)) == 0);
+      CHECK(std::memcmp(ip1.n.data(), ip2.n.data(), sizeof(Vec2) * static_cast<std::size_t>(ip1.count)) == 0);
+      if (s1 == OverlapState::kOverlapping) ++overlapping;
+    }
+  }
+  CHECK(overlapping > 0);
+  // A move through a span over pool-like storage (count vertices, then
+  // count normals) and through a Polygon value: the same vertices.
+  Polygon moved = sim.polygon(0);
+  std::vector<Vec2> store(static_cast<std::size_t>(2 * moved.count));
+  for (int k = 0; k < moved.count; ++k) {
+    store[static_cast<std::size_t>(k)] = moved.vertex(k);
+    store[static_cast<std::size_t>(moved.count + k)] = moved.normal(k);
+  }
+  const PolygonSpan span(moved.count, store.data(), store.data() + moved.count);
+  Vec6 d;
+  d << 1e-3, -2e-3, 1e-4, 1e-5, -1e-5, 2e-5;
+  const Vec2 c = area_moments(moved).centroid;
+  CHECK(rotate_and_displace_vertices(moved, c, d) == rotate_and_displace_vertices(span, c, d));
+  CHECK(displace_vertices(moved, c, d) == displace_vertices(span, c, d));
+  const PolygonGeometry g1 = update_polygon_geometry(moved), g2 = update_polygon_geometry(span);
+  CHECK(std::memcmp(&g1, &g2, sizeof g1) == 0);
+  CHECK(std::memcmp(moved.v.data(), store.data(), sizeof(Vec2) * static_cast<std::size_t>(moved.count)) == 0);
+  CHECK(std::memcmp(moved.n.data(), store.data() + moved.count, sizeof(Vec2) * static_cast<std::size_t>(moved.count)) ==
+        0);
+}

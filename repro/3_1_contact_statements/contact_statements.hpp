@@ -147,7 +147,7 @@ inline Overlap overlap_of(const Pair& p) {
 }
 // The exact contact energy (dda::contact_energy) with CP moved to `a`.
 inline double energy_with(const dda::Polygon& a, const dda::Polygon& b, double tol) {
-  const dda::PotentialSide side{&a, kKnOverH, 0.0}, target{&b, kKnOverH, 0.0};
+  const dda::PotentialSide side{a, kKnOverH, 0.0}, target{b, kKnOverH, 0.0};
   return dda::contact_energy(side, target, dda::intersection_polygon(a, b, tol), tol);
 }
 
@@ -175,8 +175,8 @@ inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integratio
           (energy_with(dda::translated(p.a, d), p.b, tol) - energy_with(dda::translated(p.a, -1.0 * d), p.b, tol)) /
           (2.0 * kStep);
     }
-    const dda::PotentialSide cp{&p.a, kKnOverH, 0.0};
-    const dda::PotentialSide tp_force{&p.b, variant == Variant::kForceWithoutTargetPotential ? 0.0 : kKnOverH, 0.0};
+    const dda::PotentialSide cp{p.a, kKnOverH, 0.0};
+    const dda::PotentialSide tp_force{p.b, variant == Variant::kForceWithoutTargetPotential ? 0.0 : kKnOverH, 0.0};
     const dda::NormalForce f = dda::normal_contact_force(cp, tp_force, ip, rule, tol);
     const double e = dda::length(f.force + gradient) / dda::length(gradient);
     worst = std::max(worst, e);
@@ -207,7 +207,7 @@ inline repro::Claim moment_row(const std::vector<Pair>& pairs, dda::Integration 
   for (const Pair& p : pairs) {
     const Overlap o = overlap_of(p);
     if (!o.used) continue;
-    const dda::PotentialSide cp{&p.a, kKnOverH, 0.0}, tp{&p.b, kKnOverH, 0.0};
+    const dda::PotentialSide cp{p.a, kKnOverH, 0.0}, tp{p.b, kKnOverH, 0.0};
     const dda::NormalForce f = dda::normal_contact_force(cp, tp, o.ip, rule, o.tol);
     if (!f.valid) continue;
     const dda::Vec2 about = variant == Variant::kMomentAboutCentroid ? f.ip_centroid : f.point;

@@ -23,7 +23,7 @@ Errors compare(const Polygon& a, double kn_h_a, double small_a, const Polygon& b
   const double tol = dda::pair_tolerance(a, b);
   const Polygon ip = dda::intersection_polygon(a, b, tol);
   if (ip.count < 3) return e;
-  PotentialSide sa{&a, kn_h_a, small_a}, sb{&b, kn_h_b, small_b};
+  PotentialSide sa{a, kn_h_a, small_a}, sb{b, kn_h_b, small_b};
   const NormalForce fe = dda::normal_contact_force(sa, sb, ip, Integration::kExactEnvelope, tol);
   const double fe_len = dda::length(fe.force), dia = dda::diameter(ip);
   if (!fe.valid || !(fe_len > 0.0)) return e;

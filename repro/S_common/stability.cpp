@@ -109,8 +109,8 @@ Eigen::VectorXd contact_forces(const dda::Simulation& sim, const std::vector<dda
       const dda::Polygon ip = dda::intersection_polygon(a, b, tol);
       if (ip.count < 3) continue;
       const double ha = sim.potential_length(i), hb = sim.potential_length(j);
-      const dda::PotentialSide sa{&a, c.kn / ha, c.small_edge_fraction * ha};
-      const dda::PotentialSide sb{&b, c.kn / hb, c.small_edge_fraction * hb};
+      const dda::PotentialSide sa{a, c.kn / ha, c.small_edge_fraction * ha};
+      const dda::PotentialSide sb{b, c.kn / hb, c.small_edge_fraction * hb};
       const dda::NormalForce nf = dda::normal_contact_force(sa, sb, ip, c.integration, tol);
       if (!nf.valid) continue;
       ++count;

@@ -23,7 +23,7 @@ inline Vec2 point_displacement(Vec2 centroid, Vec2 p, const Vec6& d) {
 
 // Moves every vertex p of poly by point_displacement(centroid, p, d), the
 // same bits; returns the largest squared displacement, m^2.
-double displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d);
+double displace_vertices(PolygonSpan poly, Vec2 centroid, const Vec6& d);
 
 // RotationUpdate::kExact: moves every vertex p of poly to
 // c + u0 + R(r0) (I + E) (p - c), c = centroid, (u0, v0, r0) = d[0..2],
@@ -32,7 +32,7 @@ double displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d);
 // E = 0 the polygon moves rigidly (its area and moments stay to round-off);
 // to first order in d it is displace_vertices. Returns the largest squared
 // displacement, m^2.
-double rotate_and_displace_vertices(Polygon& poly, Vec2 centroid, const Vec6& d);
+double rotate_and_displace_vertices(PolygonSpan poly, Vec2 centroid, const Vec6& d);
 
 // The stress (sx, sy, txy) of a material turned by angle rad: R sigma R^T.
 inline Vec3 rotated_stress(const Vec3& s, double angle) {

@@ -20,15 +20,17 @@ enum class Integration {
 
 // One polygon's side of the potential: phi = kn / H * max(0, d_exit).
 struct PotentialSide {
-  const Polygon* poly = nullptr;
+  PolygonView poly;  // a view of a Polygon value or of a simulation's pooled block
   double kn_over_h = 0.0;   // kn / H, Pa / m
   double small_edge = 0.0;  // edges shorter than this get a virtual node, m
   SmallEdgeRays small_edge_rays = SmallEdgeRays::kVirtualAndVertex;
   // The polygon's bisectors for (small_edge, small_edge_rays), if the
   // caller keeps them (a simulation builds them once per block and step);
-  // null: built on each call.
-  const Bisector* bisectors = nullptr;
+  // null: built on each call. The count before the pointer: it fills the
+  // enum's padding, so that a simulation's side and tolerance fit one
+  // cache line (56 bytes with the 24-byte view).
   int bisector_count = 0;
+  const Bisector* bisectors = nullptr;
 };
 
 // Where the loading point pg of Eq. 20 goes when the acting line crosses

@@ -56,12 +56,63 @@ struct Polygon {
   bool empty() const { return count < 3; }
 };
 
+// A read-only view of a convex polygon stored elsewhere: its count, CCW
+// vertices v[0..count) and outward unit normals n[0..count), with
+// Polygon's accessors. Why (issue 25 item 3): a Simulation keeps its
+// blocks' geometry in one pool sized by vertex count (most blocks have 3-8
+// vertices; a Polygon value has room for kMaxVertices = 32), and the read-only
+// kernels take this view, of a pooled block or of a Polygon value alike.
+// Small: pass it by value. It owns nothing; it is valid while its storage is.
+struct PolygonView {
+  int count = 0;  // first, as in Polygon
+  const Vec2* v = nullptr;
+  const Vec2* n = nullptr;
+
+  PolygonView() = default;
+  PolygonView(int count_, const Vec2* v_, const Vec2* n_) : count(count_), v(v_), n(n_) {}
+  // Implicit: a Polygon value goes wherever a view is taken.
+  PolygonView(const Polygon& p) : count(p.count), v(p.v.data()), n(p.n.data()) {}  // NOLINT(google-explicit-constructor)
+
+  Vec2 vertex(int i) const { return v[i]; }
+  Vec2 normal(int i) const { return n[i]; }
+  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
+  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
+  Vec2 edge(int i) const { return vertex(next(i)) - vertex(i); }
+  bool empty() const { return count < 3; }
+};
+
+// The mutable counterpart of PolygonView, for the functions that move a
+// block (displace_vertices, update_polygon_geometry, ...): the same
+// pointers, writable; the count is fixed (a block keeps its vertices).
+struct PolygonSpan {
+  int count = 0;
+  Vec2* v = nullptr;
+  Vec2* n = nullptr;
+
+  PolygonSpan() = default;
+  PolygonSpan(int count_, Vec2* v_, Vec2* n_) : count(count_), v(v_), n(n_) {}
+  // Implicit: a Polygon value goes wherever a span is taken.
+  PolygonSpan(Polygon& p) : count(p.count), v(p.v.data()), n(p.n.data()) {}  // NOLINT(google-explicit-constructor)
+  operator PolygonView() const { return {count, v, n}; }  // NOLINT(google-explicit-constructor)
+
+  Vec2 vertex(int i) const { return v[i]; }
+  Vec2 normal(int i) const { return n[i]; }
+  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
+  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
+  Vec2 edge(int i) const { return vertex(next(i)) - vertex(i); }
+  bool empty() const { return count < 3; }
+};
+
+// A Polygon value holding a copy of the view's vertices and normals (the
+// rest zero, as make_polygon leaves it). count is clamped to capacity.
+Polygon copy_polygon(PolygonView view);
+
 // Builds a polygon from CCW points and computes its normals. Does not check:
 // call validate_polygon first on untrusted input. count is clamped to capacity.
 Polygon make_polygon(const Vec2* points, int count);
 // Recomputes the outward unit normals from the vertices (after a move):
 // n = (e.y, -e.x) / sqrt(e.x^2 + e.y^2) for edge e, 0 for a zero-length edge.
-void update_normals(Polygon& poly);
+void update_normals(PolygonSpan poly);
 
 enum class PolygonFault {
   kNone,
@@ -93,32 +144,32 @@ struct AreaMoments {
   Vec2 centroid{};
   double sxx = 0.0, syy = 0.0, sxy = 0.0;
 };
-AreaMoments area_moments(const Polygon& poly);
+AreaMoments area_moments(PolygonView poly);
 // Area and centroid only (second moments left 0), bit-identical to area_moments'.
-AreaMoments area_centroid(const Polygon& poly);
+AreaMoments area_centroid(PolygonView poly);
 // The same for a CCW ring of `count` points (no normals needed).
 AreaMoments area_centroid(const Vec2* ring, int count);
-double area(const Polygon& poly);
-Vec2 centroid(const Polygon& poly);
+double area(PolygonView poly);
+Vec2 centroid(PolygonView poly);
 
 struct Aabb {
   Vec2 lo{DBL_MAX, DBL_MAX};
   Vec2 hi{-DBL_MAX, -DBL_MAX};
 };
-Aabb bounds(const Polygon& poly);
+Aabb bounds(PolygonView poly);
 inline bool aabb_overlap(const Aabb& a, const Aabb& b) {
   return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
 }
-double diameter(const Polygon& poly);
-double min_edge_length(const Polygon& poly);
-double max_edge_length(const Polygon& poly);
-double perimeter(const Polygon& poly);
+double diameter(PolygonView poly);
+double min_edge_length(PolygonView poly);
+double max_edge_length(PolygonView poly);
+double perimeter(PolygonView poly);
 
 // Absolute tolerance for predicates on this polygon, m: kRoundoffUlps * eps
 // times (largest |coordinate| + size), where size is the larger side of the
 // bounding box (not the diameter: the box is at hand per step, and it is
 // within a factor sqrt(2) of the diameter). Scales with offsets and size.
-double geometric_tolerance(const Polygon& poly);
+double geometric_tolerance(PolygonView poly);
 // The same from the polygon's bounds (a caller that has them).
 double geometric_tolerance(const Aabb& bounds);
 
@@ -131,19 +182,19 @@ struct PolygonGeometry {
   Aabb box;
   double min_edge2 = DBL_MAX;
 };
-PolygonGeometry update_polygon_geometry(Polygon& poly);
+PolygonGeometry update_polygon_geometry(PolygonSpan poly);
 
 enum class PointLocation { kInside, kOnBoundary, kOutside };
 
 // Point in convex polygon. With d = max_i n_i.(p - v_i) the signed distance
 // to the farthest-out edge line: d < -tol inside, d > tol outside, else on
 // the boundary. tol < 0 means geometric_tolerance(poly).
-PointLocation locate_point(const Polygon& poly, Vec2 p, double tol = -1.0);
+PointLocation locate_point(PolygonView poly, Vec2 p, double tol = -1.0);
 
 // Cuts a convex polygon by the line through `point` with unit normal `normal`.
 // `below` gets the part with normal.(x - point) <= 0, `above` the rest; either
 // may come back empty (count 0). Vertices within tol of the line are shared.
-void split_polygon(const Polygon& poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above,
+void split_polygon(PolygonView poly, Vec2 point, Vec2 normal, Polygon& below, Polygon& above,
                    double tol = -1.0);
 
 // The one clipping step shared by the cutting routines (intersection_polygon,

@@ -10,7 +10,7 @@ namespace dda {
 // d_exit(p) = min_i n_i . (v_i - p)  (Eqs. 13-14): the shortest distance for
 // p to leave the polygon; positive inside, negative outside. Inline: the
 // contact integration evaluates it at every demarcation point.
-inline double exit_distance(const Polygon& poly, Vec2 p) {
+inline double exit_distance(PolygonView poly, Vec2 p) {
   double d = DBL_MAX;
   for (int i = 0; i < poly.count; ++i) {
     const double di = dot(poly.normal(i), poly.vertex(i) - p);
@@ -20,13 +20,13 @@ inline double exit_distance(const Polygon& poly, Vec2 p) {
 }
 
 // phi(p) = kn * d_exit(p) / H inside the polygon, 0 outside (Eq. 12).
-inline double potential(const Polygon& poly, Vec2 p, double kn, double h) {
+inline double potential(PolygonView poly, Vec2 p, double kn, double h) {
   const double d = exit_distance(poly, p);
   return d > 0.0 ? kn * d / h : 0.0;
 }
 
 // Gradient of phi at p: -kn/H times the normal of the nearest edge (inside).
-Vec2 potential_gradient(const Polygon& poly, Vec2 p, double kn, double h);
+Vec2 potential_gradient(PolygonView poly, Vec2 p, double kn, double h);
 
 // Radius and centre of the largest inscribed circle: the maximum of d_exit,
 // a small linear programme solved exactly by enumerating triples of edge
@@ -41,7 +41,7 @@ struct InscribedCircle {
   Vec2 centre{};
   double radius = 0.0;
 };
-InscribedCircle inscribed_circle(const Polygon& poly);
+InscribedCircle inscribed_circle(PolygonView poly);
 
 // A bisector of Sect. 3.2.3 in the form the contact integration uses: the
 // points where edge lines line_a and line_b of a polygon are equally far,
@@ -79,12 +79,12 @@ enum class SmallEdgeRays {
 // potential stays equidistant from them); with kVirtualReplacesVertex it
 // replaces the two vertex rays. Returns the number of rays written to `out`,
 // at most 2 * poly.count (out must hold that many).
-int bisector_rays(const Polygon& poly, double small_edge, SmallEdgeRays mode, Ray* out);
+int bisector_rays(PolygonView poly, double small_edge, SmallEdgeRays mode, Ray* out);
 // The same rays (count and order) as bisectors only: what a simulation
 // rebuilds per block and step (no direction, so no square root per vertex).
-int bisectors(const Polygon& poly, double small_edge, SmallEdgeRays mode, Bisector* out);
+int bisectors(PolygonView poly, double small_edge, SmallEdgeRays mode, Bisector* out);
 // The replacing form (at most poly.count rays).
-inline int bisector_rays(const Polygon& poly, double small_edge, Ray* out) {
+inline int bisector_rays(PolygonView poly, double small_edge, Ray* out) {
   return bisector_rays(poly, small_edge, SmallEdgeRays::kVirtualReplacesVertex, out);
 }
 

@@ -119,10 +119,20 @@ class Simulation {
   int threads() const { return threads_; }
   const Scene& scene() const { return scene_; }
 
-  int block_count() const { return static_cast<int>(poly_.size()); }
+  int block_count() const { return geometry_offset_.empty() ? 0 : static_cast<int>(geometry_offset_.size()) - 1; }
   // Blocks made from boundary segments come after the scene's blocks.
   int scene_block_count() const { return scene_blocks_; }
-  const Polygon& polygon(int i) const { return poly_[i]; }
+  // Block i's polygon as a value (a copy of its pooled vertices and normals).
+  Polygon polygon(int i) const { return copy_polygon(polygon_view(i)); }
+  // Block i's polygon in the pool, without a copy: valid until the
+  // simulation is destroyed (the pool is sized once, at construction).
+  PolygonView polygon_view(int i) const {
+    const int o = geometry_offset_[static_cast<std::size_t>(i)];
+    const int c = geometry_offset_[static_cast<std::size_t>(i) + 1] - o;
+    return {c, geometry_.data() + 2 * o, geometry_.data() + 2 * o + c};
+  }
+  // Bytes of block geometry (the pool and its offsets) per block.
+  std::size_t geometry_bytes_per_block() const;
   Vec2 centroid(int i) const { return moments_[i].centroid; }
   double area(int i) const { return moments_[i].area; }
   double mass(int i) const { return mass_[i]; }
@@ -262,8 +272,22 @@ class Simulation {
   std::vector<Vec6> damp_force_;        // the damping force -a M v - b K v of the last kick (only damped)
   std::vector<double> damping_work_;    // per block: work of the damping forces so far, J/m (<= 0)
 
+  // Block i's mutable polygon in the pool (it moves every step).
+  PolygonSpan polygon_span(int i) {
+    const int o = geometry_offset_[static_cast<std::size_t>(i)];
+    const int c = geometry_offset_[static_cast<std::size_t>(i) + 1] - o;
+    return {c, geometry_.data() + 2 * o, geometry_.data() + 2 * o + c};
+  }
+
   // Hot state, one entry per block.
-  std::vector<Polygon> poly_;
+  // Block geometry pooled by vertex count (issue 25 item 3; a Polygon value
+  // has room for kMaxVertices = 32, a block mostly has 3-8): block i's
+  // count vertices then its count normals, adjacent for the cache, from
+  // geometry_[2 * geometry_offset_[i]]; count = geometry_offset_[i + 1] -
+  // geometry_offset_[i] (offsets count vertices, each with its normal).
+  // Sized once (build_blocks): views of it stay valid.
+  std::vector<Vec2> geometry_;
+  std::vector<int> geometry_offset_;  // block_count() + 1 entries
   std::vector<AreaMoments> moments_;
   std::vector<Vec6> vel_, acc_, force_, step_disp_, disp_;
   std::vector<Vec2> start_centroid_;  // centroid at the start of the step (friction history)

@@ -67,7 +67,8 @@ constexpr long kWorkOther = 1;
       if (r.depth > r.depth_bound) {
         r.depth = detail::min_width(ip);
         r.depth_bound = 0.5 * g.max_penetration *
-                        std::min(detail::extent_along(poly_[cp], nf.force), detail::extent_along(poly_[tp], nf.force)) /
+                        std::min(detail::extent_along(sides_[cp].side.poly, nf.force),
+                                 detail::extent_along(sides_[tp].side.poly, nf.force)) /
                         fn;
       }
     }
@@ -103,7 +104,6 @@ void Simulation::pair_forces(bool with_energy) {
   NearPair* const near = near_pairs_.data();
   PairLoad* const loads = pair_loads_.data();
   const Aabb* const boxes = boxes_.data();
-  const Polygon* const poly = poly_.data();
   const BlockSide* const sides = sides_.data();
   // The intersection polygon and its edges' sources, rewritten by every
   // overlap test.
@@ -118,7 +118,7 @@ void Simulation::pair_forces(bool with_energy) {
     if (k < prefetch_end) {
       // The second block of a pair ahead (the first is mostly this pair's).
       const int j = near[k + kPrefetchPairs].j;
-      prefetch_polygon<0>(poly[j]);
+      prefetch_polygon<0>(polygon_view(j));
       __builtin_prefetch(&boxes[j]);
       __builtin_prefetch(&sides[j]);
     }
@@ -133,7 +133,7 @@ void Simulation::pair_forces(bool with_energy) {
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
     const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
-    if (overlap_and_intersection(poly[p.i], poly[p.j], tol, ip, source.data(), &p.witness) !=
+    if (overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &p.witness) !=
             OverlapState::kOverlapping ||
         ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol, pair_fault)) {
       work += kWorkCandidate;

@@ -30,7 +30,7 @@ namespace {
 // (Eqs. 1-3, 5a). It is a convex function of p, so the maximum is at a
 // vertex. Without strains M acts on (u, v, r) only. A contact of stiffness k
 // anywhere on the block adds at most k times this to omega^2.
-double point_compliance(const Polygon& poly, const AreaMoments& m, double density, bool strains) {
+double point_compliance(PolygonView poly, const AreaMoments& m, double density, bool strains) {
   const Mat6 mm = mass_matrix(m, density);
   Mat6 inv = Mat6::Zero();
   if (strains) {
@@ -65,7 +65,7 @@ void Simulation::predict_critical_step() {
   int free_blocks = 0;
   min_inscribed_radius_ = DBL_MAX;
   for (int i = 0; i < block_count(); ++i) {
-    radius_[i] = inscribed_circle(poly_[i]).radius;
+    radius_[i] = inscribed_circle(polygon_view(i)).radius;
     min_inscribed_radius_ = std::min(min_inscribed_radius_, radius_[i]);
     h_min = std::min(h_min, h_[i]);
     if (!fixed_[i]) ++free_blocks;
@@ -74,8 +74,8 @@ void Simulation::predict_critical_step() {
   const double kt = friction_ ? scene_.contact.kt : 0.0;
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
-    const double k = scene_.contact.kn * max_edge_length(poly_[i]) * (1.0 / h_[i] + 1.0 / h_min) + kt;
-    const double c = point_compliance(poly_[i], moments_[i], density_[i], strains_);
+    const double k = scene_.contact.kn * max_edge_length(polygon_view(i)) * (1.0 / h_[i] + 1.0 / h_min) + kt;
+    const double c = point_compliance(polygon_view(i), moments_[i], density_[i], strains_);
     w2 = std::max(w2, partner * k * c + block_strain_omega2(i));
   }
   dt_crit_prior_ = w2 > 0.0 ? 2.0 / std::sqrt(w2) : DBL_MAX;
@@ -87,10 +87,11 @@ double Simulation::critical_time_step() const {
   // on the largest eigenvalue of M^-1 K: omega^2 <= max over blocks i of
   // strain_i + sum over i's contacts of k (c_i + sqrt(c_i c_j)), c the point
   // compliance (0 for a fixed block).
-  std::vector<double> comp(poly_.size(), -1.0), row(poly_.size(), 0.0);
+  const std::size_t n = static_cast<std::size_t>(block_count());
+  std::vector<double> comp(n, -1.0), row(n, 0.0);
   auto compliance = [&](int b) {
     if (fixed_[b]) return 0.0;
-    if (comp[b] < 0.0) comp[b] = point_compliance(poly_[b], moments_[b], density_[b], strains_);
+    if (comp[b] < 0.0) comp[b] = point_compliance(polygon_view(b), moments_[b], density_[b], strains_);
     return comp[b];
   };
   const double kt = friction_ ? scene_.contact.kt : 0.0;

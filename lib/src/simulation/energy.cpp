@@ -15,8 +15,8 @@ Vec2 Simulation::momentum() const {
 Energy Simulation::energy() const {
   Energy e = block_energy();
   for (const ContactInfo& ci : contact_info_) {
-    const Polygon& a = poly_[ci.cp];
-    const Polygon& b = poly_[ci.tp];
+    const PolygonView a = polygon_view(ci.cp);
+    const PolygonView b = polygon_view(ci.tp);
     const double tol = pair_tolerance(a, b);
     const Polygon ip = intersection_polygon(a, b, tol);
     e.contact += contact_energy(sides_[ci.cp].side, sides_[ci.tp].side, ip, tol);

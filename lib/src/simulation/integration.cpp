@@ -45,10 +45,10 @@ void Simulation::move_blocks() {
       // RotationUpdate::kExact (see there and rotate_and_displace_vertices):
       // the rigid part turned by r0 exactly, and the stress (this step's
       // increment on the start configuration) turned with the material.
-      step_motion2_[i] = rotate_and_displace_vertices(poly_[i], c, dd);
+      step_motion2_[i] = rotate_and_displace_vertices(polygon_span(i), c, dd);
       if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic_[i] * dd.tail<3>(), dd[2]);
     } else {
-      step_motion2_[i] = displace_vertices(poly_[i], c, dd);  // the largest vertex motion, squared (guard)
+      step_motion2_[i] = displace_vertices(polygon_span(i), c, dd);  // the largest vertex motion, squared (guard)
       if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
     }
     update_block_geometry(i);
@@ -65,7 +65,7 @@ void Simulation::move_blocks() {
 void Simulation::prefetch_block(int i) const {
   // What moving block i reads and writes, for writing where it is written
   // (the other core may hold a copy from the pair loop).
-  prefetch_polygon<1>(poly_[i]);
+  prefetch_polygon<1>(polygon_view(i));
   __builtin_prefetch(&vel_[i], 1);
   __builtin_prefetch(&acc_[i]);
   __builtin_prefetch(&moments_[i], 1);
@@ -89,7 +89,7 @@ void Simulation::update_geometry() {
 }
 
 void Simulation::update_block_geometry(int i) {
-  const PolygonGeometry g = update_polygon_geometry(poly_[i]);
+  const PolygonGeometry g = update_polygon_geometry(polygon_span(i));
   moments_[i] = g.moments;
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
@@ -101,9 +101,9 @@ void Simulation::update_block_geometry(int i) {
     const double small = scene_.contact.small_edge_fraction * h_[i];
     const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     PotentialSide& side = sides_[i].side;
-    if (!(plain && side.bisector_count == poly_[i].count))
+    if (!(plain && side.bisector_count == side.poly.count))
       side.bisector_count =
-          bisectors(poly_[i], small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
+          bisectors(side.poly, small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
   }
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;

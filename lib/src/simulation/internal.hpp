@@ -158,9 +158,9 @@ inline double smoothed(double x, double latest) { return x > 0.0 ? x + kSpeedSmo
 // first vertices and normals (a block has 3-5 of each). kWrite: the caller
 // is about to write them.
 template <int kWrite>
-void prefetch_polygon(const Polygon& p) {
-  const char* v = reinterpret_cast<const char*>(p.v.data());
-  const char* n = reinterpret_cast<const char*>(p.n.data());
+void prefetch_polygon(PolygonView p) {
+  const char* v = reinterpret_cast<const char*>(p.v);
+  const char* n = reinterpret_cast<const char*>(p.n);
   __builtin_prefetch(v, kWrite);
   __builtin_prefetch(v + 64, kWrite);
   __builtin_prefetch(n, kWrite);
@@ -189,7 +189,7 @@ inline int team_size() {
 // max - min of v . dir over its vertices. Along the pair's normal force
 // (divided by its length): an upper bound of min_width(ip), a few dot
 // products.
-inline double extent_along(const Polygon& ip, Vec2 dir) {
+inline double extent_along(PolygonView ip, Vec2 dir) {
   double lo = DBL_MAX, hi = -DBL_MAX;
   for (int q = 0; q < ip.count; ++q) {
     const double x = dot(ip.v[q], dir);

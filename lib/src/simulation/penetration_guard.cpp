@@ -107,7 +107,8 @@ void Simulation::check_pairs() const {
     const double e_now = approach_energy(a, b, c.point, n, &speed, &m_eff);
     const double e_max = pair_energy_bound(a, b);
     // The half-thicknesses across the contact (as the pair loop took them).
-    const double h_a = 0.5 * detail::extent_along(poly_[a], n), h_b = 0.5 * detail::extent_along(poly_[b], n);
+    const double h_a = 0.5 * detail::extent_along(polygon_view(a), n);
+    const double h_b = 0.5 * detail::extent_along(polygon_view(b), n);
     const double h_min = std::min(h_a, h_b);
     const int thin = h_a <= h_b ? a : b;
     const double kn = scene_.contact.kn;

@@ -205,10 +205,18 @@ void Simulation::start_energy_guard() {
   energy_scale_ = e.kinetic + e.strain + e.contact;
 }
 
+std::size_t Simulation::geometry_bytes_per_block() const {
+  const int n = block_count();
+  if (n == 0) return 0;
+  return (geometry_.size() * sizeof(Vec2) + geometry_offset_.size() * sizeof(int)) / static_cast<std::size_t>(n);
+}
+
 void Simulation::build_blocks() {
+  static_assert(sizeof(BlockSide) == 64, "a block's side and tolerance in one cache line");
   const std::size_t n = scene_.blocks.size() + scene_.boundaries.size();
   scene_blocks_ = static_cast<int>(scene_.blocks.size());
-  poly_.resize(n);
+  // The blocks' polygons as values first, then pooled by vertex count.
+  std::vector<Polygon> poly(n);
   moments_.resize(n);
   vel_.assign(n, Vec6::Zero());
   acc_.assign(n, Vec6::Zero());
@@ -230,7 +238,7 @@ void Simulation::build_blocks() {
   for (std::size_t i = 0; i < scene_.blocks.size(); ++i) {
     const BlockSpec& b = scene_.blocks[i];
     const Material& m = scene_.materials[static_cast<std::size_t>(b.material)];
-    poly_[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
+    poly[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
     density_[i] = m.density;
     elastic_[i] = elastic_matrix(m.young, m.poisson);
     fixed_[i] = b.fixed ? 1 : 0;
@@ -244,7 +252,7 @@ void Simulation::build_blocks() {
   for (std::size_t k = 0; k < scene_.boundaries.size(); ++k) {
     const std::size_t i = scene_.blocks.size() + k;
     const std::vector<Vec2> pts = segment_polygon(scene_.boundaries[k]);
-    poly_[i] = make_polygon(pts.data(), static_cast<int>(pts.size()));
+    poly[i] = make_polygon(pts.data(), static_cast<int>(pts.size()));
     density_[i] = scene_.materials[0].density;
     group_[i] = scene_.boundaries[k].group;
   }
@@ -260,6 +268,16 @@ void Simulation::build_blocks() {
     friction_tan_table_[static_cast<std::size_t>(r.group_a * group_count_ + r.group_b)] = t;
     friction_tan_table_[static_cast<std::size_t>(r.group_b * group_count_ + r.group_a)] = t;
   }
+  geometry_offset_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) geometry_offset_[i + 1] = geometry_offset_[i] + poly[i].count;
+  geometry_.assign(2 * static_cast<std::size_t>(geometry_offset_[n]), Vec2{});
+  for (std::size_t i = 0; i < n; ++i) {
+    const PolygonSpan g = polygon_span(static_cast<int>(i));
+    for (int k = 0; k < g.count; ++k) {
+      g.v[k] = poly[i].vertex(k);
+      g.n[k] = poly[i].normal(k);
+    }
+  }
   boxes_.resize(n);
   // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
   bisector_offset_.assign(n, 0);
@@ -267,11 +285,11 @@ void Simulation::build_blocks() {
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
     bisector_offset_[i] = total;
-    total += 2 * poly_[i].count;
+    total += 2 * poly[i].count;
   }
   bisector_store_.resize(static_cast<std::size_t>(total));
   for (std::size_t i = 0; i < n; ++i) {
-    sides_[i].side.poly = &poly_[i];
+    sides_[i].side.poly = polygon_view(static_cast<int>(i));
     sides_[i].side.small_edge_rays = scene_.contact.small_edge_rays;
     sides_[i].side.bisectors = bisector_store_.data() + bisector_offset_[i];
   }
@@ -300,8 +318,8 @@ void Simulation::choose_potential_length() {
   double lmin = DBL_MAX, lmax = 0.0, lsum = 0.0;
   int edges = 0;
   for (int i = 0; i < scene_blocks_; ++i)
-    for (int e = 0; e < poly_[i].count; ++e) {
-      const double l = length(poly_[i].edge(e));
+    for (int e = 0; e < polygon_view(i).count; ++e) {
+      const double l = length(polygon_view(i).edge(e));
       lmin = std::min(lmin, l);
       lmax = std::max(lmax, l);
       lsum += l;
@@ -315,7 +333,7 @@ void Simulation::choose_potential_length() {
     case HRule::kInscribedRadius: break;
   }
   for (int i = 0; i < block_count(); ++i) {
-    h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(poly_[i]).radius : h;
+    h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(polygon_view(i)).radius : h;
     kn_over_h_[i] = c.kn / h_[i];
     sides_[i].side.kn_over_h = kn_over_h_[i];
     sides_[i].side.small_edge = c.small_edge_fraction * h_[i];
