@@ -91,10 +91,14 @@ struct ContactInfo {
 class Simulation {
  public:
   explicit Simulation(const Scene& scene);
-  // Out of line: the private pair and team structures are complete only there.
-  Simulation(const Simulation&);
+  // Not copyable: each block's contact side points into this simulation's
+  // geometry pool and bisector store, which a member-wise copy would share
+  // with the original (a copy would read the original's blocks). A move
+  // keeps the buffers. Out of line: the private pair and team structures
+  // are complete only there.
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
   Simulation(Simulation&&) noexcept;
-  Simulation& operator=(const Simulation&);
   Simulation& operator=(Simulation&&) noexcept;
   ~Simulation();
 
@@ -198,6 +202,7 @@ class Simulation {
   void compute_forces();
   void collect_contacts();
   // setup.cpp
+  void bind_sides();
   void build_blocks();
   void choose_potential_length();
   void choose_broad_phase_skin();

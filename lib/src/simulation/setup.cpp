@@ -168,9 +168,7 @@ void check_scene(const Scene& scene) {
     }
 }
 
-Simulation::Simulation(const Simulation&) = default;
 Simulation::Simulation(Simulation&&) noexcept = default;
-Simulation& Simulation::operator=(const Simulation&) = default;
 Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 Simulation::~Simulation() = default;
 
@@ -288,9 +286,15 @@ void Simulation::build_blocks() {
     total += 2 * poly[i].count;
   }
   bisector_store_.resize(static_cast<std::size_t>(total));
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i) sides_[i].side.small_edge_rays = scene_.contact.small_edge_rays;
+  bind_sides();
+}
+
+void Simulation::bind_sides() {
+  // Each block's contact side reads its polygon from the geometry pool and
+  // its bisectors from the bisector store.
+  for (std::size_t i = 0; i < sides_.size(); ++i) {
     sides_[i].side.poly = polygon_view(static_cast<int>(i));
-    sides_[i].side.small_edge_rays = scene_.contact.small_edge_rays;
     sides_[i].side.bisectors = bisector_store_.data() + bisector_offset_[i];
   }
 }
