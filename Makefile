@@ -111,7 +111,7 @@ fuzz: build
 # 74,400 of its 75,000 timed: ~20 s on an idle 2-core machine), what a scene skips, and
 # the block-count scaling table to BENCH_MAX_BLOCKS blocks (10^4: ~3-5 min in
 # all on an idle 2-core machine; BENCH_MAX_BLOCKS=100000 adds the 3 x 10^4
-# and 10^5 rows, ~5 more minutes). Prints its own run time at the end.
+# and 10^5 rows, ~2 more minutes idle, ~5 shared). Prints its own run time at the end.
 BENCH_MAX_BLOCKS     ?= 10000
 BENCH_COLLAPSE_STEPS ?= 74400
 bench: build
