@@ -5,6 +5,7 @@
 #include <array>
 #include <cfloat>
 #include <limits>
+#include <type_traits>
 #include "dda/vec2.hpp"
 
 namespace dda {
@@ -56,44 +57,31 @@ struct Polygon {
   bool empty() const { return count < 3; }
 };
 
-// A read-only view of a convex polygon stored elsewhere: its count, CCW
-// vertices v[0..count) and outward unit normals n[0..count), with
-// Polygon's accessors. Why (issue 25 item 3): a Simulation keeps its
-// blocks' geometry in one pool sized by vertex count (most blocks have 3-8
-// vertices; a Polygon value has room for kMaxVertices = 32), and the read-only
-// kernels take this view, of a pooled block or of a Polygon value alike.
-// Small: pass it by value. It owns nothing; it is valid while its storage is.
-struct PolygonView {
+// A convex polygon stored elsewhere: its count, CCW vertices v[0..count)
+// and outward unit normals n[0..count), with Polygon's accessors. Why
+// (issue 25 item 3): a Simulation keeps its blocks' geometry in one pool
+// sized by vertex count (most blocks have 3-8 vertices; a Polygon value has
+// room for kMaxVertices = 32), and the kernels take these forms, of a pooled
+// block or of a Polygon value alike. Small: pass them by value. They own
+// nothing; they are valid while their storage is.
+//   PolygonView (T = const Vec2): read-only, for the geometry kernels.
+//   PolygonSpan (T = Vec2): writable, for the functions that move a block
+//   (displace_vertices, update_polygon_geometry, ...); the count is fixed (a
+//   block keeps its vertices). A span goes wherever a view is taken.
+template <class T>
+struct PolygonRef {
   int count = 0;  // first, as in Polygon
-  const Vec2* v = nullptr;
-  const Vec2* n = nullptr;
+  T* v = nullptr;
+  T* n = nullptr;
 
-  PolygonView() = default;
-  PolygonView(int count_, const Vec2* v_, const Vec2* n_) : count(count_), v(v_), n(n_) {}
-  // Implicit: a Polygon value goes wherever a view is taken.
-  PolygonView(const Polygon& p) : count(p.count), v(p.v.data()), n(p.n.data()) {}  // NOLINT(google-explicit-constructor)
-
-  Vec2 vertex(int i) const { return v[i]; }
-  Vec2 normal(int i) const { return n[i]; }
-  int next(int i) const { return i + 1 == count ? 0 : i + 1; }
-  int prev(int i) const { return i == 0 ? count - 1 : i - 1; }
-  Vec2 edge(int i) const { return vertex(next(i)) - vertex(i); }
-  bool empty() const { return count < 3; }
-};
-
-// The mutable counterpart of PolygonView, for the functions that move a
-// block (displace_vertices, update_polygon_geometry, ...): the same
-// pointers, writable; the count is fixed (a block keeps its vertices).
-struct PolygonSpan {
-  int count = 0;
-  Vec2* v = nullptr;
-  Vec2* n = nullptr;
-
-  PolygonSpan() = default;
-  PolygonSpan(int count_, Vec2* v_, Vec2* n_) : count(count_), v(v_), n(n_) {}
-  // Implicit: a Polygon value goes wherever a span is taken.
-  PolygonSpan(Polygon& p) : count(p.count), v(p.v.data()), n(p.n.data()) {}  // NOLINT(google-explicit-constructor)
-  operator PolygonView() const { return {count, v, n}; }  // NOLINT(google-explicit-constructor)
+  PolygonRef() = default;
+  PolygonRef(int count_, T* v_, T* n_) : count(count_), v(v_), n(n_) {}
+  // Implicit: a Polygon value (const for a view) goes wherever one is taken.
+  using Source = std::conditional_t<std::is_const<T>::value, const Polygon, Polygon>;
+  PolygonRef(Source& p) : count(p.count), v(p.v.data()), n(p.n.data()) {}  // NOLINT(google-explicit-constructor)
+  // Implicit: a span as a view.
+  template <class U, class = std::enable_if_t<std::is_const<T>::value && std::is_same<U, Vec2>::value>>
+  PolygonRef(const PolygonRef<U>& span) : count(span.count), v(span.v), n(span.n) {}  // NOLINT(google-explicit-constructor)
 
   Vec2 vertex(int i) const { return v[i]; }
   Vec2 normal(int i) const { return n[i]; }
@@ -102,6 +90,8 @@ struct PolygonSpan {
   Vec2 edge(int i) const { return vertex(next(i)) - vertex(i); }
   bool empty() const { return count < 3; }
 };
+using PolygonView = PolygonRef<const Vec2>;
+using PolygonSpan = PolygonRef<Vec2>;
 
 // A Polygon value holding a copy of the view's vertices and normals (the
 // rest zero, as make_polygon leaves it). count is clamped to capacity.
