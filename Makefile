@@ -106,9 +106,11 @@ fuzz: build
 
 # Geometry kernel per polygon pair (Google Benchmark) and our pair cost
 # against Box2D 2.4's, then the Sect. 6.1 collapse (case 1) with 1 and 2
-# threads: its contact-heavy start (600 warm-up steps, then 5000 timed) and
-# its whole run (600 warm-up steps, then the other BENCH_COLLAPSE_STEPS =
-# 74,400 of its 75,000 timed: ~20 s on an idle 2-core machine), what a scene skips, and
+# threads and as two independent 1-thread runs at once (the host's ceiling):
+# its contact-heavy start (600 warm-up steps, then 5000 timed, 3 rounds, the
+# median shown) and its whole run (600 warm-up steps, then the other
+# BENCH_COLLAPSE_STEPS = 74,400 of its 75,000 timed, one round: ~30 s on an
+# idle 2-core machine), what a scene skips, and
 # the block-count scaling table to BENCH_MAX_BLOCKS blocks (10^4: ~3-5 min in
 # all on an idle 2-core machine; BENCH_MAX_BLOCKS=100000 adds the 3 x 10^4
 # and 10^5 rows, ~2 more minutes idle, ~5 shared). Prints its own run time at the end.
@@ -119,7 +121,7 @@ bench: build
 	$(BIN)/bench_geometry && \
 	$(BIN)/bench_pair_cost && \
 	$(BIN)/bench_collapse --steps 5000 && \
-	$(BIN)/bench_collapse --steps $(BENCH_COLLAPSE_STEPS) && \
+	$(BIN)/bench_collapse --steps $(BENCH_COLLAPSE_STEPS) --rounds 1 && \
 	$(BIN)/bench_collapse --skips && \
 	mkdir -p $(OUT)/bench && \
 	$(BIN)/bench_collapse --scaling --max-blocks $(BENCH_MAX_BLOCKS) --csv $(OUT)/bench/scaling.csv && \

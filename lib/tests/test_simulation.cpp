@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -241,6 +242,40 @@ TEST_CASE("the same bits on 1 and 2 threads, step by step or in one thread team"
   CHECK(team.step_count() == 300);
   CHECK(state_hash(one) == state_hash(two));
   CHECK(state_hash(one) == state_hash(team));
+}
+
+TEST_CASE("phase times account for each thread's time in the steps run since their reset", "[simulation]") {
+  // Simulation::phase_times (for the benchmarks): per thread and phase, the
+  // time working and waiting at the phase's closing barrier. Each thread's
+  // sum lies within the wall time of the advance() that ran the steps and
+  // covers most of it (the team's start and the contact list after the last
+  // step are outside every phase); alone, no thread waits.
+  const Scene s = jointed_column();
+  for (const int threads : {1, 2}) {
+    Simulation sim(s);
+    sim.set_threads(threads);
+    sim.advance(20);
+    CHECK(!sim.phase_times().empty());
+    sim.reset_phase_times();
+    CHECK(sim.phase_times().empty());  // the control: the warm-up's times are gone
+    const auto start = std::chrono::steady_clock::now();
+    sim.advance(200);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto& times = sim.phase_times();
+    REQUIRE(!times.empty());
+    REQUIRE(times.size() <= static_cast<std::size_t>(threads));
+    for (const Simulation::PhaseTimes& t : times) {
+      double total = 0.0;
+      for (int p = 0; p < Simulation::kPhaseCount; ++p) {
+        CHECK(t.work[p] > 0.0);
+        CHECK(t.wait[p] >= 0.0);
+        if (times.size() == 1) CHECK(t.wait[p] == 0.0);
+        total += t.work[p] + t.wait[p];
+      }
+      CHECK(total <= wall);
+      CHECK(total >= 0.5 * wall);
+    }
+  }
 }
 
 TEST_CASE("the sweep broad phase with its skin finds exactly the all-pairs candidates", "[simulation]") {

@@ -183,6 +183,19 @@ class Simulation {
   std::size_t bytes_per_near_pair() const;
   // Times the sweep broad phase rebuilt its pair list (BroadPhase::kSweep).
   std::int64_t broad_phase_rebuilds() const { return broad_phase_rebuilds_; }
+  // Where each thread's wall time went in the steps run since the last
+  // reset_phase_times (or construction), for the benchmarks: per phase of
+  // the step, the time working and the time waiting at the barrier that
+  // closes it (zero alone). Phases: moving the blocks (with the guards and
+  // the share balancing of the step before); the broad phase and the pair
+  // loop; gathering and kicking. Element t: thread t of the last team size.
+  enum PhaseIndex { kPhaseMove = 0, kPhasePairs = 1, kPhaseKick = 2, kPhaseCount = 3 };
+  struct alignas(64) PhaseTimes {  // a cache line each: the threads write their own
+    double work[kPhaseCount] = {};
+    double wait[kPhaseCount] = {};
+  };
+  const std::vector<PhaseTimes>& phase_times() const { return phase_times_; }
+  void reset_phase_times() { phase_times_.clear(); }
 
  private:
   // Defined in lib/src/simulation/internal.hpp (users need not see them).
@@ -257,7 +270,7 @@ class Simulation {
   double block_strain_omega2(int i) const;
   // team.cpp
   void start_team();
-  void team_barrier();
+  void team_barrier(PhaseIndex phase);
   BlockShare block_share() const;
   void split_evenly(int team);
   void balance_block_split();
@@ -335,6 +348,7 @@ class Simulation {
   std::vector<ThreadFlags> flags_;
   // The team's barrier during run_steps (null outside it).
   detail::TeamBarrier* barrier_ = nullptr;
+  std::vector<PhaseTimes> phase_times_;  // per thread, see phase_times()
   // The pair loop's shares: thread t takes near pairs [pair_split_[t],
   // pair_split_[t + 1]), contiguous (a thread's pairs mostly involve the
   // blocks it moves: fewer polygons travel between cores) and moved every

@@ -32,7 +32,7 @@ void Simulation::update_near_pairs() {
   bool rebuild = false;
   if (scene_.broad_phase == BroadPhase::kNone) {
     rebuild = !near_pairs_unchanged();
-    team_barrier();
+    team_barrier(kPhasePairs);
   }
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;

@@ -156,7 +156,7 @@ void Simulation::pair_forces(bool with_energy) {
     if (work > 0) mine.seconds_per_work = smoothed(mine.seconds_per_work, seconds_since(t0) / static_cast<double>(work));
     mine.pair_work = static_cast<double>(work) * (mine.seconds_per_work > 0.0 ? mine.seconds_per_work : 1.0);
   }
-  team_barrier();
+  team_barrier(kPhasePairs);
 }
 
 }  // namespace dda

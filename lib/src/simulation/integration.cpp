@@ -59,7 +59,7 @@ void Simulation::move_blocks() {
   mine.left_skin = left_skin;
   if (share.team && share.end > share.begin)
     mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
-  team_barrier();
+  team_barrier(kPhaseMove);
 }
 
 void Simulation::prefetch_block(int i) const {
@@ -180,7 +180,7 @@ void Simulation::gather_and_kick() {
   if (share.team && share.end > share.begin)
     mine.seconds_per_block =
         smoothed(mine.seconds_per_block, mine.move_seconds_per_block + seconds_since(t0) / (share.end - share.begin));
-  team_barrier();
+  team_barrier(kPhaseKick);
 }
 
 Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {

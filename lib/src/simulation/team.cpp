@@ -12,20 +12,35 @@ namespace dda {
 using detail::thread_index;
 using detail::team_size;
 using detail::kPrefetchBlocks;
+using detail::PhaseClock;
 
 void Simulation::start_team() {
-  // The first shares and the barrier's reset, seen by every thread after
-  // the single's implicit barrier.
+  // The first shares, the barrier's reset and the phase times' slots, seen
+  // by every thread after the single's implicit barrier; then each thread's
+  // first phase begins.
   DDA_OMP(omp single)
   {
     split_evenly(team_size());
     barrier_->reset(team_size());
+    if (phase_times_.size() != static_cast<std::size_t>(team_size()))
+      phase_times_.assign(static_cast<std::size_t>(team_size()), PhaseTimes{});
   }
+  flags_[static_cast<std::size_t>(thread_index())].phase_start = PhaseClock::now();
 }
 
-void Simulation::team_barrier() {
-  // Every thread of a team waits here for the others (a no-op alone).
+void Simulation::team_barrier(PhaseIndex phase) {
+  // Every thread of a team waits here for the others (a no-op alone). In
+  // run_steps, the thread's time since its phase began counts as work in
+  // `phase`, the wait as waiting, and its next phase begins.
+  if (!barrier_) return;  // compute_forces: serial, untimed
+  const std::size_t t = static_cast<std::size_t>(thread_index());
+  PhaseTimes& times = phase_times_[t];
+  ThreadFlags& mine = flags_[t];
+  const PhaseClock::time_point arrived = PhaseClock::now();
+  times.work[phase] += std::chrono::duration<double>(arrived - mine.phase_start).count();
   if (team_size() > 1) barrier_->wait();
+  mine.phase_start = team_size() > 1 ? PhaseClock::now() : arrived;
+  times.wait[phase] += std::chrono::duration<double>(mine.phase_start - arrived).count();
 }
 
 Simulation::BlockShare Simulation::block_share() const {
