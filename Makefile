@@ -111,7 +111,7 @@ fuzz: build
 # median shown) and its whole run (600 warm-up steps, then the other
 # BENCH_COLLAPSE_STEPS = 74,400 of its 75,000 timed, one round: ~30 s on an
 # idle 2-core machine), what a scene skips, and
-# the block-count scaling table to BENCH_MAX_BLOCKS blocks (10^4: ~3-5 min in
+# the block-count scaling table to BENCH_MAX_BLOCKS blocks (10^4: ~1.5 min in
 # all on an idle 2-core machine; BENCH_MAX_BLOCKS=100000 adds the 3 x 10^4
 # and 10^5 rows, ~2 more minutes idle, ~5 shared). Prints its own run time at the end.
 BENCH_MAX_BLOCKS     ?= 10000
