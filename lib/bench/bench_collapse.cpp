@@ -396,7 +396,8 @@ std::string round_list(const std::vector<double>& v) {
 // against the 1-thread run's (above 1: splitting the phase made its work
 // itself slower: lines shared between the cores, a slower core, the host).
 void print_phases(const std::vector<RunStats>& runs) {
-  const char* names[dda::Simulation::kPhaseCount] = {"move (+guards)", "pair loop", "gather + kick"};
+  const char* names[dda::Simulation::kPhaseCount] = {"move blocks", "broad rebuild", "pair loop", "gather + kick",
+                                                      "guards, energy"};
   std::printf("   where the time went, ms (work / wait at the phase's barrier):\n");
   std::printf("   %-16s", "phase");
   for (const RunStats& r : runs)

@@ -247,9 +247,10 @@ TEST_CASE("the same bits on 1 and 2 threads, step by step or in one thread team"
 TEST_CASE("phase times account for each thread's time in the steps run since their reset", "[simulation]") {
   // Simulation::phase_times (for the benchmarks): per thread and phase, the
   // time working and waiting at the phase's closing barrier. Each thread's
-  // sum lies within the wall time of the advance() that ran the steps and
-  // covers most of it (the team's start and the contact list after the last
-  // step are outside every phase); alone, no thread waits.
+  // sum lies within the wall time of the advance() that ran the steps;
+  // alone, the phases cover most of it (the contact list after the last step
+  // is outside every phase) and the thread never waits. (A team's second
+  // thread may start late on a loaded machine: its wake-up is outside too.)
   const Scene s = jointed_column();
   for (const int threads : {1, 2}) {
     Simulation sim(s);
@@ -267,13 +268,17 @@ TEST_CASE("phase times account for each thread's time in the steps run since the
     for (const Simulation::PhaseTimes& t : times) {
       double total = 0.0;
       for (int p = 0; p < Simulation::kPhaseCount; ++p) {
-        CHECK(t.work[p] > 0.0);
+        // Every step moves, loops over its pairs and kicks; the broad phase
+        // rebuilds and the energy checks come now and then.
+        const bool every_step = p == Simulation::kPhaseMove || p == Simulation::kPhasePairs || p == Simulation::kPhaseKick;
+        CHECK(t.work[p] >= 0.0);
+        if (every_step) CHECK(t.work[p] > 0.0);
         CHECK(t.wait[p] >= 0.0);
         if (times.size() == 1) CHECK(t.wait[p] == 0.0);
         total += t.work[p] + t.wait[p];
       }
       CHECK(total <= wall);
-      CHECK(total >= 0.5 * wall);
+      if (times.size() == 1) CHECK(total >= 0.5 * wall);
     }
   }
 }

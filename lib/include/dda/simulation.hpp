@@ -186,10 +186,12 @@ class Simulation {
   // Where each thread's wall time went in the steps run since the last
   // reset_phase_times (or construction), for the benchmarks: per phase of
   // the step, the time working and the time waiting at the barrier that
-  // closes it (zero alone). Phases: moving the blocks (with the guards and
-  // the share balancing of the step before); the broad phase and the pair
-  // loop; gathering and kicking. Element t: thread t of the last team size.
-  enum PhaseIndex { kPhaseMove = 0, kPhasePairs = 1, kPhaseKick = 2, kPhaseCount = 3 };
+  // closes it (zero alone). Phases: moving the blocks; the broad phase's
+  // rebuilds (and BroadPhase::kNone's test); the pair loop; gathering and
+  // kicking; the guards' reports and energy checks (when one is due: one
+  // thread checks, the others wait) with the share balancing. Element t:
+  // thread t of the last team size.
+  enum PhaseIndex { kPhaseMove, kPhaseBroad, kPhasePairs, kPhaseKick, kPhaseGuards, kPhaseCount };
   struct alignas(64) PhaseTimes {  // a cache line each: the threads write their own
     double work[kPhaseCount] = {};
     double wait[kPhaseCount] = {};

@@ -9,6 +9,7 @@
 namespace dda {
 
 using detail::team_size;
+using detail::thread_index;
 
 namespace {
 
@@ -27,17 +28,17 @@ void Simulation::update_near_pairs() {
   // alike; an unchanged list keeps every slot as the merge would): a small
   // scene's usual step pays no rebuild and no allocation. The barrier after
   // the test keeps the list unchanged until every thread has read it (else
-  // a thread still testing could read the rebuilt list, skip the single
-  // below and leave the team waiting for it).
+  // a thread still testing could read the rebuilt list, skip the rebuild's
+  // barrier below and leave the team waiting for it). Thread 0 rebuilds;
+  // the others wait for it at that barrier.
   bool rebuild = false;
   if (scene_.broad_phase == BroadPhase::kNone) {
     rebuild = !near_pairs_unchanged();
-    team_barrier(kPhasePairs);
+    team_barrier(kPhaseBroad);
   }
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;
-  DDA_OMP(omp single)
-  {
+  if (thread_index() == 0) {
     // The shares keep their proportions of the new list.
     const long before = static_cast<long>(near_pairs_.size());
     rebuild_near_pairs();
@@ -49,6 +50,7 @@ void Simulation::update_near_pairs() {
       split_evenly(team_size());
     }
   }
+  team_barrier(kPhaseBroad);  // every thread sees the new list and shares
 }
 
 bool Simulation::near_pairs_unchanged() const {

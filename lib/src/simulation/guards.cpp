@@ -14,6 +14,8 @@
 
 namespace dda {
 
+using detail::thread_index;
+
 namespace {
 
 // The end of every stop message: dt against the critical step now (the
@@ -37,8 +39,7 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
   bool failed = false;
   for (const ThreadFlags& f : flags_) failed = failed || f.guard_failed || f.pair_failed;
   if (!(failed || energy_due)) return false;
-  DDA_OMP(omp single)
-  {
+  if (thread_index() == 0) {
     steps_ = done;
     time_ = static_cast<double>(steps_) * dt_;
     try {
@@ -47,7 +48,8 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
     } catch (...) {
       error = std::current_exception();
     }
-  }  // implicit barrier: every thread sees `error` before reading it
+  }
+  team_barrier(kPhaseGuards);  // every thread sees `error` before reading it
   return static_cast<bool>(error);
 }
 
