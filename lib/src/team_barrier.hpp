@@ -1,5 +1,6 @@
 // Internal: the barrier the simulation's thread team passes three times a
-// step. Not part of the public API.
+// step (once more when the broad phase rebuilds its list or a guard
+// reports). Not part of the public API.
 #pragma once
 #include <atomic>
 #include <thread>
