@@ -31,7 +31,8 @@ void Simulation::move_blocks() {
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
   const BlockShare share = block_share();
-  const PhaseClock::time_point t0 = share.team ? PhaseClock::now() : PhaseClock::time_point{};
+  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  const PhaseClock::time_point t0 = mine.phase_start;  // the last barrier's exit (team_barrier)
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch_block(i + kPrefetchBlocks);
     if (fixed_[i]) continue;
@@ -55,7 +56,6 @@ void Simulation::move_blocks() {
     body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   }
-  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   mine.left_skin = left_skin;
   if (share.team && share.end > share.begin)
     mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
@@ -167,7 +167,8 @@ void Simulation::gather_and_kick() {
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
   const BlockShare share = block_share();
-  const PhaseClock::time_point t0 = share.team ? PhaseClock::now() : PhaseClock::time_point{};
+  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  const PhaseClock::time_point t0 = mine.phase_start;  // the last barrier's exit (team_barrier)
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch_gather(i + kPrefetchBlocks);
     gather_contact_forces(i);
@@ -175,7 +176,6 @@ void Simulation::gather_and_kick() {
     kick_block(i);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   }
-  ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   mine.guard_failed = failed;
   if (share.team && share.end > share.begin)
     mine.seconds_per_block =

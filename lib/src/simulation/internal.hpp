@@ -110,7 +110,9 @@ struct alignas(64) Simulation::ThreadFlags {
   double seconds_per_work = 0.0;
   double seconds_per_block = 0.0;
   double move_seconds_per_block = 0.0;
-  std::chrono::steady_clock::time_point phase_start{};  // when its current phase began (phase_times)
+  // When its current phase began (the last team_barrier's exit): phase_times
+  // and the speeds above time the phase from it.
+  std::chrono::steady_clock::time_point phase_start{};
 };
 
 // This thread's blocks [begin, end) in a per-block phase; with a team
