@@ -238,23 +238,18 @@ template <int kN>
   }
 }
 
-// An IP edge of known source lies on one polygon's boundary, where that
-// polygon's potential is zero: only the other side's phi enters Eq. 11,
-// phi_CP with a plus sign (kMinus false), phi_TP with a minus. The same
-// operations as the two-sided form with the zero side's distance left out
-// (0 + k d for CP, 0 - k d for TP). zero_start / zero_end: the edge's end
-// is on this side's boundary too (an adjacent IP edge lies on it), d = 0.
-// Returns false when the edge is on this side's boundary as well (mid-point
-// distance within tol): zero traction, no sums.
-template <int kN, bool kMinus>
-[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab,
-                          double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
-  EdgeLines<kN> lines;
+// The exact envelope (Integration::kExactEnvelope) on an edge of known
+// source, as paper_side_edge: split at the envelope's kinks. Out of line:
+// the simulation's default is the paper's rule.
+template <bool kMinus>
+[[gnu::noinline]] bool envelope_side_edge(const PolygonView& poly, double k, Vec2 a, Vec2 ab, double tol,
+                                          bool zero_start, bool zero_end, EdgeSums& sums) {
+  EdgeLines<0> lines;
   lines.build(poly, a, ab);
   const double mid = lines.at(0.5);
   if (mid <= tol) return false;
   Crossings cr;
-  add_side_crossings(lines, rays, rule, cr);
+  add_envelope_breaks(lines, [&cr](double t) { cr.add(t); });
   cr.sort();
   auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
@@ -266,24 +261,180 @@ template <int kN, bool kMinus>
   return true;
 }
 
-// one_side_edge with the vertex count a compile-time constant where it is
-// a common one (unrolled loops over the edge lines: triangles, quadrilaterals
-// and pentagons are most blocks of a jointed rock mass; hexagons to octagons,
-// Box2D's limit, are the other common small blocks), else read at run time.
-// The same operations in the same order either way: the same bits.
+// Eqs. 16-17 on an edge split only at its start, midpoint and end (no
+// crossing strictly inside): integrate_edge's two segments with their
+// parameters written out (0 -> 1/2: dt = 1/2, 2 t0 + t1 = 1/2, t0 + 2 t1 = 1;
+// 1/2 -> 1: dt = 1/2, 2 t0 + t1 = 2, t0 + 2 t1 = 5/2), the same operations
+// in the same order: the same bits.
+[[gnu::always_inline]] inline EdgeSums integrate_halves(double fa, double fm, double fb) {
+  EdgeSums sums;
+  sums.s0 = 0.0 + 0.5 * (fa + fm);
+  sums.s1 = 0.0 + 0.5 * (fa * 0.5 + fm * 1.0);
+  sums.s0 += 0.5 * (fm + fb);
+  sums.s1 += 0.5 * (fm * 2.0 + fb * 2.5);
+  sums.segments = 2;
+  return sums;
+}
+
+// An IP edge of known source lies on one polygon's boundary, where that
+// polygon's potential is zero: only the other side's phi enters Eq. 11,
+// phi_CP with a plus sign (kMinus false), phi_TP with a minus. The same
+// operations as the two-sided form with the zero side's distance left out
+// (0 + k d for CP, 0 - k d for TP). zero_start / zero_end: the edge's end
+// is on this side's boundary too (an adjacent IP edge lies on it), d = 0.
+// Returns false when the edge is on this side's boundary as well (mid-point
+// distance within tol): zero traction, no sums.
+// paper_side_edge: the paper's rule (Sect. 3.2.3) on such an edge, with P's
+// kN lines (0: poly.count) in locals, so that they stay in registers:
+// EdgeLines' lines, distances and crossings and integrate_edge's sums,
+// computed by the same operations in the same order (the same bits).
+// The lines two at a time as in EdgeLines (pair p: lines 2p, 2p + 1, an odd
+// count's last line repeated). Vertex rays (rays.count == kN) are tested
+// two at a time as in EdgeLines::vertex_crossings; an edge that crosses none
+// (most edges: a contact's IP edges are short against the blocks) is
+// integrated over its two halves with no list of crossings.
 template <int kN, bool kMinus>
-bool one_side_edge_n(const PolygonView& poly, double k, BisectorSpan rays, Integration rule, Vec2 a, Vec2 ab, double tol,
-                     bool zero_start, bool zero_end, EdgeSums& sums) {
-  if (kN) return one_side_edge<kN, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-  switch (poly.count) {
-    case 3: return one_side_edge<3, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-    case 4: return one_side_edge<4, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-    case 5: return one_side_edge<5, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-    case 6: return one_side_edge<6, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-    case 7: return one_side_edge<7, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-    case 8: return one_side_edge<8, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
-    default: return one_side_edge<0, kMinus>(poly, k, rays, rule, a, ab, tol, zero_start, zero_end, sums);
+[[gnu::always_inline]] inline bool paper_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
+                                                   double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+  const int n = kN ? kN : poly.count;
+  const int pairs = (n + 1) / 2;
+  constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
+  Lanes c[kCapacity], s[kCapacity];  // left uninitialised: the first `pairs` are set
+  {
+    const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
+    for (int p = 0; p < pairs; ++p) {
+      const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
+      const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
+      const Lanes nx = {ni.x, nj.x}, ny = {ni.y, nj.y};
+      c[p] = nx * (Lanes{vi.x, vj.x} - ax) + ny * (Lanes{vi.y, vj.y} - ay);  // dot(n, v - a)
+      s[p] = -(nx * abx + ny * aby);                                         // -dot(n, ab)
+    }
   }
+  // d_exit at t: EdgeLines::at's fold (at_start: t = 0 without the products,
+  // at_end: t = 1 without them).
+  const auto at = [&](double t) {
+    const Lanes tt = {t, t};
+    Lanes d = {DBL_MAX, DBL_MAX};
+    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    return across_min(d);
+  };
+  const double mid = at(0.5);
+  if (mid <= tol) return false;
+  const auto traction = [k](double d) {
+    if (!(d > 0.0)) return 0.0;
+    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+  };
+  double f_start = 0.0, f_end = 0.0;
+  if (!zero_start) {
+    Lanes d = {DBL_MAX, DBL_MAX};
+    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p]);
+    f_start = traction(across_min(d));
+  }
+  if (!zero_end) {
+    Lanes d = {DBL_MAX, DBL_MAX};
+    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p]);
+    f_end = traction(across_min(d));
+  }
+  const double f_mid = traction(mid);
+  // The crossings strictly inside (0, 1), in ray order (Crossings::add's
+  // test), at most 2 kN (a virtual node adds a ray).
+  double cross[2 * (kN ? kN : kMaxVertices)];
+  int count = 0;
+  const auto add = [&](double x) {
+    if (x > 0.0 && x < 1.0) cross[count++] = x;
+  };
+  if (rays.count == n) {
+    const Lanes zero = {0.0, 0.0};
+    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
+    for (int p = 0; p < pairs; ++p) {
+      const int q = p == 0 ? pairs - 1 : p - 1;
+      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
+      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
+      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
+      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
+      if (!hits) continue;
+      const Lanes t = num / den;
+      hits &= lane_bits(ca + sa * t >= zero);
+      if (hits & 1u) add(t[0]);
+      if (hits & 2u) add(t[1]);
+    }
+  } else {
+    for (int r = 0; r < rays.count && r < 2 * n; ++r) {
+      const Bisector& ray = rays.b[r];
+      const int la = ray.line_a, lb = ray.line_b;
+      const double ca = c[la >> 1][la & 1], cb = c[lb >> 1][lb & 1], sa = s[la >> 1][la & 1], sb = s[lb >> 1][lb & 1];
+      double num = cb - ca, den = sa - sb;
+      if (den < 0.0) {
+        num = -num;
+        den = -den;
+      }
+      if (!(num > 0.0 && num < den)) continue;
+      const double t = num / den;
+      if (ca + sa * t >= ray.d0) add(t);
+    }
+  }
+  if (count == 0) {
+    sums = integrate_halves(f_start, f_mid, f_end);
+    return true;
+  }
+  // Crossings::sort's insertion sort, then integrate_edge's walk.
+  for (int i = 1; i < count; ++i) {
+    const double x = cross[i];
+    int j = i;
+    for (; j > 0 && cross[j - 1] > x; --j) cross[j] = cross[j - 1];
+    cross[j] = x;
+  }
+  EdgeSums out;
+  double t0 = 0.0, fa = f_start;
+  const auto segment_to = [&](double t1, double fb) {
+    const double dt = t1 - t0;
+    out.s0 += dt * (fa + fb);
+    out.s1 += dt * (fa * (2.0 * t0 + t1) + fb * (t0 + 2.0 * t1));
+    ++out.segments;
+    t0 = t1;
+    fa = fb;
+  };
+  int i = 0;
+  for (; i < count && cross[i] < 0.5; ++i)
+    if (cross[i] != t0) segment_to(cross[i], traction(at(cross[i])));
+  segment_to(0.5, f_mid);
+  for (; i < count; ++i)
+    if (cross[i] != t0) segment_to(cross[i], traction(at(cross[i])));
+  segment_to(1.0, f_end);
+  sums = out;
+  return true;
+}
+
+// The edge of known source under `rule`, with the vertex count a compile-time
+// constant where it is a common one (unrolled loops over the edge lines:
+// triangles, quadrilaterals and pentagons are most blocks of a jointed rock
+// mass; hexagons to octagons, Box2D's limit, are the other common small
+// blocks), else read at run time. The same operations in the same order
+// either way: the same bits.
+template <bool kMinus>
+[[gnu::noinline]] bool paper_side_edge_any(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
+                                           double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+  switch (poly.count) {
+    case 3: return paper_side_edge<3, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    case 4: return paper_side_edge<4, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    case 5: return paper_side_edge<5, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    case 6: return paper_side_edge<6, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    case 7: return paper_side_edge<7, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    case 8: return paper_side_edge<8, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    default: return paper_side_edge<0, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+  }
+}
+
+template <int kN, bool kMinus>
+[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Integration rule,
+                                                 Vec2 a, Vec2 ab, double tol, bool zero_start, bool zero_end,
+                                                 EdgeSums& sums) {
+  if (rule != Integration::kPaperBisector)
+    return envelope_side_edge<kMinus>(poly, k, a, ab, tol, zero_start, zero_end, sums);
+  if constexpr (kN > 0)
+    return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+  else
+    return paper_side_edge_any<kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
 }
 
 // The loading point kept within the intersection polygon (Eq. 20,
@@ -344,6 +495,53 @@ void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
   out.couple = out.moment - cross(out.point - c, out.force);
 }
 
+// Where an IP edge lies as far as its source tells: on CP's boundary, on
+// TP's, or neither (unknown source).
+enum class On { kNeither = 0, kCp = 1, kTp = 2 };
+
+// The sums of an edge of unknown source (both potentials; in a simulation, a
+// bevel's edge). Out of line: the common edges lie on one polygon's
+// boundary. Returns false when the edge carries zero traction (on the
+// boundary of each side it would use).
+[[gnu::noinline]] bool two_sided_edge(const PotentialSide& cp, const PotentialSide& tp, BisectorSpan rays_cp,
+                                      BisectorSpan rays_tp, Integration rule, Vec2 a, Vec2 ab, double tol, On on_prev,
+                                      On on_next, EdgeSums& sums) {
+  // Unknown source: each potential is zero on the edge if its midpoint's
+  // distance is within tol.
+  EdgeLines<0> lines_cp, lines_tp;
+  lines_cp.build(cp.poly, a, ab);
+  lines_tp.build(tp.poly, a, ab);
+  const double mid_cp = lines_cp.at(0.5), mid_tp = lines_tp.at(0.5);
+  const bool use_cp = !(mid_cp <= tol);
+  const bool use_tp = !(mid_tp <= tol);
+  if (!use_cp && !use_tp) return false;  // on both boundaries: zero traction on its two halves
+  // Demarcation points: the end points, the midpoint, and the crossings
+  // strictly inside the edge (a crossing at 0, 1/2 or 1 adds nothing).
+  Crossings cr;
+  if (use_cp) add_side_crossings(lines_cp, rays_cp, rule, cr);
+  if (use_tp) add_side_crossings(lines_tp, rays_tp, rule, cr);
+  cr.sort();
+  // Net normal traction phi_CP - phi_TP (Eq. 11) at t, each side only
+  // where its potential is not zero on the edge; d_*: exit distances, or
+  // negative for "not evaluated".
+  auto traction = [&](double d_cp, double d_tp) {
+    double f = 0.0;
+    if (d_cp > 0.0) f += cp.kn_over_h * d_cp;
+    if (d_tp > 0.0) f -= tp.kn_over_h * d_tp;
+    return f;
+  };
+  auto traction_at = [&](double t) {
+    return traction(use_cp ? lines_cp.at(t) : 0.0, use_tp ? lines_tp.at(t) : 0.0);
+  };
+  const double f_start = traction(use_cp && on_prev != On::kCp ? lines_cp.at_start() : 0.0,
+                                  use_tp && on_prev != On::kTp ? lines_tp.at_start() : 0.0);
+  const double f_mid = traction(use_cp ? mid_cp : 0.0, use_tp ? mid_tp : 0.0);
+  const double f_end = traction(use_cp && on_next != On::kCp ? lines_cp.at_end() : 0.0,
+                                use_tp && on_next != On::kTp ? lines_tp.at_end() : 0.0);
+  sums = integrate_edge(cr, f_start, f_mid, f_end, traction_at);
+  return true;
+}
+
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any).
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
@@ -373,11 +571,9 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
       rays_tp = {own_tp.b.data(), own_tp.count};
     }
   }
-  // Where an IP edge lies as far as its source tells: on CP's boundary, on
-  // TP's, or neither (unknown source).
-  // Found by arithmetic, not by branches on the source (which of an IP's
-  // edges lies on which polygon changes from pair to pair).
-  enum class On { kNeither = 0, kCp = 1, kTp = 2 };
+  // Where each IP edge lies (On), found by arithmetic, not by branches on
+  // the source (which of an IP's edges lies on which polygon changes from
+  // pair to pair).
   auto on = [source](int k) {
     if (!source) return On::kNeither;
     const IpEdge s = source[k];
@@ -400,57 +596,19 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
     // its start a is on it when the previous IP edge is, its end when the
     // next one is.
     EdgeSums sums;
-    if (on_this != On::kNeither) {
-      // An IP edge on the boundary of a polygon carries zero potential of
-      // it: only the other polygon's enters (or none, if the edge is on
-      // both boundaries within tol: zero traction on its two halves).
-      const bool used = on_this == On::kCp
-                            ? one_side_edge_n<kNt, true>(tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol,
-                                                         on_prev == On::kTp, on_next == On::kTp, sums)
-                            : one_side_edge_n<kNc, false>(cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol,
-                                                          on_prev == On::kCp, on_next == On::kCp, sums);
-      if (!used) {
-        segments += 2;
-        continue;
-      }
-    } else {
-      // Unknown source: each potential is zero on the edge if its
-      // midpoint's distance is within tol.
-      EdgeLines<kNc> lines_cp;
-      EdgeLines<kNt> lines_tp;
-      lines_cp.build(cp.poly, a, ab);
-      lines_tp.build(tp.poly, a, ab);
-      const double mid_cp = lines_cp.at(0.5), mid_tp = lines_tp.at(0.5);
-      const bool use_cp = !(mid_cp <= tol);
-      const bool use_tp = !(mid_tp <= tol);
-      if (!use_cp && !use_tp) {  // on both boundaries: zero traction on its two halves
-        segments += 2;
-        continue;
-      }
-      // Demarcation points: the end points, the midpoint, and the crossings
-      // strictly inside the edge (a crossing at 0, 1/2 or 1 adds nothing).
-      Crossings cr;
-      if (use_cp) add_side_crossings(lines_cp, rays_cp, rule, cr);
-      if (use_tp) add_side_crossings(lines_tp, rays_tp, rule, cr);
-      cr.sort();
-      // Net normal traction phi_CP - phi_TP (Eq. 11) at t, each side only
-      // where its potential is not zero on the edge; d_*: exit distances, or
-      // negative for "not evaluated".
-      auto traction = [&](double d_cp, double d_tp) {
-        double f = 0.0;
-        if (d_cp > 0.0) f += cp.kn_over_h * d_cp;
-        if (d_tp > 0.0) f -= tp.kn_over_h * d_tp;
-        return f;
-      };
-      auto traction_at = [&](double t) {
-        return traction(use_cp ? lines_cp.at(t) : 0.0, use_tp ? lines_tp.at(t) : 0.0);
-      };
-      const double f_start = traction(use_cp && on_prev != On::kCp ? lines_cp.at_start() : 0.0,
-                                      use_tp && on_prev != On::kTp ? lines_tp.at_start() : 0.0);
-      const double f_mid = traction(use_cp ? mid_cp : 0.0, use_tp ? mid_tp : 0.0);
-      const double f_end = traction(use_cp && on_next != On::kCp ? lines_cp.at_end() : 0.0,
-                                    use_tp && on_next != On::kTp ? lines_tp.at_end() : 0.0);
-      sums = integrate_edge(cr, f_start, f_mid, f_end, traction_at);
+    bool used = false;
+    if (on_this == On::kCp)
+      used = one_side_edge<kNt, true>(tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol, on_prev == On::kTp,
+                                      on_next == On::kTp, sums);
+    else if (on_this == On::kTp)
+      used = one_side_edge<kNc, false>(cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol, on_prev == On::kCp,
+                                       on_next == On::kCp, sums);
+    else
+      used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
+    if (!used) {
+      // On the boundary of each side it would use: zero traction on its two halves.
+      segments += 2;
+      continue;
     }
     segments += sums.segments;
     const Vec2 n = ip.normal(e);
@@ -471,12 +629,35 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   return out;
 }
 
+// contact_force_n with the vertex counts of CP and TP as compile-time
+// constants when both are 3 to 5 (blocks cut by joint sets are mostly
+// quadrilaterals, then pentagons and triangles), else read at run time.
+template <int kNc>
+NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
+                        double tol, const IpEdge* source, LoadingPoint where) {
+  switch (tp.poly.count) {
+    case 3: return contact_force_n<kNc, 3>(cp, tp, ip, rule, tol, source, where);
+    case 4: return contact_force_n<kNc, 4>(cp, tp, ip, rule, tol, source, where);
+    case 5: return contact_force_n<kNc, 5>(cp, tp, ip, rule, tol, source, where);
+    default: return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+  }
+}
+
+NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule, double tol,
+                      const IpEdge* source, LoadingPoint where) {
+  switch (cp.poly.count) {
+    case 3: return by_tp_count<3>(cp, tp, ip, rule, tol, source, where);
+    case 4: return by_tp_count<4>(cp, tp, ip, rule, tol, source, where);
+    case 5: return by_tp_count<5>(cp, tp, ip, rule, tol, source, where);
+    default: return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+  }
+}
+
 }  // namespace
 
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
                                  Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
-  if (cp.poly.count == 4 && tp.poly.count == 4) return contact_force_n<4, 4>(cp, tp, ip, rule, tol, source, where);
-  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+  return by_counts(cp, tp, ip, rule, tol, source, where);
 }
 
 

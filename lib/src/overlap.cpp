@@ -370,7 +370,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
 // Out of line: OverlapAndClip::run inlines all else it calls, and one copy
 // of the clipper serves every pair of counts.
 [[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
-                                   std::uint32_t lines, Polygon& result, IpEdge* source) {
+                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
   struct Ring {
     std::array<Vec2, kMaxVertices> v;
     std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
@@ -426,10 +426,13 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
   // removes only what lies more than tol beyond the corner, so on ordinary
   // contacts it is one distance per vertex and changes nothing; its edge
   // has no source edge (kMixedEdgeLabel: normal from its end points).
+  // The sharp corners are a fact of the contact alone (sharp_corners), given
+  // by a caller that keeps it per polygon, else found here.
   bool bevelled = false;
-  for (int c = 0; c < contact.count && in_count >= 3; ++c) {
+  if (sharp == kSharpCornersUnknown) sharp = sharp_corners(contact);
+  for (; sharp != 0 && in_count >= 3; sharp &= sharp - 1u) {
+    const int c = __builtin_ctz(sharp);
     const Vec2 n0 = contact.normal(contact.prev(c)), n1 = contact.normal(c);
-    if (!(dot(n0, n1) < kBevelCos)) continue;
     Vec2* out = out_ring->v.data();
     int* out_label = out_ring->label.data();
     const int count = cut_ring<0>(in, in_label, in_count, normalized(n0 + n1), contact.vertex(c), tol, kMixedEdgeLabel,
@@ -468,7 +471,8 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
 struct OverlapAndClip {
   template <int kA, int kB>
   [[gnu::noinline, gnu::flatten]] static OverlapState run(const PolygonView& contact, const PolygonView& target,
-                                                          double tol, Polygon& ip, IpEdge* source, int* witness) {
+                                                          double tol, Polygon& ip, IpEdge* source, int* witness,
+                                                          std::uint32_t sharp) {
     if (kA == 0 && (contact.count < 3 || target.count < 3)) return OverlapState::kSeparate;
     std::uint32_t lines = 0;
     const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness);
@@ -479,7 +483,7 @@ struct OverlapAndClip {
     // e.g. a needle's tip deep in a block far from the origin, whose
     // vertices clean_ring merges): then the pair is touching, with no
     // intersection polygon and no contact force.
-    clip_target(contact, target, tol, lines, ip, source);
+    clip_target(contact, target, tol, lines, sharp, ip, source);
     if (ip.count >= 3) return OverlapState::kOverlapping;
     ip.count = 0;
     return OverlapState::kTouching;
@@ -490,8 +494,9 @@ struct OverlapAndClip {
 // dispatch with a given tolerance (the hot path) then needs no call frame.
 [[gnu::noinline, gnu::cold]] OverlapState overlap_and_intersection_own_tol(const PolygonView& contact,
                                                                           const PolygonView& target, Polygon& ip,
-                                                                          IpEdge* source, int* witness) {
-  return overlap_and_intersection(contact, target, pair_tolerance(contact, target), ip, source, witness);
+                                                                          IpEdge* source, int* witness,
+                                                                          std::uint32_t sharp) {
+  return overlap_and_intersection(contact, target, pair_tolerance(contact, target), ip, source, witness, sharp);
 }
 
 constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
@@ -508,15 +513,30 @@ OverlapState overlap_state(const PolygonView& a, const PolygonView& b, double to
 }
 
 OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
-                                      IpEdge* source, int* witness) {
+                                      IpEdge* source, int* witness, std::uint32_t contact_sharp) {
   ip.count = 0;
-  if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness);
-  return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness);
+  if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness, contact_sharp);
+  return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness, contact_sharp);
 }
 
 void intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol, Polygon& result) {
   if (tol < 0.0) tol = pair_tolerance(contact, target);
-  clip_target(contact, target, tol, kAllLines, result, nullptr);
+  clip_target(contact, target, tol, kAllLines, kSharpCornersUnknown, result, nullptr);
+}
+
+std::uint32_t sharp_corners(const PolygonView& poly) {
+  // Corner c lies between edges c - 1 and c; branch-free, the previous
+  // normal carried along.
+  const int n = std::min(poly.count, 32);
+  if (n < 3) return 0;
+  std::uint32_t sharp = 0;
+  Vec2 prev = poly.n[n - 1];
+  for (int c = 0; c < n; ++c) {
+    const Vec2 next = poly.n[c];
+    sharp |= static_cast<std::uint32_t>(dot(prev, next) < kBevelCos) << c;
+    prev = next;
+  }
+  return sharp;
 }
 
 Polygon intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol) {

@@ -1,6 +1,8 @@
 // Overlap examination with the entrance block (Paper A Sect. 3.1.2, Eq. 9)
 // and the intersection polygon by cutting (Sect. 3.1.3).
 #pragma once
+#include <cstdint>
+
 #include "dda/polygon.hpp"
 
 namespace dda {
@@ -59,6 +61,16 @@ inline bool overlaps(const PolygonView& a, const PolygonView& b) {
 // at any angle and offset (checked against CGAL's exact kernel by
 // property_tests, issue 26).
 inline constexpr double kIpVertexReach = 4.5;
+// The corners that the clipper bevels when the polygon is the contact: bit
+// c set when corner c (between edges c - 1 and c) has an interior angle
+// below 30 degrees (see overlap.cpp, kBevelCos). At most two corners of a
+// convex polygon are that sharp (three would turn by more than 360
+// degrees). A fact of the polygon alone, computed once per block and step
+// by a simulation rather than once per pair.
+std::uint32_t sharp_corners(const PolygonView& poly);
+// "Not given": no convex polygon has that many sharp corners.
+inline constexpr std::uint32_t kSharpCornersUnknown = ~std::uint32_t{0};
+
 // Bound on the IP's area error, in units of (n + m) tol D (dimensionless;
 // see intersection_polygon): the boundary moves by at most tol per vertex
 // decision (snap, crossing, clean) along chords no longer than D.
@@ -116,8 +128,12 @@ struct IpEdge {
 // test say kSeparate. The views by reference (here and in the rest of this
 // header): the simulation's pair loop passes the ones it keeps per block,
 // read in place (measured: fewer instructions than copies by value).
+// contact_sharp (optional): sharp_corners(contact), when the caller keeps
+// it per polygon (a simulation builds it once per block and step);
+// kSharpCornersUnknown: found here.
 OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
-                                      IpEdge* source, int* witness = nullptr);
+                                      IpEdge* source, int* witness = nullptr,
+                                      std::uint32_t contact_sharp = kSharpCornersUnknown);
 
 // Tolerance used for a pair: the larger of the two polygons' tolerances.
 double pair_tolerance(const PolygonView& a, const PolygonView& b);

@@ -370,6 +370,7 @@ class Simulation {
   std::vector<Bisector> bisector_store_;
   std::vector<int> bisector_offset_;
   std::vector<BlockSide> sides_;
+  std::vector<std::uint32_t> sharp_corners_;  // sharp_corners() of each block's polygon, rebuilt with the geometry
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last

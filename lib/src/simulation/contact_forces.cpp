@@ -105,6 +105,7 @@ void Simulation::pair_forces(bool with_energy) {
   PairLoad* const loads = pair_loads_.data();
   const Aabb* const boxes = boxes_.data();
   const BlockSide* const sides = sides_.data();
+  const std::uint32_t* const sharp = sharp_corners_.data();
   // The intersection polygon and its edges' sources, rewritten by every
   // overlap test.
   Polygon ip;
@@ -134,8 +135,8 @@ void Simulation::pair_forces(bool with_energy) {
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
     const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
-    if (overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &p.witness) !=
-            OverlapState::kOverlapping ||
+    if (overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &p.witness,
+                                 sharp[p.i]) != OverlapState::kOverlapping ||
         ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol, pair_fault)) {
       work += kWorkCandidate;
       continue;

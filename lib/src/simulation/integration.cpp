@@ -93,6 +93,7 @@ void Simulation::update_block_geometry(int i) {
   moments_[i] = g.moments;
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
+  sharp_corners_[i] = sharp_corners(polygon_view(i));  // the clipper's bevels when block i is the contact
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes. The

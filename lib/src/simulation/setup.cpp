@@ -280,6 +280,7 @@ void Simulation::build_blocks() {
   // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
   bisector_offset_.assign(n, 0);
   sides_.assign(n, BlockSide{});
+  sharp_corners_.assign(n, 0u);
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
     bisector_offset_[i] = total;
