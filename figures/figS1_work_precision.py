@@ -114,7 +114,7 @@ def main(argv):
         ax.legend(fontsize=6, loc="best", framealpha=0.8)
     for ax in list(axes.flat)[len(measures):]:
         ax.axis("off")
-    fig.suptitle(f"Beyond the papers: work precision of {scene}, error against run time over a dt sweep "
+    fig.suptitle(f"Beyond the papers: work precision of {scene}\nerror against run time over a dt sweep "
                  "(dt halves along each curve; star: the paper's dt)", fontsize=11)
     fig.tight_layout()
     save_atomic(fig, out_png)
