@@ -166,7 +166,9 @@ int main(int argc, char** argv) try {
        " Pa, nu 0 (plane stress); 2L/c " + repro::format_full(s.contact_time()) + " s, rho c v/2 " +
        repro::format_full(s.contact_stress()) + " Pa. B: clone + subdivision; B0: clone, no subdivision; A: "
        "Paper A DDA penalty. errors signed, relative to 1D theory; status 'stopped: ...' has no values. "
-       "wall_s: mean of repeated runs when one is shorter than 0.05 s"});
+       "wall_s: mean of repeated runs when one is shorter than 0.05 s",
+       // the mode cdem_scene() sets for B (the figure labels B's curves with it)
+       "subdivision mode of B: in-place refinement (beyond the paper)"});
   for (const Run& r : runs)
     csv.row(std::vector<std::string>{
         r.model, r.series, std::to_string(r.ny), repro::format_full(r.h), repro::format_full(r.dt),
