@@ -55,6 +55,7 @@ CAUSES = {"paper_method": "the paper's method as published",
           "implementation": "our implementation"}
 MAX_CELL = 300      # characters of a table cell
 LEDGER_CELL = 200   # characters of a ledger cell (the reviewer's first table)
+LEDGER_CLAIM = 120  # characters of the ledger's "what we checked" cell
 # What the report's text must not contain: development history, the project's
 # source files and code identifiers (the rows speak of the papers).
 FORBIDDEN = re.compile(r"issue [0-9]|item [0-9]|spec|\.cpp|\.hpp|::", re.IGNORECASE)
@@ -438,7 +439,8 @@ def claims_headline(paper, c):
     text = f"{paper}: {c['pass']} of {checks} of its claims reproduced"
     extra = []
     if c["fitted"]:
-        extra.append(f"{c['fitted']} more agree only on a scene we fitted to that number, not counted")
+        extra.append(f"{c['fitted']} more {'agrees' if c['fitted'] == 1 else 'agree'} only on a scene we fitted "
+                     "to that number, not counted")
     measured = c["measurement"] + c["unverified"]
     if measured:
         extra.append(f"{measured} of its statements measured without a verdict")
@@ -595,15 +597,17 @@ def ledger(paper, rows):
     else:
         opening = (f"{paper}'s results were reproduced in part: {c['pass']} of its {checks} claims checked here "
                    f"pass" + (f", {c['fail']} fail" if c["fail"] else "")
-                   + (f", {c['fitted']} agree only on a scene fitted to that number" if c["fitted"] else "") + ".")
+                   + (f", {c['fitted']} {'agrees' if c['fitted'] == 1 else 'agree'} only on a scene fitted to that "
+                      "number" if c["fitted"] else "") + ".")
     measured = c["measurement"] + c["unverified"]
     if measured:
         opening += f" {measured} of its statements are measured without a verdict."
     lines = [opening, "",
-             "| Where | The paper says | This run | Verdict |", "|---|---|---|---|"]
+             "| Where | The paper says | What we checked | This run | Verdict |", "|---|---|---|---|---|"]
     for r in own:
         lines.append(f"| {flat(r['section'])} | {shorten(r['paper'], LEDGER_CELL)} | "
-                     f"{shorten(r['measured'], LEDGER_CELL)} | {verdict_cell(r)} |")
+                     f"{shorten(r['claim'], LEDGER_CLAIM)} | {shorten(r['measured'], LEDGER_CELL)} | "
+                     f"{verdict_cell(r)} |")
     lines += ["", f"Out of scope for {paper}:", ""] + [f"- {x}" for x in OUT_OF_SCOPE.get(paper, [])] + [""]
     return lines
 

@@ -132,7 +132,7 @@ def main(src):
         check("- **Paper A: 2 of 3 of its claims reproduced (2 of its statements measured without a verdict)**"
               in text, "Paper A headline")
         # Paper B: B-6:t passes, B-6:r fails, B-6:f is fitted (not counted as reproduced).
-        check("- **Paper B: 1 of 3 of its claims reproduced (1 more agree only on a scene we fitted to that "
+        check("- **Paper B: 1 of 3 of its claims reproduced (1 more agrees only on a scene we fitted to that "
               "number, not counted)**" in text, "Paper B headline: a fitted check is not reproduced")
         check("- Tests beyond the papers: Paper A 1 of 1 checks pass" in text, "extensions on their own line")
         check("- Our options beside the papers' methods: Paper A 0 of 1 checks pass" in text, "options line")
