@@ -1,5 +1,5 @@
-// Paper B Sect. 5 as written (SubdivisionMode::kSubModel): the two space
-// scales by a separate sub-model of the colliding elements.
+// Paper B Sect. 5 (SubdivisionMode::kSubModel): the two space scales by a
+// separate sub-model of the colliding elements.
 //
 // The paper's steps, and how each is done here:
 //  (1) At a touch at P_i the circles of radius c dt2 (c = sqrt(E / rho) of
@@ -38,13 +38,16 @@
 //      positions and velocities interpolated linearly from the parents'
 //      corners (the velocities are the coarse half-step ones), stress the
 //      parent's; lumped sub-element masses.
-//  (5) The sub-elements' force on the prescribed sub-nodes at the end of the
-//      integration (t1; chosen over the average of the substeps because the
-//      coarse kick-drift-kick needs the force AT t1, and a step average lags
-//      by dt/2, which pumps energy into a leapfrog scheme) is distributed to
-//      the coarse nodes with the same linear weights and REPLACES the
-//      colliding elements' own element force. The parents' stress is frozen
-//      while they are owned.
+//  (5) The sub-elements' forces at the end of the integration (t1; chosen
+//      over the average of the substeps because the coarse kick-drift-kick
+//      needs the force AT t1, and a step average lags by dt/2, which pumps
+//      energy into a leapfrog scheme) are distributed to the coarse nodes
+//      with linear weights and REPLACE the colliding elements' own element
+//      force. Which forces (CdemOptions::submodel_transfer): by default the
+//      forces on every sub-node, each with its linear weights in its home
+//      parent (the paper's 'force values for the whole element'); in the
+//      literal reading only those on the prescribed sub-nodes, with their
+//      drive weights. The parents' stress is frozen while they are owned.
 // The sub-model lives from the touch until no clone ties a corner of its
 // parents (the contact points separated); it is deleted at the end of that
 // step: each parent takes its sub-elements' area-averaged stress, its
@@ -52,14 +55,16 @@
 // change of that is deletion_loss; the free sub-nodes' kinetic energy is
 // dropped (SubModelRecord::kinetic_dropped; it is not in the coarse balance).
 //
-// Energy and momentum (measured, not assumed): the coarse model's kinetic
-// energy and momentum are those of the coarse nodes; its strain energy
-// counts the sub-elements in place of their parents. The free sub-nodes'
-// mass is also carried by the coarse nodes, so their kinetic energy is shown
-// beside the balance (CdemEnergyAccount::submodel_kinetic), not in it. The
-// returned forces do not sum to zero when the free sub-nodes accelerate
-// (their inertia), so the coarse momentum is not exactly conserved while a
-// sub-model lives: a property of the paper's procedure, reported as such.
+// Energy and momentum: the coarse model's kinetic energy and momentum are
+// those of the coarse nodes, which keep their masses (the free sub-nodes'
+// mass is the coarse nodes' too, so their kinetic energy relative to the
+// coarse field is shown beside the balance, CdemEnergyAccount::
+// submodel_kinetic, not in it); its strain energy counts the sub-elements in
+// place of their parents. By default the returned forces are every
+// sub-element's nodal forces, which sum to zero element by element: the
+// coarse momentum is conserved to round-off. In the literal reading the
+// returned forces lack the free sub-nodes' share, i.e. they include those
+// nodes' inertia, and do not sum to zero while a sub-model lives.
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -242,6 +247,9 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
       s.elems.push_back(se);
     }
   }
+  s.home_c.resize(s.x.size());
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    for (int q = 0; q < 3; ++q) s.home_c[i][q] = coarse_index.at(elem(s.home[i]).n[q]);
   s.inv_m.resize(s.m.size());
   int free_nodes = 0;
   for (std::size_t i = 0; i < s.m.size(); ++i) {
@@ -288,13 +296,16 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
 
 // Eqs. 2-3 on the sub-elements at their current positions: the forces on
 // the free sub-nodes (with gravity and mass damping, Eq. 1) and, step (5),
-// the forces on the prescribed ones returned to the coarse nodes.
+// the forces returned to the coarse nodes: the element forces on every
+// sub-node by its weights in its home parent (kWholeElement), or those on
+// the prescribed sub-nodes by their drive weights (kPrescribedNodes).
 void Model::submodel_forces(SubModel& s, double t) {
   const Vec2 g = scene_.gravity;
   for (std::size_t i = 0; i < s.x.size(); ++i)
     s.f[i] = s.prescribed[i] ? Vec2{} : s.m[i] * g - opt_.mass_damping * s.m[i] * s.v[i];
   std::fill(s.coarse_force.begin(), s.coarse_force.end(), Vec2{});
-  std::vector<Vec2>& bc = s.bc;  // element forces on the prescribed sub-nodes
+  const bool whole = opt_.submodel_transfer == SubModelTransfer::kWholeElement;
+  std::vector<Vec2>& bc = s.bc;  // element forces on the returned sub-nodes
   bc.assign(s.x.size(), Vec2{});
   for (std::size_t q = 0; q < s.elems.size(); ++q) {
     SubElem& se = s.elems[q];
@@ -308,6 +319,9 @@ void Model::submodel_forces(SubModel& s, double t) {
       throw SimulationError(msg.str(), StopReason::kAreaCollapsed);
     }
     for (int i = 0; i < 3; ++i) (s.prescribed[se.n[i]] ? bc : s.f)[se.n[i]] += f[i];
+    if (whole)
+      for (int i = 0; i < 3; ++i)
+        if (!s.prescribed[se.n[i]]) bc[se.n[i]] += f[i];
   }
   for (std::size_t i = 0; i < s.x.size(); ++i) {
     if (!is_finite(s.x[i]) || !is_finite(s.v[i]) || !is_finite(s.f[i]) || !is_finite(bc[i])) {
@@ -320,7 +334,14 @@ void Model::submodel_forces(SubModel& s, double t) {
           << s.block[i] << ", t = " << t << " s (step " << steps_ + 1 << ")";
       throw SimulationError(msg.str(), StopReason::kNonFinite);
     }
-    if (!s.prescribed[i]) continue;
+    if (!s.prescribed[i]) {
+      if (!whole) continue;
+      const double a = s.home_ab[i][0], b = s.home_ab[i][1];
+      s.coarse_force[static_cast<std::size_t>(s.home_c[i][0])] += (1.0 - a - b) * bc[i];
+      s.coarse_force[static_cast<std::size_t>(s.home_c[i][1])] += a * bc[i];
+      s.coarse_force[static_cast<std::size_t>(s.home_c[i][2])] += b * bc[i];
+      continue;
+    }
     const double w = s.drive_w[i];
     s.coarse_force[static_cast<std::size_t>(s.drive[i][0])] += (1.0 - w) * bc[i];
     s.coarse_force[static_cast<std::size_t>(s.drive[i][1])] += w * bc[i];

@@ -23,7 +23,7 @@
 //    the interaction force (Eq. 11) is checked against the tensile limit
 //    (Eq. 6) and the Mohr-Coulomb shear limit (Eqs. 7-10) for separation;
 //  * local subdivision (Sect. 5), two modes (CdemOptions::subdivision_mode):
-//    - kSubModel (the default), Sect. 5 as written (steps 1-5, Eq. 12; model_submodel.cpp):
+//    - kSubModel (the default), Sect. 5 steps 1-5 (Eq. 12; model_submodel.cpp):
 //      the coarse model stays as it is (contact, clone and Eqs. 4-11 at
 //      coarse nodes with coarse masses, exactly as without subdivision). At
 //      a touch the colliding elements (within c dt2 of the contact point,
@@ -36,20 +36,20 @@
 //      (inside, on edges between colliding elements, on the free boundary)
 //      are free. It is integrated with n = ceil(dt / (substep_safety x the
 //      sub-elements' element-bound critical step)) substeps per coarse step
-//      (step 4); the sub-elements' force on its prescribed nodes at the step
-//      end is returned to the coarse nodes with linear weights and replaces
-//      the colliding elements' own force (step 5). Deleted when no clone
-//      ties its parents' corners (the contact points separated): the
-//      parents take the area-averaged stress. Interpretations: the shared
-//      edges are prescribed too (conforming with the coarse neighbours);
-//      the force at the step end, not the substep average (centred for the
-//      coarse kick-drift-kick). Measured, not assumed: the free sub-nodes
-//      carry mass the coarse nodes also carry, and the returned forces
-//      include their inertia, so the coarse momentum and energy are not
-//      conserved while a sub-model lives (a property of the procedure as
-//      written; the energy account's `other` shows it).
-//    - kInPlace (an option beyond the paper; the default before the flip to
-//      the paper's sub-model): at a touch, the elements within c dt2 of
+//      (step 4); at the step end its element forces are returned to the
+//      coarse nodes with linear weights and replace the colliding elements'
+//      own force (step 5), by one of two readings of the under-specified
+//      step (CdemOptions::submodel_transfer): the forces on every sub-node
+//      (the default: the coarse nodes keep their masses, momentum exact) or
+//      only those on the prescribed sub-nodes (the literal reading: the
+//      free sub-nodes' inertia enters the returned forces, momentum is
+//      lost while a sub-model lives). Deleted when no clone ties its
+//      parents' corners (the contact points separated): the parents take
+//      the area-averaged stress. Interpretations: the shared edges are
+//      prescribed too (conforming with the coarse neighbours); the force at
+//      the step end, not the substep average (centred for the coarse
+//      kick-drift-kick).
+//    - kInPlace (an option beyond the paper): at a touch, the elements within c dt2 of
 //      the contact point are refined k x k in place
 //      (k = ceil(h_e / (c dt2)), clamped), mass and momentum moved exactly;
 //      the patch (its elements and the coarse elements touching its nodes)
@@ -146,12 +146,13 @@ enum class ContactMode : std::uint8_t { kTwoScale, kNodeToEdgePenalty };
 
 // How Sect. 5's local subdivision is done (CdemOptions::subdivision true).
 enum class SubdivisionMode : std::uint8_t {
-  // Paper B Sect. 5 steps (1)-(5) as written (model_submodel.cpp): the
-  // coarse model stays as it is (contact, clone and Eqs. 4-11 at coarse
-  // nodes, as without subdivision); the colliding elements get a separate
-  // sub-model of k x k sub-elements driven by the coarse nodes' velocities
-  // (Eq. 12, steps dt/n), whose element forces replace the colliding
-  // elements' own force on their coarse nodes. The default.
+  // Paper B Sect. 5 steps (1)-(5) (model_submodel.cpp): the coarse model
+  // stays as it is (contact, clone and Eqs. 4-11 at coarse nodes, as
+  // without subdivision); the colliding elements get a separate sub-model
+  // of k x k sub-elements driven by the coarse nodes' velocities (Eq. 12,
+  // steps dt/n), whose element forces replace the colliding elements' own
+  // force on their coarse nodes (CdemOptions::submodel_transfer). The
+  // default.
   kSubModel,
   // Beyond the paper, an option: the colliding elements refined in place
   // with hanging nodes, the clone formed between patch nodes
@@ -173,6 +174,39 @@ enum class TouchImpact : std::uint8_t {
   kCoulomb,
 };
 
+// How Sect. 5 step (5), "transfer the forces of the elements to the initial
+// nodes, and the force values for the whole element may be acquired", hands
+// the sub-model's element forces to the initial (coarse) nodes
+// (SubdivisionMode::kSubModel only). The paper does not say which
+// sub-nodes' forces are transferred, nor whether the free sub-nodes' mass
+// is the coarse nodes' own; the two readings differ in momentum.
+enum class SubModelTransfer : std::uint8_t {
+  // Our reading, the default: the sub-elements' forces on every sub-node,
+  // prescribed and free, go to the initial nodes with the sub-node's linear
+  // weights in its parent element (its place when the sub-model was built),
+  // and the initial nodes keep their lumped masses: the sub-model resolves
+  // the colliding elements' force, the coarse nodes carry their mass. Each
+  // sub-element's nodal forces sum to zero, so the returned forces do too
+  // and linear momentum is conserved to round-off. While the sub-model
+  // moves as the linear interpolation of its parents' corners (same
+  // stress), the returned force is the parents' own element force (nested
+  // constant-strain triangles); its fine-scale motion adds the correction.
+  // (The mass partition instead, the free sub-nodes taking the colliding
+  // elements' mass and the coarse nodes keeping the rest, conserves
+  // momentum too, but leaves a coarse node whose elements all collide (the
+  // touching apex, the touched node) with its corner sub-node's mass, 1/k^2
+  // of its own, against the stiff sub-elements, integrated with dt (step
+  // 2): on Paper B's prisms a sub-element inverts four steps after the
+  // sub-model is built at the paper's dt.)
+  kWholeElement,
+  // The literal reading: only the forces on the prescribed sub-nodes (step
+  // 3's nodes of fixed velocity) are returned, and the free sub-nodes' mass
+  // is carried by the coarse nodes too. The returned forces then include
+  // the free sub-nodes' inertia and do not sum to zero: momentum is lost
+  // while a sub-model lives (39 % on Paper B's two prisms).
+  kPrescribedNodes,
+};
+
 struct CdemOptions {
   ContactMode contact = ContactMode::kTwoScale;
   TouchImpact touch_impact = TouchImpact::kPerfectlyInelastic;  // Sect. 4.1 as published
@@ -185,9 +219,12 @@ struct CdemOptions {
   double tolerance = 5e-3;  // contact tolerance d_tol, m (Paper B Sect. 6)
   CloneStrength strength;
   bool subdivision = true;  // Sect. 5 local subdivision; off: clones of coarse nodes
-  // Default: the paper's sub-model (Sect. 5 as written); kInPlace is the
-  // in-place refinement beyond the paper, a named option.
+  // Default: the paper's sub-model (Sect. 5); kInPlace is the in-place
+  // refinement beyond the paper, a named option.
   SubdivisionMode subdivision_mode = SubdivisionMode::kSubModel;
+  // kSubModel: Sect. 5 step (5) read so that momentum is conserved (the
+  // default) or literally (kPrescribedNodes).
+  SubModelTransfer submodel_transfer = SubModelTransfer::kWholeElement;
   // Refinement k x k of an element in the contact zone: k = ceil(h_e / (c dt2))
   // (h_e = sqrt(2 A_e), the element's length scale), clamped to this range.
   // One k per run, fixed by the first touch, so that refined neighbours share
@@ -514,11 +551,12 @@ class Model {
     // where each sub-node sits in a parent: x = X0 + a (X1 - X0) + b (X2 - X0)
     std::vector<int> home;
     std::vector<std::array<double, 2>> home_ab;
+    std::vector<std::array<int, 3>> home_c;  // the home parent's corners: indices into coarse
     std::vector<SubElem> elems;
     std::vector<int> coarse;          // the coarse nodes that drive it
     std::vector<Vec2> coarse_x0;      // their positions at the last sync
     std::vector<Vec2> coarse_force;   // step 5: force returned to them, N/m
-    std::vector<Vec2> bc;             // scratch: element forces on the prescribed sub-nodes, N/m
+    std::vector<Vec2> bc;             // scratch: element forces on the returned sub-nodes, N/m
   };
   struct SubRequest {
     int main_node = -1, ea = -1, eb = -1;
