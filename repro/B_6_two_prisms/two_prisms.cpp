@@ -217,7 +217,7 @@ int main(int argc, char** argv) try {
     sub_csv.commit();
     claims.push_back(prisms::submodel_mesh_row(sub_mesh));
   }
-  // Beyond the paper (issue 23, item 4): the patch deletion's energy handed
+  // Beyond the paper: the patch deletion's energy handed
   // to the coarse mesh (CdemOptions::patch_deletion = kEnergyMatched),
   // beside the paper's restriction above.
   {

@@ -136,7 +136,7 @@ inline bool little_loss(const Result& r) {
   const EnergyLoss l = energy_loss(r);
   return l.loss > 0.0 && l.loss < 0.05 * r.e0 && std::fabs(l.residual) < 0.01 * r.e0;
 }
-// ---- the energy account (issue 23, item 4) -----------------------------------
+// ---- the energy account ------------------------------------------------------
 // Every time-series row's energy closes: initial = kinetic + strain + gravity
 // + touch loss (measured, Eq. 5) + refine loss + deletion loss (Sect. 5) +
 // other; the criterion recomputes the remainder from the components (not
@@ -364,7 +364,7 @@ inline MeshPoint mesh_point(int divisions) {
   const Result r = simulate(s);
   return {divisions, s.dt, r.vj, r.peak_node_vj_at_fig14c, r.t_sep};
 }
-// Fig. 14c on a converged quantity (issue 23 item 6): the paper's claim
+// Fig. 14c on a converged quantity: the paper's claim
 // that j accelerates "from 0.0 to 3.205 m/s", read on the finest mesh of
 // the refinement study with the same criterion as the coarse-mesh row
 // (fig14c_met). The quantity is j's block-average velocity, the one that
@@ -476,7 +476,7 @@ inline const char* const kTestSubTouch = "B-6 sub-model touch time: FAIL with th
 inline const char* const kTestSubEnergy =
     "B-6 sub-model energy never grows: FAIL on a series 1 % above E0 and with dt above the critical step";
 inline const char* const kTestSubMomentum =
-    "B-6 sub-model momentum: PASS with k = 1 (each sub-model one element), FAIL with k = 6";
+    "B-6 sub-model momentum: PASS with the default transfer and with k = 1, FAIL with the literal transfer";
 
 // The rows comparing the paper's sub-model with the in-place refinement
 // (and the run without subdivision).
@@ -512,12 +512,10 @@ inline std::vector<repro::Claim> mode_rows(const ModeRun& sub, const ModeRun& in
                     "< 1e-12 (round-off) with the sub-model", momentum_conserved(a)});
   claims.back().control = repro::control_test(kTestSubMomentum);
   repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
-                      "Sect. 5 steps 3-5: the sub-model's free sub-nodes (inside the colliding elements and on their "
-                      "free boundary) carry mass the coarse nodes carry too, and the sub-elements' force returned to "
-                      "the coarse nodes (step 5) includes those sub-nodes' inertia, so the coarse model's forces no "
-                      "longer sum to zero while a sub-model lives; with k = 1 (no free sub-node) momentum is exact. "
-                      "The in-place refinement (beyond the paper, beside) moves the mass into the patch and keeps "
-                      "momentum to round-off");
+                      "Sect. 5 step 5: the sub-model's forces returned to the coarse nodes do not sum to zero while "
+                      "it lives (the literal reading, the forces on the prescribed sub-nodes only, returns the free "
+                      "sub-nodes' inertia); the default returns the element forces on every sub-node, which sum to "
+                      "zero element by element");
   auto worst_other = [](const Result& r) { return worst_energy_remainder(r.accounts); };
   claims.push_back(repro::measurement(
       "B-6", "Sect. 5 as written (sub-model) against the in-place refinement: block j's velocities and the separation",
@@ -545,7 +543,8 @@ inline std::vector<repro::Claim> mode_rows(const ModeRun& sub, const ModeRun& in
           format_short(sub.cpu, 3) + " s; in-place k " + std::to_string(inplace.k) + ", n " + std::to_string(inplace.n) +
           ", " + std::to_string(inplace.substeps) + " patch steps, wall " + format_short(inplace.wall, 3) + " s, CPU " +
           format_short(inplace.cpu, 3) + " s",
-      "other: the account's remainder (the sub-model's returned inertia enters it); cost on this machine"));
+      "other: the account's remainder (the free sub-nodes' fine-scale kinetic energy, outside the coarse balance, "
+      "enters it); cost on this machine"));
   return claims;
 }
 
@@ -590,11 +589,11 @@ inline repro::Claim submodel_mesh_row(const std::vector<SubMeshPoint>& pts) {
       "B-6", "Sect. 5 as written (sub-model): mesh refinement of j's velocity and of the momentum drift (dt with h)",
       "\"the velocity of block j after collision is approximately equal to the initial velocity of block i\"",
       text + "; table mesh_study_submodel.csv",
-      "the sub-model's free sub-nodes duplicate the colliding elements' mass: the drift shrinks with the colliding "
-      "elements (h)");
+      "the sub-model returns the element forces on every sub-node (momentum to round-off); the clone's coarse "
+      "contact masses shrink with h");
 }
 
-// The default flipped to the paper's sub-model (issue 23 item 3): the rows
+// The default is the paper's sub-model: the rows
 // of prisms::rows on the sub-model run (`sub`, the paper's figure data) and,
 // beside each check the sub-model fails, the same claim on the in-place
 // option (`inplace`, beyond the paper) as a row of its own. A failing
@@ -604,19 +603,17 @@ inline std::vector<repro::Claim> flipped_rows(const Result& sub, const Result& i
   using repro::format_short;
   const std::vector<repro::Claim> a = rows(sub, coarse), b = rows(inplace, coarse);
   const std::string reason =
-      "Sect. 5 steps 3-5 as written (model_submodel.cpp): the free sub-nodes of the sub-model (inside the colliding "
-      "elements and on their free boundary) carry mass the coarse nodes carry too, and the sub-elements' force "
-      "returned to the coarse nodes in step 5 includes those sub-nodes' inertia, so while the sub-model lives the "
-      "coarse forces do not sum to zero and do work the account does not hold: max |p - p0| / p0 " +
-      format_short(sub.worst_momentum, 3) + ", worst |other| / E0 " + format_short(worst_energy_remainder(sub.accounts), 3) +
-      ", E(0.5 s) / E0 " + format_short(sub.e_end.total() / sub.e0, 4) + ", v_j(0.5 s) " + format_short(sub.vj, 4) +
-      " m/s, j's largest nodal v_x at 0.3400 s " + format_short(sub.peak_node_vj_at_fig14c, 4) +
-      " m/s, touch loss " + format_short(sub.touch.energy_loss, 4) + " J/m at coarse nodes (" +
-      format_short(sub.touch.mass_main) + " / " + format_short(sub.touch.mass_target) +
-      " kg/m: Sect. 5 leaves the coarse contact as it is); with k = 1 (no free sub-node) momentum is exact. The row "
-      "beside, the in-place option (beyond the paper: mass moved into the patch, the clone between patch nodes), "
-      "gets it right: max |p - p0| / p0 " + format_short(inplace.worst_momentum, 3) + ", v_j(0.5 s) " +
-      format_short(inplace.vj, 4) + " m/s";
+      "Sect. 5 leaves the contact at the coarse nodes (step 2: the initial nodes as without subdivision): on the "
+      "rebuilt prisms' 4 elements per block the clone's Eq. 4 impact has the coarse masses " +
+      format_short(sub.touch.mass_main) + " / " + format_short(sub.touch.mass_target) + " kg/m and loses " +
+      format_short(sub.touch.energy_loss, 4) + " J/m (" + format_short(100.0 * sub.touch.energy_loss / sub.e0, 3) +
+      " % of E0), as without subdivision; the sub-model keeps momentum (max |p - p0| / p0 " +
+      format_short(sub.worst_momentum, 3) + ") but its free sub-nodes' fine-scale energy is outside the coarse "
+      "account (worst |other| / E0 " + format_short(worst_energy_remainder(sub.accounts), 3) + "): E(0.5 s) / E0 " +
+      format_short(sub.e_end.total() / sub.e0, 4) + ", v_j(0.5 s) " + format_short(sub.vj, 4) +
+      " m/s; on finer meshes the contact masses shrink and v_j approaches 3.0 m/s (mesh_study_submodel.csv). The "
+      "row beside, the in-place option (beyond the paper: the clone between patch nodes of small mass): v_j(0.5 s) " +
+      format_short(inplace.vj, 4) + " m/s, touch loss " + format_short(inplace.touch.energy_loss, 4) + " J/m";
   std::vector<repro::Claim> out;
   for (std::size_t i = 0; i < a.size(); ++i) {
     out.push_back(a[i]);

@@ -1,4 +1,4 @@
-// Issue 23 item 2, the impact study (impact_study.cpp says what it runs):
+// The impact study (impact_study.cpp says what it runs):
 // one oblique impact of two CST-meshed 1 m squares with Paper B's two-scale
 // contact per cell (angle, speed, friction, subdivision), the measured
 // quantities of a cell and the per-cell criteria of the rows, here so that
@@ -460,10 +460,10 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
                         "an element inverts or a node ends deeper than d_tol and the solver stops; the cells affected "
                         "change erratically with dt. Paper B's method cannot add energy (Eq. 4 removes it, central "
                         "differences below the critical step conserve it): the fault is in our clone/sliding "
-                        "implementation (issue 23, item 2 finding)");
+                        "implementation (a finding of this study)");
   };
 
-  add("no-pass-through", "no pass-through in any cell of the impact study", "issue 23: no pass-through in any cell",
+  add("no-pass-through", "no pass-through in any cell of the impact study", "beyond the paper: no pass-through in any cell",
       tally(cells, no_pass_through,
             [](const CellResult& r) {
               return stopped_or(r, "depth " + format_short(r.max_depth, 3) + " m, centres " +
@@ -477,7 +477,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
       kTestPassThrough);
   stop_cause(out.back());
 
-  add("kinetic-energy", "kinetic energy never grows in any cell", "issue 23: kinetic energy never grows",
+  add("kinetic-energy", "kinetic energy never grows in any cell", "beyond the paper: kinetic energy never grows",
       tally(cells, energy_never_grows,
             [](const CellResult& r) { return "max KE/KE0 - 1 = " + format_short(r.ke_growth, 3) + (r.ok ? "" : ", stopped"); }),
       "max KE/KE0 - 1 over the finished cells " +
@@ -490,7 +490,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
   stop_cause(out.back());
 
   add("separation", "the blocks separate in every cell (no cohesion or tensile strength holds them)",
-      "issue 23: the blocks separate (when friction allows)",
+      "beyond the paper: the blocks separate (when friction allows)",
       tally(cells, separates,
             [](const CellResult& r) { return stopped_or(r, r.separated ? "separated" : "still tied or closing"); }),
       "last clone released at " +
@@ -539,7 +539,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
   stop_cause(out.back());
 
   add("coulomb", "the tangential impulse obeys Coulomb's limit in every cell",
-      "rigid-body Coulomb impact: |J_t| <= mu J_n (issue 23)",
+      "rigid-body Coulomb impact: |J_t| <= mu J_n (beyond the paper)",
       tally(cells, obeys_coulomb,
             [](const CellResult& r) { return stopped_or(r, "J_t/J_n = " + format_short(r.jt / r.jn, 3)); }, 6),
       "J_t/J_n - mu over the finished cells " +
@@ -568,7 +568,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
     add_option("coulomb-option",
                "(option touch_impact = kCoulomb, beyond the paper) the tangential impulse obeys Coulomb's limit in "
                "every cell",
-               "rigid-body Coulomb impact: |J_t| <= mu J_n (issue 23); the option caps each touch's tangential "
+               "rigid-body Coulomb impact: |J_t| <= mu J_n (beyond the paper); the option caps each touch's tangential "
                "impulse at mu times its normal impulse",
                tally(option_cells, obeys_coulomb,
                      [](const CellResult& r) { return stopped_or(r, "J_t/J_n = " + format_short(r.jt / r.jn, 3)); }, 6),
@@ -689,7 +689,7 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
   const auto none = [](const CellResult&) { return std::string(); };
   const auto all = [](const CellResult&) { return true; };
   add("submodel-no-pass-through", "(Sect. 5 as written, sub-model) no pass-through in any cell of the impact study",
-      "issue 23: no pass-through in any cell",
+      "beyond the paper: no pass-through in any cell",
       tally(sub, no_pass_through,
             [](const CellResult& r) {
               return stopped_or(r, "depth " + format_short(r.max_depth, 3) + " m, centres " +
@@ -700,7 +700,7 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
       "per cell, as the paper's row: the run finishes, no node deeper than d_tol, centres > L/2 apart",
       kTestSubPassThrough);
   add("submodel-kinetic-energy", "(Sect. 5 as written, sub-model) kinetic energy never grows in any cell",
-      "issue 23: kinetic energy never grows",
+      "beyond the paper: kinetic energy never grows",
       tally(sub, energy_never_grows,
             [](const CellResult& r) { return "max KE/KE0 - 1 = " + format_short(r.ke_growth, 3) + (r.ok ? "" : ", stopped"); }),
       tally(inplace, energy_never_grows, none),
@@ -708,7 +708,7 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
           stats(sub, [](const CellResult& r) { return r.total_growth; }, all),
       "per cell, as the paper's row: KE(t) <= KE0 (1 + 1e-9) at every step", kTestSubEnergy);
   add("submodel-separation", "(Sect. 5 as written, sub-model) the blocks separate in every cell",
-      "issue 23: the blocks separate (when friction allows)",
+      "beyond the paper: the blocks separate (when friction allows)",
       tally(sub, separates,
             [](const CellResult& r) { return stopped_or(r, r.separated ? "separated" : "still tied or closing"); }),
       tally(inplace, separates, none),
@@ -717,13 +717,11 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
           " ms",
       "per cell, as the paper's row: no clone left at the end and B moving away from A in x", kTestSubSeparation);
   repro::explain_fail(out.back(), repro::Cause::kPaperMethod,
-                      "Sect. 5 steps 3-5 as written: the sub-model's free sub-nodes carry mass the coarse nodes carry "
-                      "too and the force returned to the coarse nodes includes their inertia, so the blocks' momentum "
-                      "is not conserved while a sub-model lives (B-6's sub-model momentum row); the blocks' relative "
-                      "motion changes, the contact re-touches (measured in (30 deg, 0.1 m/s, mu 0.3): 52 touches "
-                      "against 8 without subdivision, x-momentum 3.7 % below its start) and a clone formed late is "
-                      "still tied at the end of the window. The same cells separate without subdivision and with the "
-                      "in-place refinement (beside)");
+                      "Sect. 5's sub-model: its fine-scale forces on the coarse contact nodes (step 5) make the "
+                      "contact re-touch (measured in the four failing cells: 46 to 79 touches, against 11 to 13 "
+                      "without subdivision) and a clone formed late is still tied at the end of the window, 8 wave "
+                      "times after the touch. The same cells separate without subdivision and with the in-place "
+                      "refinement (beside)");
   add("submodel-touch-loss-eq5", "(Sect. 5 as written, sub-model) the touches' measured loss stays within Eq. 5",
       "Paper B Eq. 5 (the clones are between coarse nodes: Eq. 5 with the coarse masses)",
       tally(sub, touch_loss_within_eq5,

@@ -1,4 +1,4 @@
-// Negative controls of Paper B's drivers (issue 21, item 2): B-6 two prisms
+// Negative controls of Paper B's drivers: B-6 two prisms
 // and B-7 contact comparison. Each test applies the driver's own criterion
 // (from the driver's header) to a deliberately wrong configuration and
 // asserts that the check comes out FAIL (and, where cheap, that the paper's
@@ -72,8 +72,8 @@ TEST_CASE(prisms::kTestSeparation, "[controls][B-6]") {
   CHECK_FALSE(prisms::separates_at_fig15a(prisms_run({}, g)));
 }
 
-// The default is the sub-model (Sect. 5 as written), whose row fails
-// (paper_method: the free sub-nodes' inertia returned in step 5); the
+// The default is the sub-model (Sect. 5), whose row fails (paper_method:
+// its clone is between the coarse nodes, with their Eq. 5 loss); the
 // in-place option's row beside it passes. The control: the in-place run
 // passes, the sub-model's verdict is its FAIL, the bad inputs fail.
 TEST_CASE(prisms::kTestLittleLoss, "[controls][B-6]") {
