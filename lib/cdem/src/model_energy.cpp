@@ -118,6 +118,7 @@ std::vector<CloneView> Model::clones() const {
     v.weight = c.w;
     v.point = nd.x[c.main];
     v.force = c.lambda;
+    v.normal = clone_normal(c, st.mesh, nd.x);
     v.fine = c.fine;
     out.push_back(v);
   }
@@ -143,6 +144,9 @@ Snapshot snapshot_of(const ModelState& st) {
     t.velocity = (nd.v[e.n[0]] + nd.v[e.n[1]] + nd.v[e.n[2]]) / 3.0;
     t.block = e.block;
     t.fine = e.level > 0;
+    t.node = e.n;
+    t.v = {nd.v[e.n[0]], nd.v[e.n[1]], nd.v[e.n[2]]};
+    t.stress = e.stress;
     s.tris.push_back(t);
   }
   for (const SubModel& sm : st.submodels.live)
@@ -152,6 +156,8 @@ Snapshot snapshot_of(const ModelState& st) {
       t.velocity = (sm.v[se.n[0]] + sm.v[se.n[1]] + sm.v[se.n[2]]) / 3.0;
       t.block = mesh.elem(se.parent).block;
       t.fine = true;
+      t.v = {sm.v[se.n[0]], sm.v[se.n[1]], sm.v[se.n[2]]};
+      t.stress = se.stress;
       s.tris.push_back(t);
     }
   for (const Clone& c : st.clones) s.clone_points.push_back(nd.x[c.main]);
