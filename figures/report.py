@@ -254,12 +254,14 @@ ROOTS = {
         "Sect. 5 steps (1)-(5) subdivide the colliding elements, solve the sub-elements with the initial nodes' "
         "velocities as boundary conditions (Eq. 12, time step dt/n) and transfer 'the forces of the element' to "
         "the initial nodes. They do not say which mass the sub-model's free nodes carry, nor how the forces are "
-        "transferred. A reading in which the free sub-nodes carry mass the coarse nodes carry too does not "
-        "conserve momentum on the paper's own example, while the paper states momentum conservation and 'a "
-        "little' energy loss: where a row fails for this reason the failure is ours, not the paper's. The rows "
-        "give the run's momentum drift; the in-place refinement beside conserves momentum to round-off.",
+        "transferred, nor where the clone sits. We return the element forces on every sub-node to the initial "
+        "nodes by their linear weights (momentum to round-off; the literal reading, the forces on the prescribed "
+        "sub-nodes only, is an option and drifts) and keep the clone between the coarse nodes (step 2): its Eq. 4 "
+        "loss is the coarse mesh's, and the free sub-nodes' fine-scale energy stays outside the coarse energy "
+        "account. Where a row fails for this reason the failure may be our reading's, not the paper's. The rows "
+        "give the run's numbers; the in-place refinement beside puts the clone between patch nodes of small mass.",
         "in_place", ["B_6_two_prisms/B-6:submodel-momentum",
-                     "B_6_two_prisms/B-6:in-place-option-beyond-the-paper-momentum-is-conserved-before-and-after-"]),
+                     "B_6_two_prisms/B-6:submodel-vs-inplace-energy"]),
     "unstated_setup": (
         "A set-up the paper does not give", "missing_data",
         "The paper does not give this scene's geometry or start (its figure is lost or the text is silent); the "

@@ -69,7 +69,9 @@ std::string subdivision_mode_text(const dda::cdem::CdemOptions& o) {
   if (!o.subdivision) return "none (clone node of the coarse nodes)";
   switch (o.subdivision_mode) {
     case dda::cdem::SubdivisionMode::kSubModel:
-      return "sub-model of the colliding elements (Paper B Sect. 5 as written)";
+      return o.submodel_transfer == dda::cdem::SubModelTransfer::kWholeElement
+                 ? "sub-model of the colliding elements (Paper B Sect. 5; step 5 returns every sub-node's force)"
+                 : "sub-model of the colliding elements (Paper B Sect. 5; step 5 read literally)";
     case dda::cdem::SubdivisionMode::kInPlace:
       return "in-place refinement (beyond the paper)";
   }

@@ -72,8 +72,8 @@ TEST_CASE(prisms::kTestSeparation, "[controls][B-6]") {
   CHECK_FALSE(prisms::separates_at_fig15a(prisms_run({}, g)));
 }
 
-// The default is the sub-model (Sect. 5 as written), whose row fails
-// (paper_method: the free sub-nodes' inertia returned in step 5); the
+// The default is the sub-model (Sect. 5), whose row fails (paper_method:
+// its clone is between the coarse nodes, with their Eq. 5 loss); the
 // in-place option's row beside it passes. The control: the in-place run
 // passes, the sub-model's verdict is its FAIL, the bad inputs fail.
 TEST_CASE(prisms::kTestLittleLoss, "[controls][B-6]") {
