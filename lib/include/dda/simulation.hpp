@@ -312,7 +312,7 @@ class Simulation {
   }
 
   // Hot state, one entry per block.
-  // Block geometry pooled by vertex count (issue 25 item 3; a Polygon value
+  // Block geometry pooled by vertex count (a Polygon value
   // has room for kMaxVertices = 32, a block mostly has 3-8): block i's
   // count vertices then its count normals, adjacent for the cache, from
   // geometry_[2 * geometry_offset_[i]]; count = geometry_offset_[i + 1] -

@@ -105,11 +105,20 @@ class Reader {
 
   template <typename E>
   E choice(const json& v, const std::string& path, std::initializer_list<std::pair<const char*, E>> options) const {
+    return choice(v, path, options.begin(), options.end());
+  }
+  template <typename E, std::size_t N>
+  E choice(const json& v, const std::string& path, const std::pair<const char*, E> (&options)[N]) const {
+    return choice(v, path, options, options + N);
+  }
+  template <typename E>
+  E choice(const json& v, const std::string& path, const std::pair<const char*, E>* first,
+           const std::pair<const char*, E>* last) const {
     const std::string s = string(v, path);
     std::string list;
-    for (const auto& [name, value] : options) {
-      if (s == name) return value;
-      list += std::string(list.empty() ? "" : ", ") + "\"" + name + "\"";
+    for (const auto* o = first; o != last; ++o) {
+      if (s == o->first) return o->second;
+      list += std::string(list.empty() ? "" : ", ") + "\"" + o->first + "\"";
     }
     fail(path, "unknown value \"" + s + "\"; expected one of " + list);
   }

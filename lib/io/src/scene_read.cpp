@@ -6,12 +6,14 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "dda/io/csv.hpp"
 #include "dda/io/scene_file.hpp"
 #include "dda/joint_sets.hpp"
 #include "dda/simulation.hpp"
 #include "json_reader.hpp"
+#include "scene_cdem.hpp"
 
 namespace dda::io {
 
@@ -87,7 +89,7 @@ int material_ref(const Reader& r, const json& x, const std::string& mp, const Na
 
 BlockSpec read_block(const Reader& r, const json& v, const std::string& path, const Names& names) {
   r.object(v, path,
-           {"name", "vertices", "rect", "rotate_deg", "about", "velocity", "spin", "fixed", "material", "group"});
+           {"name", "vertices", "rect", "rotate_deg", "about", "velocity", "spin", "fixed", "material", "group", "mesh"});
   BlockSpec b;
   const json* verts = Reader::find(v, "vertices");
   const json* rect = Reader::find(v, "rect");
@@ -423,6 +425,64 @@ void check_block_names(const Reader& r, const std::vector<BlockSpec>& blocks,
   }
 }
 
+// Keys of one model's that a scene of the other model has no use for: an
+// error naming the model, so that nothing is silently ignored.
+std::string only_penalty(const std::string& what) {
+  return "applies to the penalty model only (" + what + "); this scene's \"model\" is \"cdem\"";
+}
+
+void check_model_keys(const Reader& r, const json& root, bool penalty) {
+  if (penalty) {
+    if (Reader::find(root, "cdem"))
+      r.fail("cdem", "applies to the cdem model only; this scene's \"model\" is \"penalty\" (the default): set "
+                     "\"model\": \"cdem\" to use Paper B's two-scale contact");
+    return;
+  }
+  const std::pair<const char*, const char*> penalty_keys[] = {
+      {"contact", "the potential-based contact; Paper B's contact settings go in \"cdem\""},
+      {"boundaries", "boundary segments; give the ground as a fixed block"},
+      {"strains", "the 6-DOF block's strains; CDEM blocks are meshes of constant-strain triangles"},
+      {"broad_phase", "the pair search of the penalty contact"},
+      {"initial_overlap", "preloaded overlaps of the penalty contact"},
+      {"dt_fraction", "the penalty model's predicted critical step; give dt"},
+      {"guards", "the penalty model's stability guards"},
+      {"rotation_update", "the 6-DOF block's rotation"},
+      {"damping", "Eq. 5c damping of Paper A; Paper B's mass damping is cdem.mass_damping"},
+      {"threads", "the penalty solver's threads; the cdem model steps on one"},
+      {"checkpoint", "checkpoints hold the penalty model's state; the cdem model's state cannot be saved yet"},
+  };
+  for (const auto& [key, what] : penalty_keys)
+    if (Reader::find(root, key)) r.fail(key, only_penalty(what));
+}
+
+void check_block_keys(const Reader& r, const json& block, const std::string& path, bool penalty) {
+  if (penalty) {
+    if (Reader::find(block, "mesh"))
+      r.fail(join_path(path, "mesh"), "applies to the cdem model only (the element mesh of a block); this scene's "
+                                      "\"model\" is \"penalty\" (the default)");
+    return;
+  }
+  if (Reader::find(block, "spin")) r.fail(join_path(path, "spin"), only_penalty("a 6-DOF block's initial spin"));
+  if (Reader::find(block, "group")) r.fail(join_path(path, "group"), only_penalty("friction groups"));
+}
+
+// When dda run writes checkpoints.
+CheckpointSpec read_checkpoint_spec(const Reader& r, const json& v) {
+  r.object(v, "checkpoint", {"every", "every_wall"});
+  CheckpointSpec c;
+  for (const auto& [key, field, unit] :
+       {std::tuple<const char*, double*, const char*>{"every", &c.every, "s of simulated time"},
+        {"every_wall", &c.every_wall, "s of wall-clock time"}})
+    if (const json* x = Reader::find(v, key)) {
+      const std::string p = join_path("checkpoint", key);
+      *field = r.number(*x, p);
+      if (!(*field > 0.0)) r.fail(p, std::string("must be > 0 (") + unit + " between checkpoints; leave it out for none)");
+    }
+  if (!(c.every > 0.0 || c.every_wall > 0.0))
+    r.fail("checkpoint", "give \"every\" (s of simulated time) or \"every_wall\" (s of wall-clock time)");
+  return c;
+}
+
 }  // namespace
 
 void check_step_count(const SceneFile& file, double dt, const std::string& label) {
@@ -445,12 +505,16 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   const json root = detail::parse_json(json_text, r);
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
-           {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
-            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "max_steps", "guards", "rotation_update",
-            "damping", "output"});
+           {"name", "description", "model", "materials", "blocks", "generated", "boundaries", "contact", "cdem",
+            "gravity", "strains", "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "max_steps",
+            "guards", "rotation_update", "damping", "threads", "checkpoint", "output"});
 
   SceneFile f;
+  f.text_hash = content_hash(json_text.data(), json_text.size());
   Scene& s = f.scene;
+  f.model = detail::read_model(r, Reader::find(root, "model"));
+  const bool penalty = f.model == ContactModel::kPenalty;
+  check_model_keys(r, root, penalty);
   if (const json* x = Reader::find(root, "name")) s.name = r.string(*x, "name");
   if (const json* x = Reader::find(root, "description")) r.string(*x, "description");
 
@@ -467,8 +531,15 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
                "duplicate material name \"" + name + "\" (also materials[" + std::to_string(k) + "].name)");
   }
   const json& blocks = r.array(r.need(root, "", "blocks"), "blocks", " of blocks");
-  for (std::size_t i = 0; i < blocks.size(); ++i)
-    s.blocks.push_back(read_block(r, blocks[i], index_path("blocks", i), names));
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const std::string bp = index_path("blocks", i);
+    s.blocks.push_back(read_block(r, blocks[i], bp, names));
+    check_block_keys(r, blocks[i], bp, penalty);
+    if (const json* m = Reader::find(blocks[i], "mesh")) {
+      f.cdem.meshes.resize(s.blocks.size());
+      f.cdem.meshes.back() = detail::read_block_mesh(r, *m, join_path(bp, "mesh"), s.blocks.back());
+    }
+  }
   std::vector<std::string> generated_paths;
   if (const json* x = Reader::find(root, "generated")) {
     // One generator object, or an array of them.
@@ -478,9 +549,12 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
       r.array(*x, "generated", " of generated regions (or one object)");
       for (std::size_t i = 0; i < x->size(); ++i) generated_paths.push_back(index_path("generated", i));
     }
-    for (std::size_t i = 0; i < generated_paths.size(); ++i)
-      f.generated.push_back(
-          read_generated(r, x->is_object() ? *x : (*x)[i], generated_paths[i], names, s.blocks));
+    for (std::size_t i = 0; i < generated_paths.size(); ++i) {
+      const json& g = x->is_object() ? *x : (*x)[i];
+      if (!penalty && g.is_object() && Reader::find(g, "group"))
+        r.fail(join_path(generated_paths[i], "group"), only_penalty("friction groups"));
+      f.generated.push_back(read_generated(r, g, generated_paths[i], names, s.blocks));
+    }
   }
   if (s.blocks.size() > kMaxBlocks)
     r.fail(f.generated.empty() ? "blocks" : "generated",
@@ -492,7 +566,14 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
     for (std::size_t i = 0; i < x->size(); ++i)
       s.boundaries.push_back(read_boundary(r, (*x)[i], index_path("boundaries", i)));
   }
-  s.contact = read_contact(r, r.need(root, "", "contact"), "contact");
+  if (penalty) s.contact = read_contact(r, r.need(root, "", "contact"), "contact");
+  {
+    // Blocks without a "mesh" (and generated ones) take cdem.divisions.
+    CdemSettings cdem = detail::read_cdem(r, Reader::find(root, "cdem"));
+    cdem.meshes = std::move(f.cdem.meshes);
+    cdem.meshes.resize(s.blocks.size());
+    f.cdem = std::move(cdem);
+  }
   if (const json* x = Reader::find(root, "gravity")) s.gravity = r.vec2(*x, "gravity");
   if (const json* x = Reader::find(root, "strains")) s.strains = r.boolean(*x, "strains");
   if (const json* x = Reader::find(root, "broad_phase"))
@@ -525,6 +606,12 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
     s.rotation_update = r.choice<RotationUpdate>(
         *x, "rotation_update", {{"paper_linear", RotationUpdate::kPaperLinear}, {"exact", RotationUpdate::kExact}});
   if (const json* x = Reader::find(root, "damping")) s.damping = read_damping(r, *x, "damping");
+  if (const json* x = Reader::find(root, "threads")) {
+    f.threads = r.integer(*x, "threads");
+    if (f.threads < 1 || f.threads > kMaxThreads)
+      r.fail("threads", "must lie in [1, " + std::to_string(kMaxThreads) + "] (the solver's threads; 1 by default)");
+  }
+  if (const json* x = Reader::find(root, "checkpoint")) f.checkpoint = read_checkpoint_spec(r, *x);
 
   // The kernel's semantic checks (polygons, ranges, overlaps at t = 0).
   try {
@@ -548,6 +635,7 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
       r.fail("contact.friction_update", "has no effect with contact.kt = 0 (kt > 0 switches friction on)");
   }
   f.output = read_output(r, Reader::find(root, "output"), s);
+  if (!penalty) detail::check_cdem(r, f);  // meshes, options, dt against the mesh's critical step
   return f;
 }
 
