@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ constexpr int kInterrupted = 130;
 const char* const kUsage =
     "Usage:\n"
     "  dda run SCENE.json --out DIR [--threads N] [--checkpoint-every T]\n"
-    "          [--checkpoint-wall S] [--quiet] [--max-steps N]\n"
+    "          [--checkpoint-wall S] [--vtk] [--vtk-every N] [--block-table]\n"
+    "          [--quiet] [--max-steps N]\n"
     "      Simulate the scene to its duration with the contact model it selects\n"
     "      (\"model\": \"penalty\", Paper A, the default; or \"cdem\", Paper B) and\n"
     "      write DIR/timeseries.csv, DIR/snapshots.csv and DIR/run.json (each via\n"
@@ -42,6 +44,21 @@ const char* const kUsage =
     "      --checkpoint-every T  write DIR/checkpoint.dda every T s of simulated time\n"
     "      --checkpoint-wall S   ... and/or every S s of wall-clock time (both\n"
     "                            override the scene's \"checkpoint\"; penalty model)\n"
+    "      --vtk                 also a ParaView series: DIR/vtk/blocks.pvd (penalty\n"
+    "                            model: blocks as polygons with velocity, spin,\n"
+    "                            stress, ...) or DIR/vtk/elements.pvd (cdem model:\n"
+    "                            elements with their nodes), and DIR/vtk/contacts.pvd\n"
+    "                            (contacts as points: forces, penetration); one .vtu\n"
+    "                            file per frame, a frame at each snapshot time (the\n"
+    "                            scene's \"output.vtk\": true)\n"
+    "      --vtk-every N         a frame every N steps instead (implies --vtk;\n"
+    "                            \"output.vtk_every\")\n"
+    "      --block-table         also DIR/blocks.csv, one row per block (time, step,\n"
+    "                            block, x, y, vx, vy, rot, spin, stress) at each\n"
+    "                            time-series row (\"output.block_table\": true;\n"
+    "                            penalty model). The output flags add to the\n"
+    "                            scene's output section, --vtk-every overrides its\n"
+    "                            vtk_every.\n"
     "      On SIGINT or SIGTERM the run finishes its current step, writes a\n"
     "      checkpoint (penalty model) and the output so far, and exits 130.\n"
     "  dda run --resume DIR [SCENE.json] [--threads N] [--checkpoint-every T]\n"
@@ -52,6 +69,8 @@ const char* const kUsage =
     "      path the checkpoint recorded); it must be the same text. A checkpoint\n"
     "      of another scene or format version, a truncated or corrupted one, or\n"
     "      outputs changed since it was written are refused, nothing written.\n"
+    "      The run keeps the outputs it started with (no --vtk, --vtk-every,\n"
+    "      --block-table here).\n"
     "  dda check SCENE.json [SCENE.json ...] [--max-steps N]\n"
     "      Validate scene files only (as dda run would); one line per file.\n"
     "  dda --help\n"
@@ -62,8 +81,9 @@ const char* const kUsage =
     "  3    the simulation failed (dda::SimulationError or a non-finite value);\n"
     "       the output up to the failure is written, run.json says why\n"
     "  4    the output could not be written\n"
-    "  130  interrupted (SIGINT/SIGTERM): the output so far and a checkpoint are\n"
-    "       written, run.json says \"interrupted\"\n"
+    "  130  interrupted (SIGINT/SIGTERM): the output so far (with the ParaView\n"
+    "       frames taken and their .pvd) and a checkpoint are written, run.json\n"
+    "       says \"interrupted\"\n"
     "\n"
     "Scene file schema and output columns: lib/io/SCHEMA.md\n";
 
@@ -196,6 +216,8 @@ struct RunArgs {
   dda::io::ReadOptions read;
   int threads = 0;
   dda::io::CheckpointSpec checkpoint;
+  bool vtk = false, block_table = false;
+  int vtk_every = 0;
 };
 
 // Parses the arguments of `dda run`; "" or the usage error's message.
@@ -225,6 +247,17 @@ std::string parse_run_args(const std::vector<std::string>& args, RunArgs& a) {
       a.checkpoint.every_wall = positive_number(v);
       if (!(a.checkpoint.every_wall > 0.0))
         return "--checkpoint-wall needs a positive number of seconds of wall-clock time, got '" + v + "'";
+    } else if ((used = option_value(args, i, "--vtk-every", v))) {
+      const long long n = positive_integer(v);
+      if (n <= 0 || n > std::numeric_limits<int>::max())
+        return "--vtk-every needs a positive integer (steps between ParaView frames), got '" + v + "'";
+      a.vtk_every = static_cast<int>(n);
+    } else if (arg == "--vtk") {
+      used = 1;
+      a.vtk = true;
+    } else if (arg == "--block-table") {
+      used = 1;
+      a.block_table = true;
     } else if (arg == "--quiet" || arg == "-q") {
       used = 1;
       a.quiet = true;
@@ -241,6 +274,8 @@ std::string parse_run_args(const std::vector<std::string>& args, RunArgs& a) {
   if (!a.resume_dir.empty()) {
     if (!a.out_dir.empty() && a.out_dir != a.resume_dir)
       return "--resume DIR continues the run in DIR: give no other --out";
+    if (a.vtk || a.vtk_every > 0 || a.block_table)
+      return "--resume: the run keeps the outputs it started with (no --vtk, --vtk-every or --block-table)";
     a.out_dir = a.resume_dir;
     return "";
   }
@@ -275,6 +310,12 @@ int cmd_run(const std::vector<std::string>& args) {
                 << " (give its file: dda run SCENE.json --resume " << a.resume_dir << ")\n";
     return kBadInput;
   }
+  file.output.vtk = file.output.vtk || a.vtk || a.vtk_every > 0;
+  if (a.vtk_every > 0) file.output.vtk_every = a.vtk_every;
+  file.output.block_table = file.output.block_table || a.block_table;
+  if (file.model == dda::io::ContactModel::kCdem && a.block_table)
+    return usage_error("run: --block-table: the per-block table of 6-DOF blocks is the penalty model's (" +
+                       a.scene_path + " is a cdem scene)");
   if (file.model == dda::io::ContactModel::kCdem && a.threads > 1)
     return usage_error("run: --threads: the cdem model (" + a.scene_path + ") steps on one thread");
   if (file.model == dda::io::ContactModel::kCdem && (a.checkpoint.every > 0.0 || a.checkpoint.every_wall > 0.0))
@@ -298,11 +339,17 @@ int cmd_run(const std::vector<std::string>& args) {
       std::cerr << "dda: resumed " << a.scene_path << " from step " << r.resumed_from_step << "\n";
     switch (r.status) {
       case dda::io::RunStatus::kCompleted:
-        if (!a.quiet)
+        if (!a.quiet) {
           std::cerr << "dda: done: " << r.steps << " steps to t = " << r.time << " s in " << r.wall_seconds
                     << " s on " << r.threads << (r.threads == 1 ? " thread" : " threads") << "; wrote " << out_dir
                     << "/timeseries.csv (" << r.timeseries_rows << " rows), " << out_dir << "/snapshots.csv ("
-                    << r.snapshot_rows << " rows), " << out_dir << "/run.json\n";
+                    << r.snapshot_rows << " rows), ";
+          if (file.output.block_table) std::cerr << out_dir << "/blocks.csv (" << r.block_table_rows << " rows), ";
+          if (file.output.vtk)
+            std::cerr << out_dir << "/vtk/" << (file.model == dda::io::ContactModel::kCdem ? "elements" : "blocks")
+                      << ".pvd and contacts.pvd (" << r.vtk_frames << " frames each), ";
+          std::cerr << out_dir << "/run.json\n";
+        }
         return kOk;
       case dda::io::RunStatus::kSimulationError:
         std::cerr << a.scene_path << ": simulation failed: " << r.message << "\n"
@@ -311,6 +358,7 @@ int cmd_run(const std::vector<std::string>& args) {
         return kSimulationFailed;
       case dda::io::RunStatus::kInterrupted:
         std::cerr << "dda: " << r.message << "; wrote the output so far to " << out_dir;
+        if (r.vtk_frames > 0) std::cerr << " (with " << r.vtk_frames << " ParaView frames in " << out_dir << "/vtk)";
         if (!r.checkpoint_path.empty())
           std::cerr << " and the checkpoint " << r.checkpoint_path << "; continue with: dda run --resume " << out_dir
                     << "\n";

@@ -108,6 +108,8 @@ std::string run_json(const SceneFile& file, const std::string& label, const RunR
   j["steps_per_second"] = res.wall_seconds > 0.0 ? static_cast<double>(res.steps) / res.wall_seconds : 0.0;
   j["timeseries_rows"] = res.timeseries_rows;
   j["snapshot_rows"] = res.snapshot_rows;
+  j["block_table_rows"] = res.block_table_rows;
+  j["vtk_frames"] = res.vtk_frames;
   j["tracked_blocks"] = tracked_blocks(file);
   j["blocks"] = blocks;
   if (res.status == RunStatus::kInterrupted) j["checkpoint"] = res.checkpoint_path;
@@ -135,6 +137,12 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
     throw SceneFileError(opt.scene_label + ": threads: the cdem model steps on one thread");
   const int threads = opt.threads > 0 ? opt.threads : file.threads > 0 ? file.threads : 1;
   const std::string ckpt_path = (out / kCheckpointFileName).string();
+  // The output section with the command line's additions (the flags of
+  // dda run; a resumed run takes those it started with).
+  OutputSpec output = file.output;
+  if (!penalty && output.block_table)
+    throw SceneFileError(opt.scene_label + ": output.block_table: the per-block table of 6-DOF blocks (rotation, "
+                                           "spin, stress) is the penalty model's");
 
   // The model first: the step count is known once its dt is (with
   // dt_fraction > 0); a run that would be too long writes nothing. The block
@@ -172,9 +180,12 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
       const double every = run_state.f64(), every_wall = run_state.f64();
       schedule.next_index = run_state.i64();
       label = run_state.text();
+      output.vtk = run_state.boolean();
+      output.vtk_every = run_state.i32();
+      output.block_table = run_state.boolean();
       if (!(opt.checkpoint.every > 0.0)) schedule.spec.every = every;
       if (!(opt.checkpoint.every_wall > 0.0)) schedule.spec.every_wall = every_wall;
-      RunOutputs::verify(out.string(), run_state);
+      RunOutputs::verify(out.string(), output, m, run_state);
     } catch (const StateError& e) {
       throw CheckpointError(std::string(e.what()) + "; nothing resumed");
     }
@@ -184,8 +195,8 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   fs::create_directories(out, ec);
   if (ec) throw OutputError("cannot create directory " + out.string() + ": " + ec.message());
   std::optional<RunOutputs> open_outputs;
-  if (opt.resume) open_outputs.emplace(file, model, out.string(), run_state);
-  else open_outputs.emplace(file, model, out.string());
+  if (opt.resume) open_outputs.emplace(file, output, m, out.string(), run_state);
+  else open_outputs.emplace(file, output, m, out.string());
   RunOutputs& outputs = *open_outputs;
 
   RunResult res;
@@ -204,6 +215,9 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
     run.f64(schedule.spec.every_wall);
     run.i64(schedule.next_index);
     run.text(label);
+    run.boolean(output.vtk);
+    run.i32(output.vtk_every);
+    run.boolean(output.block_table);
     outputs.save(run);  // flushed to the disk before the checkpoint names them
     ByteWriter sim;
     m.penalty->simulation().save_state(sim);
@@ -224,7 +238,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   const std::int64_t first_step = model.step_count();
   std::int64_t group = 1;
   try {
-    if (!opt.resume) outputs.write_due(model, true, false);
+    if (!opt.resume) outputs.write_due(true, false);
     while (!finished()) {
       if (opt.interrupt && *opt.interrupt) {
         res.status = RunStatus::kInterrupted;
@@ -245,7 +259,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
       group = took > 0.0 ? std::clamp<std::int64_t>(static_cast<std::int64_t>(kGroupSeconds * static_cast<double>(count) / took), 1, kMaxGroup)
                          : kMaxGroup;
       const bool last = finished();
-      outputs.write_due(model, false, last);
+      outputs.write_due(false, last);
       if (penalty && !last) {
         bool due = false;
         if (schedule.spec.every > 0.0)
@@ -285,6 +299,8 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   res.timeseries_rows = outputs.timeseries_rows();
   res.snapshot_rows = outputs.snapshot_rows();
   res.last_row_time = outputs.last_row_time();
+  res.block_table_rows = outputs.block_table_rows();
+  res.vtk_frames = outputs.vtk_frames();
   if (res.status == RunStatus::kInterrupted) {
     res.message = "interrupted at step " + std::to_string(res.steps) + " (t = " + format_number(res.time) + " s)";
     if (penalty) write_checkpoint_now();

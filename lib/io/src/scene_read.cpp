@@ -311,7 +311,7 @@ OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
     out.snapshot_times = default_snapshots;
     return out;
   }
-  r.object(*v, path, {"every", "snapshots", "tracked_blocks"});
+  r.object(*v, path, {"every", "snapshots", "tracked_blocks", "vtk", "vtk_every", "block_table"});
   if (const json* x = Reader::find(*v, "every")) {
     out.every = r.integer(*x, "output.every");
     if (out.every < 1) r.fail("output.every", "must be >= 1 (steps between time-series rows)");
@@ -356,6 +356,13 @@ OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
       out.tracked_blocks.push_back(id);
     }
   }
+  if (const json* x = Reader::find(*v, "vtk")) out.vtk = r.boolean(*x, "output.vtk");
+  if (const json* x = Reader::find(*v, "vtk_every")) {
+    out.vtk_every = r.integer(*x, "output.vtk_every");
+    if (out.vtk_every < 1) r.fail("output.vtk_every", "must be >= 1 (steps between ParaView frames)");
+    if (!out.vtk) r.fail("output.vtk_every", "needs \"vtk\": true (it would be ignored)");
+  }
+  if (const json* x = Reader::find(*v, "block_table")) out.block_table = r.boolean(*x, "output.block_table");
   return out;
 }
 
@@ -635,6 +642,8 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
       r.fail("contact.friction_update", "has no effect with contact.kt = 0 (kt > 0 switches friction on)");
   }
   f.output = read_output(r, Reader::find(root, "output"), s);
+  if (!penalty && f.output.block_table)
+    r.fail("output.block_table", only_penalty("the per-block table of 6-DOF blocks: rotation, spin, stress"));
   if (!penalty) detail::check_cdem(r, f);  // meshes, options, dt against the mesh's critical step
   return f;
 }

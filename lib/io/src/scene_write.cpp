@@ -168,7 +168,10 @@ std::string write_scene(const SceneFile& file) {
   }
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
-                    {"tracked_blocks", file.output.tracked_blocks}};
+                    {"tracked_blocks", file.output.tracked_blocks},
+                    {"vtk", file.output.vtk}};
+  if (penalty) root["output"]["block_table"] = file.output.block_table;
+  if (file.output.vtk_every > 0) root["output"]["vtk_every"] = file.output.vtk_every;
   return root.dump(2) + "\n";
 }
 

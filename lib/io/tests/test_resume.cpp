@@ -76,6 +76,10 @@ void check_same_outputs(const std::string& a, const std::string& b) {
   }
 }
 
+// Every output a run can write: the long per-block table and a ParaView
+// series besides the time series and the snapshots.
+const std::vector<std::string> kAllOutputs = {"--block-table", "--vtk-every", "400"};
+
 // The uninterrupted run of the column, once for every test here.
 const std::string& reference_run(double* seconds = nullptr) {
   static std::string dir;
@@ -83,7 +87,9 @@ const std::string& reference_run(double* seconds = nullptr) {
   if (dir.empty()) {
     const std::string d = scratch("resume_reference");
     const std::string scene = column_scene();
-    REQUIRE(run_cli({"run", scene, "--out", d, "--quiet"}, d + ".log") == 0);
+    std::vector<std::string> args = {"run", scene, "--out", d, "--quiet"};
+    args.insert(args.end(), kAllOutputs.begin(), kAllOutputs.end());
+    REQUIRE(run_cli(args, d + ".log") == 0);
     wall = json::parse(slurp(d + "/run.json"))["wall_seconds"].get<double>();
     dir = d;
   }
@@ -105,6 +111,7 @@ int stopped_run(const std::string& dir, const std::string& scene, int signal, st
   std::uniform_real_distribution<double> when(0.15, 0.85);
   double delay = when(rng()) * wall;
   std::vector<std::string> args = {"run", scene, "--out", dir, "--quiet"};
+  args.insert(args.end(), kAllOutputs.begin(), kAllOutputs.end());
   args.insert(args.end(), extra.begin(), extra.end());
   for (int attempt = 0; attempt < 6; ++attempt, delay *= 0.5) {
     fs::remove_all(dir);
@@ -136,6 +143,8 @@ TEST_CASE("a run interrupted by SIGINT at a random step and resumed ends byte-id
   CHECK(at < json_steps(ref));
   CHECK(fs::exists(dir + "/checkpoint.dda"));
   CHECK(fs::exists(dir + "/timeseries.csv"));  // the output so far
+  CHECK(fs::exists(dir + "/blocks.csv"));
+  CHECK(fs::exists(dir + "/vtk/blocks.pvd"));
   CHECK_FALSE(fs::exists(dir + "/timeseries.csv.tmp"));
   // Resumed on two threads (the same bits on any count).
   REQUIRE(run_cli({"run", "--resume", dir, "--quiet", "--threads", "2"}, dir + "_resume.log") == 0);
@@ -145,23 +154,28 @@ TEST_CASE("a run interrupted by SIGINT at a random step and resumed ends byte-id
 
 TEST_CASE("a run killed outright after a periodic checkpoint resumes from it, byte-identical", "[io][resume]") {
   const std::string& ref = reference_run();
-  const std::string dir = scratch("resume_sigkill");
   const std::string scene = column_scene();
-  // SIGKILL: no handler, nothing flushed or committed; the .tmp outputs and
-  // the last periodic checkpoint are what is left.
-  int rc = 0;
-  for (int attempt = 0; attempt < 4 && !fs::exists(dir + "/checkpoint.dda"); ++attempt)
-    rc = stopped_run(dir, scene, SIGKILL, {"--checkpoint-every", "0.05"});
-  REQUIRE(rc == 128 + SIGKILL);
-  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
-  CHECK_FALSE(fs::exists(dir + "/run.json"));
-  CHECK(fs::exists(dir + "/timeseries.csv.tmp"));
-  // Interrupted once more on the way, then to the end.
-  const std::string log = dir + "_resume.log";
-  const int again = run_cli_signalled({"run", "--resume", dir, "--quiet"}, log, 0.3, SIGTERM);
-  CHECK((again == 130 || again == 0));
-  if (again == 130) REQUIRE(run_cli({"run", "--resume", dir, "--quiet"}, log) == 0);
-  check_same_outputs(ref, dir);
+  // Checkpoints on the simulated clock, or on the wall clock.
+  for (const std::vector<std::string>& every :
+       {std::vector<std::string>{"--checkpoint-every", "0.05"}, std::vector<std::string>{"--checkpoint-wall", "0.1"}}) {
+    const std::string dir = scratch("resume_sigkill_" + every[0].substr(2));
+    INFO(every[0]);
+    // SIGKILL: no handler, nothing flushed or committed; the .tmp outputs
+    // and the last periodic checkpoint are what is left.
+    int rc = 0;
+    for (int attempt = 0; attempt < 4 && !fs::exists(dir + "/checkpoint.dda"); ++attempt)
+      rc = stopped_run(dir, scene, SIGKILL, every);
+    REQUIRE(rc == 128 + SIGKILL);
+    REQUIRE(fs::exists(dir + "/checkpoint.dda"));
+    CHECK_FALSE(fs::exists(dir + "/run.json"));
+    CHECK(fs::exists(dir + "/timeseries.csv.tmp"));
+    // Interrupted once more on the way, then to the end.
+    const std::string log = dir + "_resume.log";
+    const int again = run_cli_signalled({"run", "--resume", dir, "--quiet"}, log, 0.3, SIGTERM);
+    CHECK((again == 130 || again == 0));
+    if (again == 130) REQUIRE(run_cli({"run", "--resume", dir, "--quiet"}, log) == 0);
+    check_same_outputs(ref, dir);
+  }
 }
 
 TEST_CASE("a checkpoint that does not fit is refused with the reason, nothing overwritten", "[io][resume]") {

@@ -2,15 +2,20 @@
 // the run's output:
 //   <out>/timeseries.csv  one row at t = 0, every `output.every` steps, and at the end
 //   <out>/snapshots.csv   the vertices of every outline at each snapshot time
+//   <out>/blocks.csv      (output.block_table) one row per block at each time-series row
+//   <out>/vtk/            (output.vtk) ParaView series: penalty model blocks.pvd,
+//                         cdem model elements.pvd; both contacts.pvd
 //   <out>/run.json        status, counts, wall time, block names and masses
 //   <out>/checkpoint.dda  while a run can be resumed (penalty model; checkpoint.hpp)
-// Columns are documented in lib/io/SCHEMA.md. The CSV files are written
-// through "<file>.tmp" and renamed into place when the run ends: completed,
-// stopped by dda::SimulationError (or a non-finite output value: the rows
-// written up to that point, run.json says "simulation_error"), or
-// interrupted (the rows so far, a checkpoint, run.json says "interrupted").
-// A run resumed from its checkpoint ends with the same files, byte for
-// byte, as one never stopped (run.json's wall-clock fields aside).
+// Columns are documented in lib/io/SCHEMA.md. Every file is written through
+// "<file>.tmp" and renamed into place: the CSV files and run.json when the
+// run ends, completed, stopped by dda::SimulationError (or a non-finite
+// output value: the rows written up to that point, run.json says
+// "simulation_error"), or interrupted (the rows so far, a checkpoint,
+// run.json says "interrupted"); each ParaView frame as it is taken, the
+// .pvd collections when the run ends. A run resumed from its checkpoint ends
+// with the same files, byte for byte, as one never stopped (run.json's
+// wall-clock fields aside).
 #pragma once
 #include <csignal>
 #include <cstdint>
@@ -51,6 +56,8 @@ struct RunResult {
   double last_row_time = 0.0; // time of the last time-series row written, s
   double wall_seconds = 0.0;  // of this run and the runs it resumed
   std::size_t timeseries_rows = 0, snapshot_rows = 0;
+  std::size_t block_table_rows = 0;  // DIR/blocks.csv (output.block_table)
+  std::size_t vtk_frames = 0;        // frames of each ParaView series (output.vtk)
   int threads = 1;
   std::int64_t checkpoints = 0;       // written by this run
   std::string checkpoint_path;        // the last one written ("" if none)
