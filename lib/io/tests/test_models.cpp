@@ -248,7 +248,7 @@ TEST_CASE("dda run on Paper B's two prisms reproduces the B-6 driver's run bit f
   REQUIRE(run_cli({"check", file}, dir + "_check.log") == 0);
   INFO(slurp(dir + "_check.log"));
   CHECK(slurp(dir + "_check.log").find("model cdem (8 elements") != std::string::npos);
-  REQUIRE(run_cli({"run", file, "--out", dir, "--quiet"}, dir + ".log") == 0);
+  REQUIRE(run_cli({"run", file, "--out", dir, "--quiet", "--vtk"}, dir + ".log") == 0);
   std::vector<std::string> h;
   const std::vector<std::vector<double>> rows = read_numbers(dir + "/timeseries.csv", h);
   const std::size_t c_step = column(h, "step"), c_time = column(h, "time");
@@ -297,6 +297,11 @@ TEST_CASE("dda run on Paper B's two prisms reproduces the B-6 driver's run bit f
   CHECK(at_end == 6);  // two triangles
   const json run = json::parse(slurp(dir + "/run.json"));
   CHECK(run["model"] == "cdem");
+  // The ParaView series of the cdem model: its elements and clone nodes, a frame per snapshot.
+  CHECK(run["vtk_frames"] == 7);
+  CHECK(fs::exists(dir + "/vtk/elements.pvd"));
+  CHECK(fs::exists(dir + "/vtk/elements_000006.vtu"));
+  CHECK(fs::exists(dir + "/vtk/contacts.pvd"));
   CHECK(run["status"] == "completed");
 }
 
