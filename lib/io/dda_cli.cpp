@@ -335,8 +335,6 @@ int cmd_run(const std::vector<std::string>& args) {
   const std::string& out_dir = a.out_dir;
   try {
     const dda::io::RunResult r = dda::io::run_scene(file, opt);
-    if (!a.quiet && r.resumed_from_step >= 0)
-      std::cerr << "dda: resumed " << a.scene_path << " from step " << r.resumed_from_step << "\n";
     switch (r.status) {
       case dda::io::RunStatus::kCompleted:
         if (!a.quiet) {
@@ -344,8 +342,9 @@ int cmd_run(const std::vector<std::string>& args) {
                     << " s on " << r.threads << (r.threads == 1 ? " thread" : " threads") << "; wrote " << out_dir
                     << "/timeseries.csv (" << r.timeseries_rows << " rows), " << out_dir << "/snapshots.csv ("
                     << r.snapshot_rows << " rows), ";
-          if (file.output.block_table) std::cerr << out_dir << "/blocks.csv (" << r.block_table_rows << " rows), ";
-          if (file.output.vtk)
+          // (counts, not the flags: a resumed run keeps the outputs it started with)
+          if (r.block_table_rows > 0) std::cerr << out_dir << "/blocks.csv (" << r.block_table_rows << " rows), ";
+          if (r.vtk_frames > 0)
             std::cerr << out_dir << "/vtk/" << (file.model == dda::io::ContactModel::kCdem ? "elements" : "blocks")
                       << ".pvd and contacts.pvd (" << r.vtk_frames << " frames each), ";
           std::cerr << out_dir << "/run.json\n";

@@ -202,6 +202,10 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   RunResult res;
   res.threads = threads;
   res.resumed_from_step = opt.resume ? model.step_count() : -1;
+  if (opt.resume && opt.progress)
+    *opt.progress << "dda: resuming " << label << " from step " << model.step_count() << " (t = "
+                  << format_number(model.time()) << " s) on " << threads << (threads == 1 ? " thread" : " threads")
+                  << std::endl;
   const Clock::time_point start = Clock::now();
   Clock::time_point last_print = start, last_checkpoint = start;
   const std::string scene_path =
