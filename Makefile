@@ -19,7 +19,8 @@ PREFIX     ?= /usr/local
 
 # Debian packages the project needs (tool chain first, then libraries, then Python).
 DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
-            libbenchmark-dev libbox2d-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil
+            libbenchmark-dev libbox2d-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil \
+            python3-vtk9
 
 BIN := $(BUILD)/bin
 

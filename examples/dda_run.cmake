@@ -1,6 +1,6 @@
 # The test example_dda_run: `dda run SCENE --out OUT`, then
-# `python3 plot_run.py OUT OUT/run.png`; fails if either fails or the
-# files the README names are missing.
+# `python3 figures/plot_run.py OUT` (it writes OUT/run.png); fails if either
+# fails or the files the README names are missing.
 #   cmake -DDDA=... -DSCENE=... -DOUT=... -DPYTHON=... -DPLOT=... -P dda_run.cmake
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${DDA} run ${SCENE} --out ${OUT} RESULT_VARIABLE rc)
@@ -15,7 +15,7 @@ endforeach()
 if(NOT PYTHON)
   message(FATAL_ERROR "python3 not found: cannot run ${PLOT}")
 endif()
-execute_process(COMMAND ${PYTHON} ${PLOT} ${OUT} ${OUT}/run.png RESULT_VARIABLE rc)
+execute_process(COMMAND ${PYTHON} ${PLOT} ${OUT} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/run.png)
-  message(FATAL_ERROR "${PLOT} ${OUT} ${OUT}/run.png: exit status ${rc}")
+  message(FATAL_ERROR "${PLOT} ${OUT}: exit status ${rc}, or no ${OUT}/run.png")
 endif()
