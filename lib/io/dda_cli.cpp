@@ -74,6 +74,8 @@ const char* const kUsage =
     "  dda check SCENE.json [SCENE.json ...] [--max-steps N]\n"
     "      Validate scene files only (as dda run would); one line per file.\n"
     "  dda --help\n"
+    "  dda --version\n"
+    "      The version and the git commit the program was built from.\n"
     "\n"
     "Exit codes:\n"
     "  0    success\n"
@@ -383,10 +385,18 @@ int cmd_run(const std::vector<std::string>& args) {
 
 }  // namespace
 
+// Written at build time by cmake/dda_version.cmake.
+extern const char* const kDdaVersion;
+extern const char* const kDdaCommit;
+
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) return usage_error("no command given");
   const std::string& cmd = args[0];
+  if (cmd == "--version" || cmd == "version") {
+    std::cout << "dda " << kDdaVersion << " (commit " << kDdaCommit << ")\n";
+    return kOk;
+  }
   bool help = false;
   for (const std::string& a : args) help = help || a == "--help" || a == "-h";
   if (help || cmd == "help") {
