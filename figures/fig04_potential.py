@@ -12,6 +12,6 @@ if len(sys.argv) != 3:
     raise SystemExit(__doc__)
 data, out = sys.argv[1], sys.argv[2]
 draw_potential(os.path.join(data, "fig04b_grid.csv"), os.path.join(data, "fig04b_outline.csv"),
-               "Paper A Fig. 4b: shortest-exit potential, polygon with small edges\n"
-               "(reconstructed geometry; kn = 1 Pa, H = 1 m)",
+               "Paper A Fig. 4b: shortest-exit potential (Eqs. 12-14), polygon with small edges\n"
+               "(geometry reconstructed, figure lost; kn = 1 Pa, H = 1 m as in Sect. 3.2.2)",
                out, highlight_below=0.1)

@@ -12,6 +12,6 @@ if len(sys.argv) != 3:
     raise SystemExit(__doc__)
 data, out = sys.argv[1], sys.argv[2]
 draw_potential(os.path.join(data, "fig05_grid.csv"), os.path.join(data, "fig05_outline.csv"),
-               "Paper A Fig. 5: shortest-exit potential of a concave polygon\n"
-               "(reconstructed geometry; distance to the boundary; kn = 1 Pa, H = 1 m)",
+               "Paper A Fig. 5: shortest-exit potential (Eq. 12: distance to the boundary), concave polygon\n"
+               "(geometry reconstructed, figure lost; kn = 1 Pa, H = 1 m as in Sect. 3.2.2)",
                out)

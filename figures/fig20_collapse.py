@@ -16,6 +16,11 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blocks_common import Frames, draw_blocks, draw_boundaries, np, plt, read_boundaries, read_csv, save_atomic  # noqa: E402
 import matplotlib.colors  # noqa: E402
+import paper_common as paper  # noqa: E402
+from paper_common import paper_style  # noqa: E402
+
+# Paper A Sect. 6.1's statement on the two cases, drawn as text beside ours.
+PAPER_SAYS = "paper (Sect. 6.1): 'a faster collapsing process and a larger runout mass ... with lower friction angle'"
 
 args = sys.argv[1:]
 runout = bool(args) and args[0] == "--runout"
@@ -33,9 +38,9 @@ def runout_figure():
     renumbered = read_csv(renumbered_path)[1] if os.path.exists(renumbered_path) else None
     for k, (c, label) in enumerate(cases, start=1):
         _, s = read_csv(os.path.join(data, c, "series.csv"))
-        line, = a1.plot(s["time"], s["front_x"], label=label)
-        a2.plot(s["time"], s["mean_drop"], label=label)
-        a3.plot(s["time"], 100.0 * s["runout_mass"], label=label)
+        line, = a1.plot(s["time"], s["front_x"], label="ours, " + label)
+        a2.plot(s["time"], s["mean_drop"], label="ours, " + label)
+        a3.plot(s["time"], 100.0 * s["runout_mass"], label="ours, " + label)
         if renumbered is not None:
             # The same case rerun with its blocks numbered by centroid x and
             # by centroid y: where a round-off-level change ends the run.
@@ -46,18 +51,19 @@ def runout_figure():
                     label="end, blocks renumbered (x, y) and as generated" if first else None)
             a2.plot(t_end, renumbered["mean_drop_end"][mine], "x", color=line.get_color(), ms=7)
             a3.plot(t_end, 100.0 * renumbered["runout_mass_end"][mine], "x", color=line.get_color(), ms=7)
-    for t in (2.5, 5.0, 7.5):
+    for k, t in enumerate(paper.A_61_TIMES):
         for a in (a1, a2, a3):
-            a.axvline(t, color="0.8", lw=0.8, ls=":")
+            a.axvline(t, **paper_style(lw=0.8, label="paper's snapshot times (Fig. 20)" if k == 0 else None))
     a1.set_ylabel("front: largest block x (m)")
     a2.set_ylabel("mass-weighted mean centroid drop (m)")
     a3.set_ylabel("runout mass: centroid beyond x = 20 m (%)")
     for a in (a1, a2, a3):
         a.set_xlabel("time (s)")
         a.grid(alpha=0.3)
-    a1.legend(loc="upper left", fontsize=8)
-    fig.suptitle("Sect. 6.1 collapse (reconstructed geometry): front, mean drop and runout mass", fontsize=10)
-    fig.tight_layout()
+    a1.legend(loc="upper left", fontsize=7.5)
+    fig.suptitle("Paper A Sect. 6.1: collapse of a jointed rock column, front, mean drop and runout mass of the two "
+                 "cases against time (geometry reconstructed, Fig. 19 lost)\n" + PAPER_SAYS, fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.92))
     save_atomic(fig, out_png)
 
 
@@ -97,9 +103,14 @@ for r, t in enumerate(times):
             ax.set_xlabel("x (m)")
         if k == 0:
             ax.set_ylabel("y (m)")
-fig.suptitle("Fig. 20 (geometry reconstructed, Fig. 19 lost): 20 m x 50 m column, joints dip 80/40 deg, "
-             "spacing 1.5/2.5 m; grey: t = 0", fontsize=10)
-fig.tight_layout(rect=(0, 0, 0.92, 0.97))
+fig.suptitle("Paper A Fig. 20: collapse of a jointed rock column, ours at the paper's times for joint friction 15 deg "
+             "(left) and 30 deg (right)\ngeometry reconstructed (Fig. 19 lost): 20 m x 50 m column, joints dip 80/40 deg, "
+             "spacing 1.5/2.5 m; the paper's method (friction update Eq. 26)\n" + PAPER_SAYS, fontsize=10)
+axes[0][0].plot([], [], color="0.75", lw=1.0, label="blocks at t = 0")
+axes[0][0].add_patch(plt.Rectangle((0, 0), 0, 0, facecolor="0.85", edgecolor="0.2", hatch="///",
+                                   label="fixed boundary (solid side hatched)"))
+axes[0][0].legend(fontsize=7, loc="upper right")
+fig.tight_layout(rect=(0, 0, 0.92, 0.95))
 cax = fig.add_axes((0.93, 0.15, 0.015, 0.7))
 cb = fig.colorbar(pc, cax=cax)
 cb.set_label("block speed (m/s)")

@@ -4,7 +4,10 @@ usage: fig22_toppling.py DATA_DIR OUT_PNG   (DATA_DIR from the toppling_slumping
 
 Top: the blocks at the last written time coloured by displacement magnitude,
 t = 0 outlines in grey. Bottom: per slope, the mass-weighted mean rotation
-toward the valley and the base slip along the sliding base, versus time.
+toward the valley and the base slip along the sliding base, versus time,
+with the rows' bands (the right slope topples: mean rotation > 10 deg; the
+left slope slumps: base slip > 0.5 m with |rotation| < 10 deg) and the
+paper's statement at its 3.5 s.
 """
 import os
 import sys
@@ -12,13 +15,22 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from blocks_common import Frames, draw_blocks, draw_boundaries, np, plt, read_boundaries, read_csv, save_atomic  # noqa: E402
 import matplotlib.colors  # noqa: E402
+import paper_common as paper  # noqa: E402
+from paper_common import BAND_STYLE, paper_style  # noqa: E402
+
+# The rows' bands (repro/6_2_toppling_slumping/rows.cpp): toppling needs a
+# mean outward rotation above 10 deg; slumping a base slip above 0.5 m with
+# a mean |rotation| below 10 deg.
+TOPPLE_DEG = 10.0
+SLUMP_SLIP = 0.5  # m
 
 if len(sys.argv) != 3:
     raise SystemExit(__doc__)
 data = sys.argv[1]
 fr = Frames(data)
 bounds = read_boundaries(os.path.join(data, "boundaries.csv"))
-_, se = read_csv(os.path.join(data, "series.csv"))
+notes, se = read_csv(os.path.join(data, "series.csv"))
+mode = next((n for n in notes if n.startswith("start:")), "start and friction update not recorded")
 t_end = fr.times[-1]
 
 fig = plt.figure(figsize=(11, 8.5))
@@ -39,26 +51,34 @@ ax.set_ylim(min(ys.min(), 0) - 3, ys.max() + 3)
 ax.set_aspect("equal")
 ax.set_xlabel("x (m)")
 ax.set_ylabel("y (m)")
-ax.set_title("Fig. 22 (geometry reconstructed, Fig. 21 lost): t = %.2f s; dashed: t = 0\n"
-             "joints dip 75 deg toward +x, spacing 3 m; sliding bases 30 deg, friction 32 deg; joints 22 deg" % t_end,
-             fontsize=10)
+ax.set_title("Paper A Fig. 22: toppling and slumping of jointed valley slopes, blocks at t = %.2f s (dashed: t = 0)\n"
+             "geometry reconstructed (Fig. 21 lost): joints dip 75 deg toward +x, spacing 3 m; sliding bases 30 deg, "
+             "friction 32 deg; joints 22 deg\n%s" % (t_end, mode), fontsize=9.5)
 ax.text(0.02, 0.95, "left slope: joints dip toward the valley", transform=ax.transAxes, fontsize=9, va="top")
 ax.text(0.98, 0.95, "right slope: joints dip into the slope", transform=ax.transAxes, fontsize=9, va="top", ha="right")
 
 deg = 180.0 / np.pi
 a1 = fig.add_subplot(gs[1, 0])
-a1.plot(se["time"], se["left_outward_rotation"] * deg, label="left slope")
-a1.plot(se["time"], se["right_outward_rotation"] * deg, label="right slope")
-a1.axhline(10.0, color="0.5", ls=":", lw=0.8)
+top = max(float(np.max(se["right_outward_rotation"] * deg)), float(np.max(se["left_outward_rotation"] * deg)), 15.0)
+a1.axhspan(TOPPLE_DEG, 1.15 * top, **BAND_STYLE, label="toppling band: mean rotation > %g deg" % TOPPLE_DEG)
+a1.plot(se["time"], se["left_outward_rotation"] * deg, label="ours: left slope")
+a1.plot(se["time"], se["right_outward_rotation"] * deg, label="ours: right slope")
+a1.axvline(paper.A_62_DURATION, **paper_style(label="paper (Sect. 6.2) at 3.5 s: right topples, left slumps"))
+a1.set_ylim(min(-2.0, 1.15 * float(np.min(se["left_outward_rotation"] * deg))), 1.15 * top)
 a1.set_xlabel("time (s)")
-a1.set_ylabel("mean rotation toward the valley (deg)")
-a1.legend()
+a1.set_ylabel("mass-weighted mean rotation toward the valley (deg)")
+a1.legend(fontsize=8, loc="upper left")
 a1.grid(alpha=0.3)
 a2 = fig.add_subplot(gs[1, 1])
-a2.plot(se["time"], se["left_base_slip"], label="left: base slip")
-a2.plot(se["time"], se["right_base_slip"], label="right: base slip")
-a2.plot(se["time"], se["left_rotation_travel"], "--", color="C0", label="left: top travel from rotation")
-a2.plot(se["time"], se["right_rotation_travel"], "--", color="C1", label="right: top travel from rotation")
+hi = 1.15 * max(float(np.max(se["right_rotation_travel"])), float(np.max(se["left_base_slip"])),
+               float(np.max(se["right_base_slip"])), 2.0 * SLUMP_SLIP)
+a2.axhspan(SLUMP_SLIP, hi, **BAND_STYLE, label="slumping band (left): base slip > %g m" % SLUMP_SLIP)
+a2.plot(se["time"], se["left_base_slip"], label="ours, left: base slip")
+a2.plot(se["time"], se["right_base_slip"], label="ours, right: base slip")
+a2.plot(se["time"], se["left_rotation_travel"], "--", color="C0", label="ours, left: top travel from rotation")
+a2.plot(se["time"], se["right_rotation_travel"], "--", color="C1", label="ours, right: top travel from rotation")
+a2.axvline(paper.A_62_DURATION, **paper_style())
+a2.set_ylim(min(-0.2, float(np.min(se["left_base_slip"]))), hi)
 _, sm = read_csv(os.path.join(data, "summary.csv"))
 ctrl = {int(r): i for i, r in enumerate(sm["run"])}
 if 1 in ctrl and 2 in ctrl:
@@ -67,10 +87,10 @@ if 1 in ctrl and 2 in ctrl:
             "each slope ONE block: base slip left %.2f m, right %.2f m"
             % (sm["duration"][lk], sm["left_base_slip"][lk], sm["right_outward_rotation"][lk] * deg,
                sm["left_base_slip"][wh], sm["right_base_slip"][wh]),
-            transform=a2.transAxes, fontsize=7.5, va="top", color="0.25")
+            transform=a2.transAxes, fontsize=7.5, va="top", color="0.25")  # below the legend
 a2.set_xlabel("time (s)")
-a2.set_ylabel("mean along the base, down-dip (m)")
-a2.legend(fontsize=8)
+a2.set_ylabel("mass-weighted mean along the base, down-dip (m)")
+a2.legend(fontsize=7.5, loc="upper left")
 a2.grid(alpha=0.3)
 fig.tight_layout()
 save_atomic(fig, sys.argv[2])

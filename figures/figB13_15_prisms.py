@@ -2,6 +2,10 @@
 refined contact patch, elements coloured by x-velocity (elastic wave).
 
 usage: figB13_15_prisms.py DATA_DIR OUT_PNG   (DATA_DIR from B_6_two_prisms)
+
+Each panel is one snapshot of snapshots.csv, labelled with the paper's
+figure and time it stands for; the title names the subdivision mode the
+file records. The geometry is reconstructed (Paper B Fig. 12 is lost).
 """
 import os
 import sys
@@ -28,8 +32,8 @@ def label(sid):
 
 full = [i for i in ids if label(i).startswith("Fig. 13") or "15b" in label(i)]
 zoom = [i for i in ids if i not in full]
-fig = plt.figure(figsize=(3.4 * max(len(zoom), 4), 8.3), layout="constrained")
-fig.get_layout_engine().set(rect=(0.0, 0.04, 1.0, 0.96))  # room for the note below
+fig = plt.figure(figsize=(3.4 * max(len(zoom), 4), 9.0), layout="constrained")
+fig.get_layout_engine().set(rect=(0.0, 0.05, 1.0, 0.9))  # room for the title above and the note below
 top, bottom = fig.subfigures(2, 1, height_ratios=[1.0, 1.25])
 ax_top = top.subplots(1, len(full))
 ax_bot = bottom.subplots(1, len(zoom))
@@ -47,7 +51,6 @@ def draw(ax, sid, window=None):
     cm = c["snapshot"] == sid
     if np.any(cm):
         ax.plot(c["x"][cm], c["y"][cm], "o", ms=7, mfc="none", mec="magenta", mew=1.8, label="clone node")
-        ax.legend(loc="lower right", fontsize=7)
     if window is None:
         ax.set_xlim(tris[..., 0].min() - 0.3, tris[..., 0].max() + 0.3)
         ax.set_ylim(tris[..., 1].min() - 0.3, tris[..., 1].max() + 0.3)
@@ -56,6 +59,8 @@ def draw(ax, sid, window=None):
         ax.set_ylim(*window[1])
     ax.set_aspect("equal")
     ax.set_title(f"{s['label'][m][0]}\n{np.count_nonzero(fine)} patch elements", fontsize=9)
+    ax.set_xlabel("x (m)", fontsize=8)
+    ax.set_ylabel("y (m)", fontsize=8)
     ax.tick_params(labelsize=7)
     return coarse_pc
 
@@ -68,8 +73,14 @@ for k, sid in enumerate(zoom):
 cb = fig.colorbar(pc, ax=list(ax_bot), shrink=0.8, pad=0.01)
 cb.set_label("element mean x-velocity (m/s)")
 note = next((n for n in notes if "rebuilt" in n), "")
-top.suptitle("Paper B Figs. 13-15: two prisms, clone node and local subdivision (top: whole blocks; "
-             "bottom: contact zone of block j, moving with it)", fontsize=11)
+mode = next((n.split(":", 1)[1].strip() for n in notes if n.startswith("subdivision mode:")), "mode not recorded")
+fig.suptitle("Paper B Figs. 13-15: two prisms (i at 3.0 m/s onto j at rest), clone node and local subdivision, ours "
+             "at the paper's times\nsubdivision mode: %s; top: whole blocks; bottom: contact zone of block j, moving "
+             "with it (geometry reconstructed)" % mode, fontsize=10)
+handles = [plt.Line2D([], [], marker="o", ls="", ms=7, mfc="none", mec="magenta", mew=1.8),
+           plt.Line2D([], [], color="k", lw=0.8), plt.Line2D([], [], color="0.25", lw=0.25)]
+fig.legend(handles, ["clone node (contact points joined)", "coarse CST elements", "refined patch sub-elements"],
+           loc="lower right", bbox_to_anchor=(1.0, 0.0), fontsize=8, ncol=3)
 fig.text(0.01, 0.005, textwrap.fill("Note: " + note + ". Thin lines: the refined patch (k x k sub-elements within c dt2 "
                                     "of the contact point), integrated with dt/n; deformations are too small to see "
                                     "at this scale, the colours show the elastic wave.", 180),

@@ -92,13 +92,17 @@ def draw_potential(grid_csv, outline_csv, title, out_png, highlight_below=None):
 
     px = np.append(o["x"], o["x"][0])
     py = np.append(o["y"], o["y"][0])
-    ax.plot(px, py, "k-", lw=1.2)
+    ax.plot(px, py, "k-", lw=1.2, label="polygon outline (reconstructed)")
+    ax.plot([], [], "-", color="0.75", lw=0.8, label="iso-potential lines (white)")
     if highlight_below is not None:
         n = o["x"].size
+        first = True
         for i in range(n):
             if o["edge_length"][i] < highlight_below:
                 j = (i + 1) % n
-                ax.plot([o["x"][i], o["x"][j]], [o["y"][i], o["y"][j]], "r-", lw=3.0)
+                ax.plot([o["x"][i], o["x"][j]], [o["y"][i], o["y"][j]], "r-", lw=3.0,
+                        label="edges shorter than %g m" % highlight_below if first else None)
+                first = False
                 mx, my = 0.5 * (o["x"][i] + o["x"][j]), 0.5 * (o["y"][i] + o["y"][j])
                 ax.annotate(f"{o['edge_length'][i]:.3g} m edge", (mx, my), xytext=(12, 8),
                             textcoords="offset points", color="red", fontsize=9)
@@ -106,7 +110,8 @@ def draw_potential(grid_csv, outline_csv, title, out_png, highlight_below=None):
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.09), ncol=3, frameon=False)
     note = next((c for c in notes if c.startswith("RECONSTRUCTED")), "")
-    ax.text(0.0, -0.12, textwrap.fill(note + f". Grid {nx} x {ny}; white: outside (phi = 0).", 110),
+    ax.text(0.0, -0.17, textwrap.fill(note + f". Grid {nx} x {ny}; white: outside (phi = 0).", 110),
             transform=ax.transAxes, fontsize=7, color="0.3", va="top")
     save_atomic(fig, out_png)

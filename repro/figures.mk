@@ -21,14 +21,15 @@
 # The .done stamp is touched only after the driver succeeds, so a failed run
 # is retried next time; drivers write every file atomically (CsvWriter), so a
 # failure never leaves half a CSV. A figure script also gets a rule on any
-# helper module it imports (figures/potential_common.py below).
+# helper module it imports (figures/potential_common.py, figures/paper_common.py
+# with the papers' stated values, below).
 
 # --- Paper A Sects. 3.1.2, 3.2.1: entrance block, force as energy gradient ---
 $(OUT)/data/contact_statements/.done: $(BIN)/contact_statements
 	$(BIN)/contact_statements --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig_contact_statements.png: $(OUT)/data/contact_statements/.done figures/fig_contact_statements.py figures/potential_common.py
+$(OUT)/figures/fig_contact_statements.png: $(OUT)/data/contact_statements/.done figures/fig_contact_statements.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig_contact_statements.py $(OUT)/data/contact_statements $@
 
 FIGS += $(OUT)/figures/fig_contact_statements.png
@@ -60,7 +61,7 @@ $(OUT)/data/two_squares/.done: $(BIN)/two_squares
 	$(BIN)/two_squares --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig08_two_squares.png: $(OUT)/data/two_squares/.done figures/fig08_two_squares.py figures/potential_common.py
+$(OUT)/figures/fig08_two_squares.png: $(OUT)/data/two_squares/.done figures/fig08_two_squares.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig08_two_squares.py $(OUT)/data/two_squares $@
 
 FIGS += $(OUT)/figures/fig08_two_squares.png
@@ -71,7 +72,7 @@ $(OUT)/data/symmetric_stack/.done: $(BIN)/symmetric_stack
 	$(BIN)/symmetric_stack --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig10_symmetric_stack.png: $(OUT)/data/symmetric_stack/.done figures/fig10_symmetric_stack.py figures/potential_common.py
+$(OUT)/figures/fig10_symmetric_stack.png: $(OUT)/data/symmetric_stack/.done figures/fig10_symmetric_stack.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig10_symmetric_stack.py $(OUT)/data/symmetric_stack $@
 
 FIGS += $(OUT)/figures/fig10_symmetric_stack.png
@@ -82,7 +83,7 @@ $(OUT)/data/incline/.done: $(BIN)/incline
 	$(BIN)/incline --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig12_incline.png: $(OUT)/data/incline/.done figures/fig12_incline.py figures/potential_common.py
+$(OUT)/figures/fig12_incline.png: $(OUT)/data/incline/.done figures/fig12_incline.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig12_incline.py $(OUT)/data/incline $@
 
 FIGS += $(OUT)/figures/fig12_incline.png
@@ -104,7 +105,7 @@ $(OUT)/data/bouncing_block/.done: $(BIN)/bouncing_block
 	$(BIN)/bouncing_block --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig14_bouncing_block.png: $(OUT)/data/bouncing_block/.done figures/fig14_bouncing_block.py figures/potential_common.py
+$(OUT)/figures/fig14_bouncing_block.png: $(OUT)/data/bouncing_block/.done figures/fig14_bouncing_block.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig14_bouncing_block.py $(OUT)/data/bouncing_block $@
 
 FIGS += $(OUT)/figures/fig14_bouncing_block.png
@@ -115,7 +116,7 @@ $(OUT)/data/small_angles/.done: $(BIN)/small_angles
 	$(BIN)/small_angles --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig16_small_angles.png: $(OUT)/data/small_angles/.done figures/fig16_small_angles.py figures/potential_common.py
+$(OUT)/figures/fig16_small_angles.png: $(OUT)/data/small_angles/.done figures/fig16_small_angles.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig16_small_angles.py $(OUT)/data/small_angles $@
 
 FIGS += $(OUT)/figures/fig16_small_angles.png
@@ -126,18 +127,18 @@ $(OUT)/data/small_edges/.done: $(BIN)/small_edges
 	$(BIN)/small_edges --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig18_small_edges.png: $(OUT)/data/small_edges/.done figures/fig18_small_edges.py figures/potential_common.py
+$(OUT)/figures/fig18_small_edges.png: $(OUT)/data/small_edges/.done figures/fig18_small_edges.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig18_small_edges.py $(OUT)/data/small_edges $@
 
 FIGS += $(OUT)/figures/fig18_small_edges.png
 $(OUT)/report.md: $(OUT)/data/small_edges/.done
 
-# --- Beyond Sect. 5: extreme geometry table (report rows only) -----------------
+# --- Beyond Sect. 5: extreme geometry, dt / dt_crit against the sizes ---------
 $(OUT)/data/extreme_geometry/.done: $(BIN)/extreme_geometry
 	$(BIN)/extreme_geometry --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/extreme_geometry.png: $(OUT)/data/extreme_geometry/.done figures/fig_extreme_geometry.py figures/potential_common.py
+$(OUT)/figures/extreme_geometry.png: $(OUT)/data/extreme_geometry/.done figures/fig_extreme_geometry.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig_extreme_geometry.py $(OUT)/data/extreme_geometry $@
 
 FIGS += $(OUT)/figures/extreme_geometry.png
@@ -148,7 +149,7 @@ $(OUT)/data/segmentation/.done: $(BIN)/segmentation
 	$(BIN)/segmentation --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/segmentation_study.png: $(OUT)/data/segmentation/.done figures/fig_segmentation_study.py figures/potential_common.py
+$(OUT)/figures/segmentation_study.png: $(OUT)/data/segmentation/.done figures/fig_segmentation_study.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig_segmentation_study.py $(OUT)/data/segmentation $@
 
 FIGS += $(OUT)/figures/segmentation_study.png
@@ -162,7 +163,7 @@ $(OUT)/data/B_6_two_prisms/.done: $(BIN)/B_6_two_prisms
 $(OUT)/figures/figB13_15_prisms.png: $(OUT)/data/B_6_two_prisms/.done figures/figB13_15_prisms.py figures/cdem_common.py figures/potential_common.py
 	$(PY) figures/figB13_15_prisms.py $(OUT)/data/B_6_two_prisms $@
 
-$(OUT)/figures/figB16_displacement.png: $(OUT)/data/B_6_two_prisms/.done figures/figB16_displacement.py figures/cdem_common.py figures/potential_common.py
+$(OUT)/figures/figB16_displacement.png: $(OUT)/data/B_6_two_prisms/.done figures/figB16_displacement.py figures/cdem_common.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/figB16_displacement.py $(OUT)/data/B_6_two_prisms $@
 
 FIGS += $(OUT)/figures/figB13_15_prisms.png $(OUT)/figures/figB16_displacement.png
@@ -173,24 +174,24 @@ $(OUT)/data/B_7_contact_comparison/.done: $(BIN)/B_7_contact_comparison
 	$(BIN)/B_7_contact_comparison --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/figB_comparison.png: $(OUT)/data/B_7_contact_comparison/.done figures/figB_comparison.py figures/cdem_common.py figures/potential_common.py
+$(OUT)/figures/figB_comparison.png: $(OUT)/data/B_7_contact_comparison/.done figures/figB_comparison.py figures/cdem_common.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/figB_comparison.py $(OUT)/data/B_7_contact_comparison $@
 
 FIGS += $(OUT)/figures/figB_comparison.png
 $(OUT)/report.md: $(OUT)/data/B_7_contact_comparison/.done
 
-# --- Issue 23 item 5: two elastic bars against 1D wave theory (B, B0, A) ------
+# --- Beyond both papers: two elastic bars against 1D wave theory (B, B0, A) ---
 $(OUT)/data/B_8_bar_waves/.done: $(BIN)/B_8_bar_waves
 	$(BIN)/B_8_bar_waves --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/figB_bar_waves.png: $(OUT)/data/B_8_bar_waves/.done figures/figB_bar_waves.py figures/cdem_common.py figures/potential_common.py
+$(OUT)/figures/figB_bar_waves.png: $(OUT)/data/B_8_bar_waves/.done figures/figB_bar_waves.py figures/cdem_common.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/figB_bar_waves.py $(OUT)/data/B_8_bar_waves $@
 
 FIGS += $(OUT)/figures/figB_bar_waves.png
 $(OUT)/report.md: $(OUT)/data/B_8_bar_waves/.done
 
-# --- Issue 23 item 2: impact study of the two-scale contact (210 oblique impacts) ---
+# --- Beyond Paper B: impact study of the two-scale contact (oblique impacts) ---
 $(OUT)/data/B_9_impact_study/.done: $(BIN)/B_9_impact_study
 	$(BIN)/B_9_impact_study --out $(OUT)
 	@touch $@
@@ -207,10 +208,10 @@ $(OUT)/data/collapse/.done: $(BIN)/collapse
 	$(BIN)/collapse --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig20_collapse.png: $(OUT)/data/collapse/.done figures/fig20_collapse.py figures/blocks_common.py figures/potential_common.py
+$(OUT)/figures/fig20_collapse.png: $(OUT)/data/collapse/.done figures/fig20_collapse.py figures/blocks_common.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig20_collapse.py $(OUT)/data/collapse $@
 
-$(OUT)/figures/fig20_collapse_runout.png: $(OUT)/data/collapse/.done figures/fig20_collapse.py figures/blocks_common.py figures/potential_common.py
+$(OUT)/figures/fig20_collapse_runout.png: $(OUT)/data/collapse/.done figures/fig20_collapse.py figures/blocks_common.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig20_collapse.py --runout $(OUT)/data/collapse $@
 
 $(OUT)/figures/anim_collapse_case1.gif: $(OUT)/data/collapse/.done figures/anim_collapse.py figures/blocks_common.py figures/potential_common.py
@@ -228,13 +229,13 @@ $(OUT)/data/toppling_slumping/.done: $(BIN)/toppling_slumping
 	$(BIN)/toppling_slumping --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/fig22_toppling.png: $(OUT)/data/toppling_slumping/.done figures/fig22_toppling.py figures/blocks_common.py figures/potential_common.py
+$(OUT)/figures/fig22_toppling.png: $(OUT)/data/toppling_slumping/.done figures/fig22_toppling.py figures/blocks_common.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/fig22_toppling.py $(OUT)/data/toppling_slumping $@
 
 FIGS += $(OUT)/figures/fig22_toppling.png
 $(OUT)/report.md: $(OUT)/data/toppling_slumping/.done
 
-# --- S1: work precision, error against run time (issue: stiff/extreme) -----
+# --- S1: work precision, error against run time --------------------------
 $(OUT)/data/work_precision/.done: $(BIN)/work_precision
 	$(BIN)/work_precision --out $(OUT)
 	@touch $@
@@ -268,7 +269,7 @@ $(OUT)/data/stability_maps/.done: $(BIN)/stability_maps
 	$(BIN)/stability_maps --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/figS2_stability_maps.png: $(OUT)/data/stability_maps/.done figures/figS2_stability_maps.py figures/potential_common.py
+$(OUT)/figures/figS2_stability_maps.png: $(OUT)/data/stability_maps/.done figures/figS2_stability_maps.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/figS2_stability_maps.py $(OUT)/data/stability_maps $@
 
 FIGS += $(OUT)/figures/figS2_stability_maps.png
@@ -286,7 +287,7 @@ $(OUT)/data/penetration_map/.done: $(BIN)/penetration_map
 	$(BIN)/penetration_map --out $(OUT)
 	@touch $@
 
-$(OUT)/figures/figS3_penetration_map.png: $(OUT)/data/penetration_map/.done figures/figS3_penetration_map.py figures/potential_common.py
+$(OUT)/figures/figS3_penetration_map.png: $(OUT)/data/penetration_map/.done figures/figS3_penetration_map.py figures/potential_common.py figures/paper_common.py
 	$(PY) figures/figS3_penetration_map.py $(OUT)/data/penetration_map $@
 
 FIGS += $(OUT)/figures/figS3_penetration_map.png

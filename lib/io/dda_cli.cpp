@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,13 +24,23 @@ constexpr int kInterrupted = 130;
 
 const char* const kUsage =
     "Usage:\n"
-    "  dda run SCENE.json --out DIR [--quiet] [--max-steps N]\n"
+    "  dda run SCENE.json --out DIR [--quiet] [--max-steps N] [--vtk]\n"
+    "          [--vtk-every N] [--block-table]\n"
     "      Simulate the scene to its duration and write DIR/timeseries.csv,\n"
     "      DIR/snapshots.csv and DIR/run.json (each via a .tmp file renamed\n"
     "      into place when complete). Progress goes to stderr about once a\n"
     "      second for runs longer than a second (--quiet: none).\n"
     "      A run of more than max_steps steps (duration / dt; the scene's\n"
     "      \"max_steps\", default 10000000) is refused; --max-steps N allows N.\n"
+    "      --vtk: also a ParaView series, DIR/vtk/blocks.pvd (blocks as\n"
+    "      polygons: velocity, spin, stress, ...) and DIR/vtk/contacts.pvd\n"
+    "      (contacts as points: forces, penetration), one .vtu file per frame,\n"
+    "      a frame at each snapshot time (the scene's \"output.vtk\": true).\n"
+    "      --vtk-every N: a frame every N steps instead (implies --vtk;\n"
+    "      \"output.vtk_every\"). --block-table: also DIR/blocks.csv, one row\n"
+    "      per block (time, step, block, x, y, vx, vy, rot, spin, stress) at\n"
+    "      each time-series row (\"output.block_table\": true). The flags add\n"
+    "      to the scene's output section and override its vtk_every.\n"
     "  dda check SCENE.json [SCENE.json ...] [--max-steps N]\n"
     "      Validate scene files only (as dda run would); one line per file.\n"
     "  dda --help\n"
@@ -40,7 +51,8 @@ const char* const kUsage =
     "  3    the simulation failed (dda::SimulationError or a non-finite value);\n"
     "       the output up to the failure is written, run.json says why\n"
     "  4    the output could not be written\n"
-    "  130  interrupted (SIGINT/SIGTERM); nothing is written\n"
+    "  130  interrupted (SIGINT/SIGTERM); no CSV file or run.json is written\n"
+    "       (ParaView frames already taken stay, with their .pvd)\n"
     "\n"
     "Scene file schema and output columns: lib/io/SCHEMA.md\n";
 
@@ -52,17 +64,18 @@ int usage_error(const std::string& message) {
   return kBadInput;
 }
 
-// "--max-steps N" / "--max-steps=N" at args[i]: N > 0, or 0 on a bad value.
+// "<name> N" / "<name>=N" at args[i]: N > 0, or 0 on a bad value.
 // Returns the number of arguments used (0: not this option).
-std::size_t max_steps_option(const std::vector<std::string>& args, std::size_t i, std::int64_t& n) {
+std::size_t positive_option(const std::vector<std::string>& args, std::size_t i, const std::string& name,
+                            std::int64_t& n) {
   const std::string& a = args[i];
   std::string value;
   std::size_t used = 0;
-  if (a == "--max-steps") {
+  if (a == name) {
     if (i + 1 >= args.size()) return n = 0, 1;
     value = args[i + 1], used = 2;
-  } else if (a.rfind("--max-steps=", 0) == 0) {
-    value = a.substr(12), used = 1;
+  } else if (a.rfind(name + "=", 0) == 0) {
+    value = a.substr(name.size() + 1), used = 1;
   } else {
     return 0;
   }
@@ -74,6 +87,10 @@ std::size_t max_steps_option(const std::vector<std::string>& args, std::size_t i
     n = 0;
   }
   return used;
+}
+
+std::size_t max_steps_option(const std::vector<std::string>& args, std::size_t i, std::int64_t& n) {
+  return positive_option(args, i, "--max-steps", n);
 }
 
 int cmd_check(const std::vector<std::string>& args) {
@@ -134,13 +151,22 @@ int cmd_check(const std::vector<std::string>& args) {
 
 int cmd_run(const std::vector<std::string>& args) {
   std::string scene_path, out_dir;
-  bool quiet = false;
+  bool quiet = false, vtk = false, block_table = false;
+  std::int64_t vtk_every = 0;
   dda::io::ReadOptions read;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (const std::size_t used = max_steps_option(args, i, read.max_steps)) {
       if (read.max_steps <= 0) return usage_error("run: --max-steps needs a positive integer");
       i += used - 1;
+    } else if (const std::size_t used_vtk = positive_option(args, i, "--vtk-every", vtk_every)) {
+      if (vtk_every <= 0 || vtk_every > std::numeric_limits<int>::max())
+        return usage_error("run: --vtk-every needs a positive integer (steps between ParaView frames)");
+      i += used_vtk - 1;
+    } else if (a == "--vtk") {
+      vtk = true;
+    } else if (a == "--block-table") {
+      block_table = true;
     } else if (a == "--out") {
       if (i + 1 >= args.size()) return usage_error("run: --out needs a directory");
       out_dir = args[++i];
@@ -166,6 +192,9 @@ int cmd_run(const std::vector<std::string>& args) {
     std::cerr << e.what() << "\n";
     return kBadInput;
   }
+  file.output.vtk = file.output.vtk || vtk || vtk_every > 0;
+  if (vtk_every > 0) file.output.vtk_every = static_cast<int>(vtk_every);
+  file.output.block_table = file.output.block_table || block_table;
 
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -178,10 +207,15 @@ int cmd_run(const std::vector<std::string>& args) {
     const dda::io::RunResult r = dda::io::run_scene(file, opt);
     switch (r.status) {
       case dda::io::RunStatus::kCompleted:
-        if (!quiet)
+        if (!quiet) {
           std::cerr << "dda: done: " << r.steps << " steps to t = " << r.time << " s in " << r.wall_seconds
                     << " s; wrote " << out_dir << "/timeseries.csv (" << r.timeseries_rows << " rows), " << out_dir
-                    << "/snapshots.csv (" << r.snapshot_rows << " rows), " << out_dir << "/run.json\n";
+                    << "/snapshots.csv (" << r.snapshot_rows << " rows), ";
+          if (file.output.block_table) std::cerr << out_dir << "/blocks.csv (" << r.block_table_rows << " rows), ";
+          if (file.output.vtk)
+            std::cerr << out_dir << "/vtk/blocks.pvd and contacts.pvd (" << r.vtk_frames << " frames each), ";
+          std::cerr << out_dir << "/run.json\n";
+        }
         return kOk;
       case dda::io::RunStatus::kSimulationError:
         std::cerr << scene_path << ": simulation failed: " << r.message << "\n"
@@ -189,7 +223,9 @@ int cmd_run(const std::vector<std::string>& args) {
                   << " time-series rows)\n";
         return kSimulationFailed;
       case dda::io::RunStatus::kInterrupted:
-        std::cerr << "dda: interrupted at t = " << r.time << " s; nothing written\n";
+        std::cerr << "dda: interrupted at t = " << r.time << " s; no CSV file or run.json written";
+        if (file.output.vtk) std::cerr << " (" << r.vtk_frames << " ParaView frames in " << out_dir << "/vtk)";
+        std::cerr << "\n";
         return kInterrupted;
     }
   } catch (const dda::io::OutputError& e) {

@@ -101,7 +101,13 @@ int main(int argc, char** argv) try {
                            "left_centroid_downdip", "left_rotation_travel", "left_toppled_share",
                            "right_outward_rotation", "right_abs_rotation", "right_base_slip", "right_centroid_downdip",
                            "right_rotation_travel", "right_toppled_share", "E_kinetic", "E_total", "dt_over_dt_crit"},
-                          {note, "rotations in rad (outward: toward the valley), displacements in m, energy in J/m"});
+                          {note, "rotations in rad (outward: toward the valley), displacements in m, energy in J/m",
+                           // the mode of the run, for the figure's legend
+                           std::string("start: the paper's (from rest, undamped); friction update: ") +
+                               (ts.scene.contact.friction_update == dda::FrictionUpdate::kPaper
+                                    ? "the paper's Eq. 26"
+                                    : "return mapping (not the paper's)") +
+                               (exact_rotation ? "; rotation update: exact (not the paper's)" : "")});
   repro::CsvWriter frames(dir + "/frames.csv", repro::snapshot_header(), {note});
   repro::CsvWriter states(dir + "/blocks.csv",
                           {"time", "block", "cx", "cy", "vx", "vy", "speed", "dx", "dy", "rotation"}, {note});

@@ -63,6 +63,19 @@ std::vector<std::string> history_header() {
           "energy_initial", "gravity", "touch_loss", "touch_loss_eq5", "refine_loss", "deletion_loss", "energy_other"};
 }
 
+// The subdivision mode a run used, in words, for the data files' comment
+// line "subdivision mode: ..." (the figures label the curves with it).
+std::string subdivision_mode_text(const dda::cdem::CdemOptions& o) {
+  if (!o.subdivision) return "none (clone node of the coarse nodes)";
+  switch (o.subdivision_mode) {
+    case dda::cdem::SubdivisionMode::kSubModel:
+      return "sub-model of the colliding elements (Paper B Sect. 5 as written)";
+    case dda::cdem::SubdivisionMode::kInPlace:
+      return "in-place refinement (beyond the paper)";
+  }
+  return "unnamed mode";
+}
+
 void history_row(repro::CsvWriter& csv, const Model& m) {
   const dda::cdem::CdemEnergy e = m.energy();
   const dda::cdem::CdemEnergyAccount a = m.energy_account();
@@ -110,11 +123,11 @@ int main(int argc, char** argv) try {
   scene.dt = dt;
 
   repro::CsvWriter hist(dir + "history.csv", history_header(),
-                        {std::string("Paper B Sect. 6, two prisms, clone node + subdivision (Sect. 5 as written: sub-model); ") +
-                         kRebuilt});
+                        {std::string("Paper B Sect. 6, two prisms, clone node + subdivision; ") + kRebuilt,
+                         "subdivision mode: " + subdivision_mode_text(opt)});
   repro::CsvWriter tris(dir + "snapshots.csv",
                         {"snapshot", "time", "label", "block", "fine", "x0", "y0", "x1", "y1", "x2", "y2", "vx", "vy"},
-                        {kRebuilt});
+                        {kRebuilt, "subdivision mode: " + subdivision_mode_text(opt)});
   repro::CsvWriter clones(dir + "clones.csv", {"snapshot", "time", "label", "x", "y"});
 
   // Snapshot times: Fig. 13 (start, touch), Fig. 14 a-c, Fig. 15 a-b; and
@@ -173,7 +186,8 @@ int main(int argc, char** argv) try {
   dda::cdem::CdemOptions coarse_opt;
   coarse_opt.subdivision = false;
   repro::CsvWriter hist_c(dir + "history_nosub.csv", history_header(),
-                          {std::string("Paper B Sect. 6, two prisms, clone node without subdivision; ") + kRebuilt});
+                          {std::string("Paper B Sect. 6, two prisms, clone node without subdivision; ") + kRebuilt,
+                           "subdivision mode: " + subdivision_mode_text(coarse_opt)});
   dda::cdem::CdemScene coarse_scene = dda::cdem::two_prisms(divisions, coarse_opt);
   coarse_scene.dt = dt;
   const prisms::Result coarse = prisms::simulate(coarse_scene, [&](const Model& m) { history_row(hist_c, m); });
@@ -217,7 +231,7 @@ int main(int argc, char** argv) try {
     sub_csv.commit();
     claims.push_back(prisms::submodel_mesh_row(sub_mesh));
   }
-  // Beyond the paper (issue 23, item 4): the patch deletion's energy handed
+  // Beyond the paper: the patch deletion's energy handed
   // to the coarse mesh (CdemOptions::patch_deletion = kEnergyMatched),
   // beside the paper's restriction above.
   {

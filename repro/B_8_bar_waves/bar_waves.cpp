@@ -1,4 +1,4 @@
-// Issue 23, item 5 "Waves against theory" (beyond both papers; Paper B
+// Waves against theory (beyond both papers; Paper B
 // Sect. 5's local subdivision exists to resolve the elastic waves of an
 // impact): two equal elastic bars head on, against 1D bar theory.
 //
@@ -86,7 +86,7 @@ std::string pct(double x) { return format_short(100.0 * x, 3) + " %"; }
 
 int main(int argc, char** argv) try {
   repro::check_command_line(
-      argc, argv, "Issue 23 item 5: two elastic bars head on against 1D wave theory (CDEM B, B0; Paper A's DDA).",
+      argc, argv, "Beyond both papers: two elastic bars head on against 1D wave theory (CDEM B, B0; Paper A's DDA).",
       {{"--max-ny", "N", "finest CDEM mesh: elements across the width (default 16; powers of 2 from 1)", true}});
   const int max_ny = repro::option_int(argc, argv, "--max-ny", 16);
   if (max_ny < 1) throw std::invalid_argument("--max-ny must be >= 1");
@@ -166,7 +166,9 @@ int main(int argc, char** argv) try {
        " Pa, nu 0 (plane stress); 2L/c " + repro::format_full(s.contact_time()) + " s, rho c v/2 " +
        repro::format_full(s.contact_stress()) + " Pa. B: clone + subdivision; B0: clone, no subdivision; A: "
        "Paper A DDA penalty. errors signed, relative to 1D theory; status 'stopped: ...' has no values. "
-       "wall_s: mean of repeated runs when one is shorter than 0.05 s"});
+       "wall_s: mean of repeated runs when one is shorter than 0.05 s",
+       // the mode cdem_scene() sets for B (the figure labels B's curves with it)
+       "subdivision mode of B: in-place refinement (beyond the paper)"});
   for (const Run& r : runs)
     csv.row(std::vector<std::string>{
         r.model, r.series, std::to_string(r.ny), repro::format_full(r.h), repro::format_full(r.dt),

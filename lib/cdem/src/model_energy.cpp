@@ -99,6 +99,7 @@ std::vector<CloneView> Model::clones() const {
     v.weight = c.w;
     v.point = x_[c.main];
     v.force = c.lambda;
+    v.normal = clone_normal(c);
     v.fine = c.fine;
     out.push_back(v);
   }
@@ -121,6 +122,9 @@ Snapshot Model::snapshot() const {
     t.velocity = (v_[e.n[0]] + v_[e.n[1]] + v_[e.n[2]]) / 3.0;
     t.block = e.block;
     t.fine = e.level > 0;
+    t.node = e.n;
+    t.v = {v_[e.n[0]], v_[e.n[1]], v_[e.n[2]]};
+    t.stress = e.stress;
     s.tris.push_back(t);
   }
   for (const SubModel& sm : subs_)
@@ -130,6 +134,8 @@ Snapshot Model::snapshot() const {
       t.velocity = (sm.v[se.n[0]] + sm.v[se.n[1]] + sm.v[se.n[2]]) / 3.0;
       t.block = elem(se.parent).block;
       t.fine = true;
+      t.v = {sm.v[se.n[0]], sm.v[se.n[1]], sm.v[se.n[2]]};
+      t.stress = se.stress;
       s.tris.push_back(t);
     }
   for (const Clone& c : clones_) s.clone_points.push_back(x_[c.main]);

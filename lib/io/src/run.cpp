@@ -4,11 +4,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 
 #include <nlohmann/json.hpp>
 
+#include "dda/io/block_table.hpp"
 #include "dda/io/csv.hpp"
+#include "dda/io/vtk_dda.hpp"
+#include "dda/io/vtk_series.hpp"
 
 namespace dda::io {
 
@@ -66,6 +70,8 @@ std::string run_json(const SceneFile& file, const RunOptions& opt, const RunResu
   j["steps_per_second"] = res.wall_seconds > 0.0 ? static_cast<double>(res.steps) / res.wall_seconds : 0.0;
   j["timeseries_rows"] = res.timeseries_rows;
   j["snapshot_rows"] = res.snapshot_rows;
+  j["block_table_rows"] = res.block_table_rows;
+  j["vtk_frames"] = res.vtk_frames;
   j["tracked_blocks"] = tracked_blocks(file);
   j["blocks"] = blocks;
   return j.dump(2) + "\n";
@@ -132,6 +138,25 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
 
   CsvFile ts((out / "timeseries.csv").string(), timeseries_header(tracked));
   CsvFile snap((out / "snapshots.csv").string(), {"time", "step", "block", "vertex", "x", "y"});
+  std::optional<CsvFile> table;
+  if (file.output.block_table) table.emplace((out / "blocks.csv").string(), block_table_header());
+  // ParaView series: DIR/vtk/blocks.pvd and contacts.pvd, a frame at each
+  // snapshot time or every output.vtk_every steps (one per step at most).
+  std::optional<VtkSeries> vtk_blocks, vtk_contacts;
+  if (file.output.vtk) {
+    vtk_blocks.emplace((out / "vtk").string(), "blocks");
+    vtk_contacts.emplace((out / "vtk").string(), "contacts");
+  }
+  std::int64_t last_frame_step = -1;
+  auto vtk_frame = [&] {
+    if (!vtk_blocks || sim.step_count() == last_frame_step) return;
+    const VtkMesh blocks_mesh = block_mesh(sim), contacts_mesh = contact_mesh(sim);
+    check_mesh(blocks_mesh, "ParaView blocks frame at t = " + format_number(sim.time()) + " s");
+    check_mesh(contacts_mesh, "ParaView contacts frame at t = " + format_number(sim.time()) + " s");
+    vtk_blocks->add(sim.time(), blocks_mesh);
+    vtk_contacts->add(sim.time(), contacts_mesh);
+    last_frame_step = sim.step_count();
+  };
 
   const double dt = sim.dt();
   const std::vector<double>& times = file.output.snapshot_times;
@@ -139,6 +164,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   auto snapshots_due = [&] {
     while (next_snap < times.size() && times[next_snap] <= sim.time() + 0.5 * dt) {
       write_snapshot(snap, sim);
+      if (file.output.vtk_every == 0) vtk_frame();
       ++next_snap;
     }
   };
@@ -148,12 +174,19 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
 
   RunResult res;
   auto write_row = [&] {
-    ts.row(timeseries_row(sim, tracked));
+    const std::vector<CsvValue> row = timeseries_row(sim, tracked);
+    if (table) {
+      for (const CsvValue& x : row)
+        if (!x.is_integer && !std::isfinite(x.number)) ts.row(row);  // throws NonFiniteValue, nothing written
+      block_table_rows(*table, sim);
+    }
+    ts.row(row);
     res.last_row_time = sim.time();
   };
   try {
     write_row();
     snapshots_due();
+    if (file.output.vtk_every > 0) vtk_frame();
     while (sim.time() + 0.5 * dt < scene.duration) {
       if (opt.interrupt && *opt.interrupt) {
         res.status = RunStatus::kInterrupted;
@@ -163,6 +196,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
       const bool last = !(sim.time() + 0.5 * dt < scene.duration);
       if (last || sim.step_count() % file.output.every == 0) write_row();
       snapshots_due();
+      if (file.output.vtk_every > 0 && (last || sim.step_count() % file.output.vtk_every == 0)) vtk_frame();
       if (opt.progress && !last) {
         const Clock::time_point now = Clock::now();
         if (now - last_print >= std::chrono::seconds(1)) {
@@ -189,13 +223,23 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   res.wall_seconds = seconds_since(start);
   res.timeseries_rows = ts.rows();
   res.snapshot_rows = snap.rows();
+  res.block_table_rows = table ? table->rows() : 0;
+  res.vtk_frames = vtk_blocks ? vtk_blocks->frames() : 0;
+  // The frames are on disk as they were taken; the collections list them
+  // (also after an interrupt: each frame is complete).
+  if (vtk_blocks) {
+    vtk_blocks->write_collection();
+    vtk_contacts->write_collection();
+  }
   if (res.status == RunStatus::kInterrupted) {
     ts.discard();
     snap.discard();
+    if (table) table->discard();
     return res;
   }
   ts.commit();
   snap.commit();
+  if (table) table->commit();
   write_file_atomic((out / "run.json").string(), run_json(file, opt, res, dt, blocks));
   return res;
 }

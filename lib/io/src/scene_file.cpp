@@ -730,7 +730,7 @@ OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
     out.snapshot_times = default_snapshots;
     return out;
   }
-  r.object(*v, path, {"every", "snapshots", "tracked_blocks"});
+  r.object(*v, path, {"every", "snapshots", "tracked_blocks", "vtk", "vtk_every", "block_table"});
   if (const json* x = Reader::find(*v, "every")) {
     out.every = r.integer(*x, "output.every");
     if (out.every < 1) r.fail("output.every", "must be >= 1 (steps between time-series rows)");
@@ -775,6 +775,13 @@ OutputSpec read_output(const Reader& r, const json* v, const Scene& scene) {
       out.tracked_blocks.push_back(id);
     }
   }
+  if (const json* x = Reader::find(*v, "vtk")) out.vtk = r.boolean(*x, "output.vtk");
+  if (const json* x = Reader::find(*v, "vtk_every")) {
+    out.vtk_every = r.integer(*x, "output.vtk_every");
+    if (out.vtk_every < 1) r.fail("output.vtk_every", "must be >= 1 (steps between ParaView frames)");
+    if (!out.vtk) r.fail("output.vtk_every", "needs \"vtk\": true (it would be ignored)");
+  }
+  if (const json* x = Reader::find(*v, "block_table")) out.block_table = r.boolean(*x, "output.block_table");
   return out;
 }
 
@@ -1100,7 +1107,10 @@ std::string write_scene(const SceneFile& file) {
                      {"settle_slip_time", s.damping.settle_slip_time}};
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},
-                    {"tracked_blocks", file.output.tracked_blocks}};
+                    {"tracked_blocks", file.output.tracked_blocks},
+                    {"vtk", file.output.vtk},
+                    {"block_table", file.output.block_table}};
+  if (file.output.vtk_every > 0) root["output"]["vtk_every"] = file.output.vtk_every;
   return root.dump(2) + "\n";
 }
 

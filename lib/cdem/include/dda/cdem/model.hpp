@@ -277,6 +277,9 @@ struct Snapshot {
     Vec2 velocity;  // mean of the corner velocities
     int block = 0;
     bool fine = false;
+    std::array<int, 3> node{-1, -1, -1};  // the corners' node ids (-1: a sub-model's sub-node)
+    std::array<Vec2, 3> v{};              // the corners' velocities
+    Vec3 stress = Vec3::Zero();           // the element's (sxx, syy, sxy), Pa
   };
   double time = 0.0;
   std::vector<Tri> tris;
@@ -327,6 +330,7 @@ struct CloneView {
   std::array<double, 2> weight{0.0, 0.0};
   Vec2 point{};
   Vec2 force{};  // interaction force on the main node, N/m (Eq. 11)
+  Vec2 normal{};  // unit normal from the target into the main node's block
   bool fine = false;
 };
 

@@ -1,12 +1,15 @@
 // Runs a scene file to its duration and writes the run's output:
 //   <out>/timeseries.csv  one row at t = 0, every `output.every` steps, and at the end
 //   <out>/snapshots.csv   the vertices of every polygon at each snapshot time
+//   <out>/blocks.csv      (output.block_table) one row per block at each time-series row
+//   <out>/vtk/            (output.vtk) ParaView series blocks.pvd and contacts.pvd
 //   <out>/run.json        status, counts, wall time, block names and masses
-// Columns are documented in lib/io/SCHEMA.md. All three files are written
+// Columns are documented in lib/io/SCHEMA.md. Every file is written
 // through "<file>.tmp" and renamed into place when complete. A run stopped by
 // dda::SimulationError (or a non-finite output value) still commits the rows
 // written up to that point, and run.json says "simulation_error". An
-// interrupted run commits nothing.
+// interrupted run commits no CSV file and no run.json; the ParaView frames
+// taken before the interrupt stay, with their .pvd collections.
 #pragma once
 #include <csignal>
 #include <cstdint>
@@ -37,6 +40,8 @@ struct RunResult {
   double last_row_time = 0.0; // time of the last time-series row written, s
   double wall_seconds = 0.0;
   std::size_t timeseries_rows = 0, snapshot_rows = 0;
+  std::size_t block_table_rows = 0;  // DIR/blocks.csv (output.block_table)
+  std::size_t vtk_frames = 0;        // frames of each ParaView series (output.vtk)
 };
 
 // Column names of the time series for `tracked` scene blocks (see SCHEMA.md).

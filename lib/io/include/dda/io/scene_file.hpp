@@ -34,6 +34,9 @@ struct OutputSpec {
   int every = 100;                     // a time-series row every `every` steps (and at t = 0 and the end)
   std::vector<double> snapshot_times;  // s, ascending; vertices of every block at the step nearest each
   std::vector<int> tracked_blocks;     // scene block indices in the time series; empty = all
+  bool vtk = false;                    // a ParaView series in DIR/vtk/ (vtk_series.hpp)
+  int vtk_every = 0;                   // > 0: a ParaView frame every vtk_every steps; 0: at snapshot_times
+  bool block_table = false;            // DIR/blocks.csv, one row per block per time-series row
 };
 
 // One "generated" entry of a scene file: a region cut into blocks by joint
