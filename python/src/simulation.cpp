@@ -131,6 +131,17 @@ py::array read_only_view(const double* first, py::ssize_t n, py::ssize_t cols, p
   return a;
 }
 
+// A read-only (n, Cols) view of the per-block rows row(sim, i) points at,
+// which the simulation keeps one after another (a std::vector per state).
+template <int Cols, class Row>
+py::array state_view(const py::object& self, Row row) {
+  const Simulation& sim = self.cast<const PySimulation&>().read();
+  const int n = sim.block_count();
+  if (n > 1 && row(sim, n - 1) != row(sim, 0) + Cols * (n - 1))
+    throw std::logic_error("the state is not stored as one array: no view");
+  return read_only_view(n > 0 ? row(sim, 0) : nullptr, n, Cols, Cols, self);
+}
+
 // Per-block rows of a state vector: rows[i] = f(i).
 template <int Cols, class F>
 py::array_t<double> per_block(const Simulation& s, F f) {
@@ -395,29 +406,22 @@ void bind_simulation(py::module_& m) {
       .def("contacts", [](const PySimulation& s) { return make_contacts(s.read()); },
            "The contacts of the last force evaluation (dda.Contacts, copies).")
       // --- state, read-only views ---
-      .def("velocity_dofs_view", [](py::object self) {
-            const Simulation& sim = self.cast<const PySimulation&>().read();
-            const int n = sim.block_count();
-            if (n > 1 && &sim.velocity(n - 1)[0] != &sim.velocity(0)[0] + 6 * (n - 1))
-              throw std::logic_error("velocity storage is not contiguous");
-            return read_only_view(n > 0 ? &sim.velocity(0)[0] : nullptr, n, 6, 6, self);
-          },
-          "(n, 6) velocity DOFs as a READ-ONLY VIEW of the simulation's state, no copy: it shows the\n"
-          "values of the current step and changes in place at the next step (copy it to keep them).")
-      .def("displacements_view", [](py::object self) {
-            const Simulation& sim = self.cast<const PySimulation&>().read();
-            const int n = sim.block_count();
-            if (n > 1 && &sim.displacement(n - 1)[0] != &sim.displacement(0)[0] + 6 * (n - 1))
-              throw std::logic_error("displacement storage is not contiguous");
-            return read_only_view(n > 0 ? &sim.displacement(0)[0] : nullptr, n, 6, 6, self);
-          }, "(n, 6) displacement DOFs as a READ-ONLY VIEW (see velocity_dofs_view).")
-      .def("stresses_view", [](py::object self) {
-            const Simulation& sim = self.cast<const PySimulation&>().read();
-            const int n = sim.block_count();
-            if (n > 1 && &sim.stress(n - 1)[0] != &sim.stress(0)[0] + 3 * (n - 1))
-              throw std::logic_error("stress storage is not contiguous");
-            return read_only_view(n > 0 ? &sim.stress(0)[0] : nullptr, n, 3, 3, self);
-          }, "(n, 3) stresses as a READ-ONLY VIEW (see velocity_dofs_view).")
+      .def("velocity_dofs_view",
+           [](const py::object& self) {
+             return state_view<6>(self, [](const Simulation& s, int i) { return &s.velocity(i)[0]; });
+           },
+           "(n, 6) velocity DOFs as a READ-ONLY VIEW of the simulation's state, no copy: it shows the\n"
+           "values of the current step and changes in place at the next step (copy it to keep them).")
+      .def("displacements_view",
+           [](const py::object& self) {
+             return state_view<6>(self, [](const Simulation& s, int i) { return &s.displacement(i)[0]; });
+           },
+           "(n, 6) displacement DOFs as a READ-ONLY VIEW (see velocity_dofs_view).")
+      .def("stresses_view",
+           [](const py::object& self) {
+             return state_view<3>(self, [](const Simulation& s, int i) { return &s.stress(i)[0]; });
+           },
+           "(n, 3) stresses as a READ-ONLY VIEW (see velocity_dofs_view).")
       // --- dda run's time-series row ---
       .def("timeseries_row", [](const PySimulation& s, const std::vector<int>& tracked) {
             const Simulation& sim = s.read();
