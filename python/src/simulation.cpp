@@ -16,6 +16,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "bindings.hpp"
@@ -240,11 +241,12 @@ void bind_simulation(py::module_& m) {
                              py::arg("balance_error") = e.balance_error());
            })
       .def("__repr__", [](const Energy& e) {
-        return "Energy(kinetic=" + std::to_string(e.kinetic) + ", gravity=" + std::to_string(e.gravity) +
-               ", strain=" + std::to_string(e.strain) + ", contact=" + std::to_string(e.contact) +
-               ", friction_spring=" + std::to_string(e.friction_spring) +
-               ", dissipated=" + std::to_string(e.dissipated) + ", balance_error=" + std::to_string(e.balance_error()) +
-               ")";
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "Energy(kinetic=%.6g, gravity=%.6g, strain=%.6g, contact=%.6g, friction_spring=%.6g, "
+                      "dissipated=%.6g, balance_error=%.6g)",
+                      e.kinetic, e.gravity, e.strain, e.contact, e.friction_spring, e.dissipated, e.balance_error());
+        return std::string(buf);
       });
 
   py::class_<Contacts>(m, "Contacts",
