@@ -2,6 +2,7 @@
 cluster: the same table, failed runs as rows, seeds from the parameters,
 lost workers retried."""
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -15,10 +16,13 @@ PARAMS = [{"phi": 20}, {"phi": 30}, {"phi": 30, "kn": -1.0}, {"phi": 25, "speed"
 
 @pytest.fixture(scope="module")
 def cluster():
+    """Two worker processes (each with its nanny, which restarts a lost one) on loopback."""
     distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                  dashboard_address=None, silence_logs=40) as c:
-        yield c
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)  # tornado's make_current, inside distributed
+        with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                      dashboard_address=None, silence_logs=40) as c:
+            yield c
 
 
 def check_table(t):
