@@ -262,6 +262,11 @@ class Scene:
         written out (generated blocks as listed ones), all defaults explicit."""
         return self.scene_file.write_json()
 
+    def __getstate__(self):  # picklable: the document; the library's scene is made again when needed
+        state = dict(self.__dict__)
+        state["_file"] = None
+        return state
+
     def __eq__(self, other):
         return isinstance(other, Scene) and self._doc == other._doc
 

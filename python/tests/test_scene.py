@@ -144,3 +144,10 @@ def test_files_and_dicts_load_alike(scenes_dir):
     assert a.resolved_json() == b.resolved_json() == c.resolved_json()
     with pytest.raises(dda.SceneError, match=r"\.missing: cannot open"):
         dda.load_scene(str(f) + ".missing")
+
+
+def test_a_scene_pickles_as_its_document(scenes_dir):
+    import pickle
+    s = dda.Scene.from_file(scenes_dir / "incline.json")
+    back = pickle.loads(pickle.dumps(s))
+    assert back == s and back.resolved_json() == s.resolved_json()
