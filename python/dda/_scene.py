@@ -18,11 +18,6 @@ __all__ = ["Scene", "JointSet", "load_scene"]
 #: in (0, 180)), spacing normal to the joints (m), a point one joint passes through.
 JointSet = namedtuple("JointSet", "dip_deg spacing origin", defaults=((0.0, 0.0),))
 
-_FILE = "file"      # the positions in messages are the file's
-_STRING = "string"  # ... the string's
-_BUILT = "built"    # no positions: the JSON text is ours (a dict or a scene built in Python)
-
-
 def _plain(x):
     """x with numpy arrays and scalars, tuples and JointSets turned into JSON's lists and numbers."""
     if isinstance(x, JointSet):
@@ -73,7 +68,7 @@ class Scene:
                                 broad_phase=broad_phase, initial_overlap=initial_overlap, dt=dt,
                                 dt_fraction=dt_fraction, duration=duration, max_steps=max_steps,
                                 rotation_update=rotation_update))
-        self._source, self._kind, self._read_max_steps = "<scene>", _BUILT, 0
+        self._source, self._read_max_steps = "<scene>", 0
         self._file = None  # the library's validated scene (None: not validated since the last change)
 
     # --- reading -------------------------------------------------------
@@ -83,7 +78,7 @@ class Scene:
         (as `dda check --max-steps N`)."""
         path = str(path)
         s = cls.__new__(cls)
-        s._source, s._kind, s._read_max_steps = path, _FILE, int(max_steps or 0)
+        s._source, s._read_max_steps = path, int(max_steps or 0)
         s._file = s._library(lambda: _core.load_scene_file(path, s._read_max_steps))
         with open(path, encoding="utf-8") as f:
             s._doc = json.load(f)
@@ -93,7 +88,7 @@ class Scene:
     def from_json(cls, text, max_steps=None):
         """Parses and validates scene JSON text (messages start with "<string>")."""
         s = cls.__new__(cls)
-        s._source, s._kind, s._read_max_steps = "<string>", _STRING, int(max_steps or 0)
+        s._source, s._read_max_steps = "<string>", int(max_steps or 0)
         s._file = s._library(lambda: _core.parse_scene(text, "<string>", s._read_max_steps))
         s._doc = json.loads(text)
         return s
@@ -103,7 +98,7 @@ class Scene:
         """Validates a scene given as a dict of the file's keys (messages start with "<scene>")."""
         s = cls.__new__(cls)
         s._doc = copy.deepcopy(_plain(d))
-        s._source, s._kind, s._read_max_steps = "<scene>", _BUILT, int(max_steps or 0)
+        s._source, s._read_max_steps = "<scene>", int(max_steps or 0)
         s._file = None
         s.check()
         return s
@@ -111,7 +106,7 @@ class Scene:
     # --- building ------------------------------------------------------
     def _changed(self):
         self._file = None
-        self._source, self._kind = "<scene>", _BUILT
+        self._source = "<scene>"
 
     def set(self, key, value):
         """Sets a top-level key of the document (any key of the schema)."""
@@ -205,17 +200,19 @@ class Scene:
         return self
 
     # --- validation and the library's scene ------------------------------
-    def _library(self, call):
+    def _library(self, call, positions=True):
         try:
             return call()
         except _core.RawSceneError as e:
-            raise SceneError.from_library(str(e), self._source, positions=self._kind != _BUILT) from None
+            raise SceneError.from_library(str(e), self._source, positions=positions) from None
 
     def check(self):
         """Validates the scene as `dda check` does (dda.SceneError); returns self."""
         if self._file is None:
+            # Our JSON text of the document: its line and column mean nothing to the user.
             text = json.dumps(self._doc, allow_nan=True)
-            self._file = self._library(lambda: _core.parse_scene(text, self._source, self._read_max_steps))
+            self._file = self._library(lambda: _core.parse_scene(text, self._source, self._read_max_steps),
+                                       positions=False)
         return self
 
     @property
