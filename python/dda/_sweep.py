@@ -143,7 +143,11 @@ def _run_local(make_scene, measure, params, until, threads, workers, retries):
 
 # --- Dask -----------------------------------------------------------------
 def _run_dask(make_scene, measure, params, until, threads, scheduler, retries):
-    from distributed import Client
+    try:
+        from distributed import Client
+    except ImportError as e:
+        raise ImportError("dda.sweep(scheduler=...) runs on Dask's distributed (Debian package "
+                          "python3-distributed)") from e
 
     client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
     try:
