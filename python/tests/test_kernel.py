@@ -154,3 +154,23 @@ def test_intersection_polygon_against_shapely(pair):
     for v in ip:
         pt = Point(v)
         assert sa.distance(pt) <= reach and sb.distance(pt) <= reach, (sa.distance(pt), sb.distance(pt), tol)
+
+
+def test_the_normal_force_is_minus_the_gradient_of_the_contact_energy():
+    # Eq. 10: f = -dE/dx for the contact polygon moved by x. A triangle's
+    # corner pressed into a square, off-centre; central differences of the
+    # exact contact energy against the exact-envelope force.
+    tri = np.array([[0.3, 0.9], [1.4, 1.6], [0.2, 1.8]])
+    sq = SQUARE * 1.2
+    kn, h = 1e7, 0.8
+
+    def energy(shift):
+        return kernel.normal_contact_force(tri + shift, sq, kn=kn, h_cp=h, h_tp=h,
+                                           integration="exact_envelope")["energy"]
+
+    f = kernel.normal_contact_force(tri, sq, kn=kn, h_cp=h, h_tp=h, integration="exact_envelope")
+    assert f["valid"] and f["energy"] > 0
+    step = 1e-6
+    grad = np.array([(energy([step, 0]) - energy([-step, 0])) / (2 * step),
+                     (energy([0, step]) - energy([0, -step])) / (2 * step)])
+    assert np.allclose(f["force"], -grad, rtol=1e-5, atol=1e-6 * np.abs(f["force"]).max())
