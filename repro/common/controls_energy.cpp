@@ -1,4 +1,4 @@
-// Negative controls of the energy-account rows (issue 23, item 4) of the
+// Negative controls of the energy-account rows of the
 // Paper B drivers: each test applies the driver's own criterion (from the
 // driver's header) to a deliberately wrong account and asserts FAIL, and
 // that the paper's run passes. Part of repro_controls_tests (the main is in

@@ -70,7 +70,7 @@ void b9_names_test(const std::string& key, const char* test) {
 }  // namespace
 
 TEST_CASE(prisms::kTestSubTouch, "[controls][B-6][submodel]") {
-  b6_names_test("Sect. 5 as written (sub-model): the touch", prisms::kTestSubTouch);
+  b6_names_test("Sect. 5's sub-model (our reading): the touch", prisms::kTestSubTouch);
   CHECK(prisms::touch_time_exact(sub_run().r.touch));
   const prisms::Result wide = sub_prisms([](dda::cdem::CdemScene& s) {
     for (dda::Vec2& p : s.blocks[1].outline) p.x += 0.1;
@@ -80,7 +80,7 @@ TEST_CASE(prisms::kTestSubTouch, "[controls][B-6][submodel]") {
 }
 
 TEST_CASE(prisms::kTestSubEnergy, "[controls][B-6][submodel]") {
-  b6_names_test("Sect. 5 as written (sub-model): the energy", prisms::kTestSubEnergy);
+  b6_names_test("Sect. 5's sub-model (our reading): the energy", prisms::kTestSubEnergy);
   CHECK(prisms::energy_never_grows(sub_run().r.accounts));
   std::vector<dda::cdem::CdemEnergyAccount> grown = sub_run().r.accounts;
   grown.back().kinetic = 1.01 * grown.back().initial;  // a row 1 % above E0
@@ -104,7 +104,7 @@ TEST_CASE(prisms::kTestSubEnergy, "[controls][B-6][submodel]") {
 }
 
 TEST_CASE(prisms::kTestSubMomentum, "[controls][B-6][submodel]") {
-  b6_names_test("Sect. 5 as written (sub-model): momentum", prisms::kTestSubMomentum);
+  b6_names_test("Sect. 5's sub-model (our reading): momentum", prisms::kTestSubMomentum);
   // k = 1: each sub-model is its parent element (no free sub-node), the
   // returned forces are the element's own: momentum to round-off.
   const prisms::Result k1 = sub_prisms([](dda::cdem::CdemScene& s) {
