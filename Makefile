@@ -20,7 +20,8 @@ PREFIX     ?= /usr/local
 # Debian packages the project needs (tool chain first, then libraries, then Python).
 DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
             libbenchmark-dev libbox2d-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil \
-            python3-vtk9
+            python3-vtk9 python3-dev pybind11-dev python3-pybind11 python3-pytest python3-hypothesis \
+            python3-shapely python3-distributed
 
 BIN := $(BUILD)/bin
 

@@ -43,11 +43,18 @@ enum class StopReason : std::uint8_t {
 };
 
 // A run that went wrong (non-finite state, a collapsed block); what() says
-// the step, the time, the block and what was exceeded; reason() the guard.
+// the step, the time, the block and what was exceeded; reason the guard.
+// The same facts as fields, for callers that act on them (the Python
+// module's exception): set by Simulation's guards, left at "not known"
+// (-1, NaN) where a thrower does not know them.
 struct SimulationError : std::runtime_error {
   explicit SimulationError(const std::string& what, StopReason why = StopReason::kOther)
       : std::runtime_error(what), reason(why) {}
   StopReason reason;
+  std::int64_t step = -1;   // the step that failed (its count after the step)
+  double time = NAN;        // its time, s
+  int block = -1;           // the block named (-1: none)
+  int pair_a = -1, pair_b = -1;  // the pair named, pair_a < pair_b (-1: none)
 };
 
 // Throws SceneError for the first problem found in the scene.
