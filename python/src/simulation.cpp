@@ -23,6 +23,7 @@
 #include "dda/io/run.hpp"
 #include "dda/io/scene_file.hpp"
 #include "dda/simulation.hpp"
+#include "dda/stepper.hpp"
 
 namespace dda::py_bindings {
 
@@ -61,7 +62,8 @@ class PySimulation {
     if (threads < 1) throw py::value_error("threads: must be >= 1");
     {
       py::gil_scoped_release release;  // a settle (damping.settle_time) may take long
-      sim_ = std::make_unique<Simulation>(file_->scene);
+      stepper_ = std::make_unique<dda::SimulationStepper>(Simulation(file_->scene));
+      sim_ = &stepper_->simulation();
     }
     // As `dda run`: with dt_fraction > 0 the step count is known only now.
     io::check_step_count(*file_, sim_->dt(), label);
@@ -76,6 +78,10 @@ class PySimulation {
   Simulation& write() {
     if (busy_.load(std::memory_order_acquire)) throw std::runtime_error(kBusy);
     return *sim_;
+  }
+  const dda::Stepper& stepper() const {
+    (void)read();
+    return *stepper_;
   }
   const io::SceneFile& file() const { return *file_; }
   std::shared_ptr<io::SceneFile> file_ptr() const { return file_; }
@@ -117,7 +123,9 @@ class PySimulation {
  private:
   static constexpr const char* kBusy = "the simulation is stepping in another thread";
   std::shared_ptr<io::SceneFile> file_;
-  std::unique_ptr<Simulation> sim_;
+  // The simulation behind the stepping interface that `dda run`'s outputs read.
+  std::unique_ptr<dda::SimulationStepper> stepper_;
+  Simulation* sim_ = nullptr;  // stepper_'s simulation
   std::atomic<bool> busy_{false};
 };
 
@@ -430,7 +438,7 @@ void bind_simulation(py::module_& m) {
             for (int i : tracked)
               if (i < 0 || i >= sim.scene_block_count()) throw py::index_error("tracked block out of range");
             py::list row;
-            for (const io::CsvValue& v : io::timeseries_row(sim, tracked)) {
+            for (const io::CsvValue& v : io::timeseries_row(s.stepper(), tracked)) {
               if (v.is_integer) row.append(py::int_(v.integer));
               else row.append(py::float_(v.number));
             }
@@ -438,7 +446,8 @@ void bind_simulation(py::module_& m) {
           }, py::arg("tracked"),
           "The row `dda run` writes to timeseries.csv for these scene blocks (see timeseries_header).");
 
-  m.def("timeseries_header", &io::timeseries_header, py::arg("tracked"),
+  m.def("timeseries_header", [](const std::vector<int>& tracked) { return io::timeseries_header(tracked); },
+        py::arg("tracked"),
         "Column names of `dda run`'s timeseries.csv for these scene blocks.");
   m.def("format_number", &io::format_number, "Shortest decimal text that reads back to the same double.");
 
