@@ -1,6 +1,7 @@
 # Two user commands:  make repro  (every figure + the claims report)  and  make test.
 # Both first install what is missing (Debian packages, as root), then build.
 # Generated files go to $(OUT)/ (ignored by git); the build tree is $(BUILD)/.
+# CI (.ci/run) runs make test, then make sanitize.
 
 BUILD      ?= build
 OUT        ?= out
@@ -8,16 +9,24 @@ BUILD_TYPE ?= Release
 PY         := /usr/bin/python3
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 FUZZ_CASES ?= 1000000
+# Link-time optimisation of the library (CMake option DDA_LTO, on by default
+# for a plain cmake build). Off here: with it every executable's link
+# recompiles the library (~10 CPU-seconds per link, ~40 executables), which
+# would dominate make test after a change to one library file. Same bits
+# either way; LTO=ON makes a collapse step 2-4 % faster (docs/performance.md).
+LTO        ?= OFF
+PREFIX     ?= /usr/local
 
 # Debian packages the project needs (tool chain first, then libraries, then Python).
 DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
             libbenchmark-dev libbox2d-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil \
-            python3-vtk9
+            python3-vtk9 python3-dev pybind11-dev python3-pybind11 python3-pytest python3-hypothesis \
+            python3-shapely python3-distributed
 
 BIN := $(BUILD)/bin
 
 .PHONY: all deps configure build test sanitize repro fuzz bench profile clean figures report verdicts verdict-run \
-        expected-verdicts
+        expected-verdicts install
 
 all: build
 
@@ -34,20 +43,29 @@ deps:
 	else echo "== all Debian packages present"; fi
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) > /dev/null
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DDDA_LTO=$(LTO) > /dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# ctest (unit, scene-file, CDEM, property, example and install tests), then
+# the verdicts. The sanitizer run is make sanitize (CI runs it after this).
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory verdicts
-	@$(MAKE) --no-print-directory sanitize
+
+# Headers, libraries, the dda command and the CMake package into $(PREFIX)
+# (find_package(dda CONFIG REQUIRED) with CMAKE_PREFIX_PATH=$(PREFIX)).
+install: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target dda dda_cdem dda_io dda_cli
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # The unit, scene-file (io), CDEM and property tests once more, built with
 # AddressSanitizer + UndefinedBehaviorSanitizer (DDA_SANITIZE, no recovery:
 # any report fails the test) in a separate build tree; property tests with
 # SANITIZE_PROPERTY_CASES cases each. No repro drivers, no benchmarks.
+# Not part of make test (a second, instrumented build of the library and the
+# CGAL tests); .ci/run runs it after make test.
 SANITIZE_BUILD          ?= $(BUILD)-asan
 SANITIZE_PROPERTY_CASES ?= 2000
 SANITIZE_TARGETS        := unit_tests io_tests io_scene_fuzz dda_cli cdem_tests property_tests
@@ -145,9 +163,14 @@ profile: build
 	done
 
 # 'repro' builds the tools, then a sub-make rebuilds only the figures whose
-# driver binary, data or script changed (one rule per figure below).
+# driver binary, data or script changed (one rule per figure below). The
+# report gives the wall time since REPRO_START: when this make started (the
+# sub-make gets the top-level value), so a 'make repro' counts its build too.
+ifndef REPRO_START
+REPRO_START := $(shell date +%s)
+endif
 repro: build
-	@$(MAKE) --no-print-directory figures report
+	@$(MAKE) --no-print-directory figures report REPRO_START=$(REPRO_START)
 
 clean:
 	rm -rf $(BUILD) $(OUT)
@@ -162,5 +185,5 @@ figures: $(FIGS)
 
 report: $(OUT)/report.md
 $(OUT)/report.md: figures/report.py $(wildcard $(OUT)/claims/*.csv) $(FIGS)
-	$(PY) figures/report.py $(OUT)/claims $@ $(OUT)/claims.json
+	$(PY) figures/report.py --build $(BUILD) --started $(REPRO_START) $(OUT)/claims $@ $(OUT)/claims.json
 	@echo "== report: $@"

@@ -73,15 +73,17 @@ repro::Claim row(const Result& near, const Result& far, double far_offset) {
            repro::format_short(r.worst_area, 3) + " of the bound, " + std::to_string(r.beyond) + " beyond";
   };
   repro::Claim c{"3.1.3",
-                 "the intersection polygon is the exact intersection of the two blocks, within the bounds of "
-                 "overlap.hpp (CGAL exact reference)",
-                 "Sect. 3.1.3: the contact integrals run over the intersection polygon of CP and TP",
+                 "the intersection polygon is the exact intersection of the two blocks, within the round-off bounds "
+                 "the library states (an exact-arithmetic reference)",
+                 "'After the cycling of each CP edges, the remaining polygon is IP' (Sect. 3.1.3)",
                  "at the origin: " + text(near) + "; offset by " + repro::format_short(far_offset) + " m: " + text(far),
-                 "every vertex within kIpVertexReach tol of both blocks and |area - exact area| <= kIpAreaBound "
-                 "(n + m) tol D on every pair, at least 500 pairs each",
+                 "every vertex within " + repro::format_short(dda::kIpVertexReach) + " tol of both blocks and |area - "
+                 "exact area| <= " + repro::format_short(dda::kIpAreaBound) + " (n + m) tol D on every pair, at least "
+                 "500 pairs each",
                  near.pairs >= 500 && far.pairs >= 500 && near.beyond == 0 && far.beyond == 0};
   c.key = "intersection-polygon-exact";
   c.control = "geometry_claims_control";
+  c.scope = repro::Scope::kPaper;
   return c;
 }
 
@@ -104,8 +106,7 @@ int main(int argc, char** argv) try {
                 c.measured.c_str());
     return c.pass ? 1 : 0;
   }
-  repro::explain_fail(c, repro::Cause::kImplementation,
-                      "the clipper must meet the bounds its header states; needs an issue note");
+  repro::explain_fail(c, repro::Root::kUnexplained, "the clipper must meet the bounds the library states; not explained");
   const std::string out = repro::out_dir(argc, argv);
   repro::write_claims(repro::claims_path(out, "3_1_exact_geometry"), {c});
   std::fprintf(stderr, "[3.1.3 exact geometry] %s: %s\n", c.pass ? "PASS" : "FAIL", c.measured.c_str());

@@ -68,6 +68,9 @@ double x_extent(const Polygon& ip) {
 struct Outcome {
   bool stopped = false;  // SimulationError
   StopReason reason = StopReason::kOther;
+  std::int64_t stop_step = -1, steps = -1;  // the error's step and the simulation's count after it
+  double stop_time = -1.0, time = -1.0;
+  int pair_a = -1, pair_b = -1, block = -1;
   bool passed = false;   // centroids' order along x swapped at the end (or at the stop)
   double max_depth = 0.0;  // largest x-extent of the exact overlap seen (every 10 steps), m
   std::string message;
@@ -88,6 +91,9 @@ Outcome run(const Scene& s) {
     o.stopped = true;
     o.message = e.what();
     o.reason = e.reason;
+    o.stop_step = e.step, o.stop_time = e.time;
+    o.pair_a = e.pair_a, o.pair_b = e.pair_b, o.block = e.block;
+    o.steps = sim.step_count(), o.time = sim.time();
   }
   o.passed = sim.centroid(0).x > sim.centroid(1).x;
   o.hash = state_hash(sim);
@@ -100,7 +106,7 @@ Scene unguarded(Scene s) {
   return s;
 }
 
-bool has(const std::string& text, const char* part) { return text.find(part) != std::string::npos; }
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
 
@@ -133,6 +139,10 @@ TEST_CASE("penetration guard: no impact passes through unstopped; bounces are un
           CHECK(has(on.message, "step "));
           CHECK(has(on.message, "(t = "));
           CHECK(has(on.message, "pair (0, 1) = block 0 'A' and block 1 'B'"));
+          // The same facts as fields: the pair, the step and time the simulation stopped at.
+          CHECK((on.pair_a == 0 && on.pair_b == 1 && on.block == -1));
+          CHECK((on.stop_step == on.steps && on.stop_time == on.time && on.steps > 0));
+          CHECK(has(on.message, "step " + std::to_string(on.stop_step) + " (t = "));
           CHECK(has(on.message, "dt/dt_crit"));
           CHECK(has(on.message, "contact.kn"));
           const bool depth =

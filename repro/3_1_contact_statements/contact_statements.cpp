@@ -34,28 +34,32 @@ int main(int argc, char** argv) try {
   std::vector<repro::Claim> claims;
   claims.push_back(contact_statements::entrance_row(pairs));
   claims.back().control = "repro_controls: 3.1.2 entrance block: FAIL when A is not reflected";
+  claims.back().scope = repro::Scope::kPaper;
   std::vector<contact_statements::GradientSample> exact, paper;
   claims.push_back(contact_statements::gradient_row(pairs, dda::Integration::kExactEnvelope,
                                                     contact_statements::Variant::kAsPublished, &exact));
   claims.back().control = "repro_controls: 3.2.1 energy gradient: FAIL when the force leaves out TP's potential";
-  repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                      "the exact integration should be the energy's gradient; not explained, needs an issue note");
+  claims.back().scope = repro::Scope::kOption;
+  repro::explain_fail(claims.back(), repro::Root::kUnexplained,
+                      "the exact integration should be the energy's gradient; not explained");
   claims.push_back(contact_statements::gradient_row(pairs, dda::Integration::kPaperBisector,
                                                     contact_statements::Variant::kAsPublished, &paper));
   claims.back().control = "repro_controls: 3.2.1 energy gradient: FAIL when the force leaves out TP's potential";
-  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+  claims.back().scope = repro::Scope::kPaper;
+  repro::explain_fail(claims.back(), repro::Root::kSegmentation,
                       "the segmentation of Sect. 3.2.3 (IP edges split at the bisector crossings and midpoints, "
                       "Eq. 16's trapezoid rule) is exact only where those are all the kinks of phi along an edge; "
                       "on the others the force is off the energy's gradient; the exact integration beyond the paper "
                       "(row above) passes");
   claims.push_back(contact_statements::moment_row(pairs, dda::Integration::kExactEnvelope));
   claims.back().control = "repro_controls: 3.2.4 moment about pg: FAIL about the IP centroid";
-  repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                      "with the exact force the line through pg should carry no moment; not explained, needs an "
-                      "issue note");
+  claims.back().scope = repro::Scope::kOption;
+  repro::explain_fail(claims.back(), repro::Root::kUnexplained,
+                      "with the exact force the line through pg should carry no moment; not explained");
   claims.push_back(contact_statements::moment_row(pairs, dda::Integration::kPaperBisector));
   claims.back().control = "repro_controls: 3.2.4 moment about pg: FAIL about the IP centroid";
-  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+  claims.back().scope = repro::Scope::kPaper;
+  repro::explain_fail(claims.back(), repro::Root::kSegmentation,
                       "the segment forces of Sect. 3.2.3 are off the energy's derivatives (the gradient row "
                       "above), so the moment they give, and pg with it, is off too; the exact integration beyond "
                       "the paper (row above) passes");

@@ -116,7 +116,7 @@ inline repro::Claim entrance_row(const std::vector<Pair>& pairs, Variant variant
     disagree += inside != reference;
   }
   return {"3.1.2", "A and B overlap if and only if A's reference point a0 lies inside the entrance block E(A, B)",
-          "Sect. 3.1.2, Table 2: \"a0 in E: A and B overlap\"",
+          "'If ao is in E(A,B), overlap occurs; if ao is out of E(A,B), two blocks are detached' (Sect. 3.1.2)",
           std::to_string(decided) + " random convex pairs (" + std::to_string(overlapping) + " overlapping; " +
               std::to_string(banded) + " within the tolerance of touching left out): " + std::to_string(disagree) +
               " verdicts differ from a separating-axis test on both polygons' edge normals",
@@ -188,7 +188,8 @@ inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integratio
   return {"3.2.1",
           std::string("the normal force on CP is the negative gradient of the contact energy (Eqs. 10-11), ") +
               (exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)"),
-          "Eq. 10: f = -grad of the potential energy of the overlap; Eq. 11 its boundary form",
+          "'the integral of potential on an edge can be computed accurately piece by piece' (Sect. 3.2.3), for the "
+          "force of Eqs. 10-11",
           std::to_string(used) + " random overlapping convex pairs (IP area >= 1e-3 m^2): largest |f + grad E| / "
               "|grad E| " + repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 "
               "(grad E: central difference of the exact contact energy, step 1e-5 m)",
@@ -226,7 +227,8 @@ inline repro::Claim moment_row(const std::vector<Pair>& pairs, dda::Integration 
   return {"3.2.4",
           std::string("the contact force acts on a line through pg: its moment about pg vanishes (Eq. 20), ") +
               (exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)"),
-          "Eq. 20: the acting line is where the moment of the segment forces vanishes; pg lies on it",
+          "'the acting line lng along which the moment of total normal contact force is zero' (Sect. 3.2.4, Eq. 20); "
+          "pg lies on it",
           std::to_string(used) + " random overlapping convex pairs: largest |M_pg| / (|f| sqrt(IP area)) " +
               repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 (M_pg = -dE/dtheta "
               "for CP turned about pg, central difference of the exact contact energy, step 1e-6 rad)",

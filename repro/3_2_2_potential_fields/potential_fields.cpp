@@ -90,8 +90,11 @@ int main(int argc, char** argv) try {
   // ones; Eqs. 13-14 vs the distance to the boundary segments; the largest
   // potential (criteria in potential_fields.hpp).
   claims.push_back(equal_penetration_row(poly, eq12));
+  claims.back().scope = repro::Scope::kPaper;
   claims.push_back(edge_lines_row(pa, ga));
+  claims.back().scope = repro::Scope::kPaper;
   claims.push_back(inscribed_row(poly, ga, eq12));
+  claims.back().scope = repro::Scope::kExtension;  // follows from Eqs. 12-14; the paper does not state it
 
   // ---------------- (b) Fig. 5: concave polygon ------------------------------
   const std::vector<Vec2> pb = concave_polygon();
@@ -115,7 +118,9 @@ int main(int argc, char** argv) try {
   // Independent check of the segment-distance evaluation (a dense sampling of
   // the boundary), and the edge-line formula applied blindly.
   claims.push_back(nearest_point_row(pb, gb));
+  claims.back().scope = repro::Scope::kPaper;
   claims.push_back(concave_lines_row(pb, gb));
+  claims.back().scope = repro::Scope::kPaper;
 
   // H of Eq. 12 per paper scene under both rules the paper states: Sect.
   // 3.2.2 ("the average length of all polygon edges of the assembly") and
@@ -147,6 +152,7 @@ int main(int argc, char** argv) try {
           "mean edge " + format_short(h_mean, 4) + " m; (largest + smallest) / 2 " + format_short(h_minmax, 4) +
               " m (used in our runs); ratio " + format_short(h_minmax / h_mean, 3),
           "information: the paper gives no H values"));
+      claims.back().scope = repro::Scope::kExtension;  // the two rules compared: not a statement of the paper
     }
   }
 

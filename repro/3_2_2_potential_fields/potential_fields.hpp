@@ -241,20 +241,22 @@ inline void add_common_claims(std::vector<Claim>& claims, const std::string& fig
   const InteriorStats s = interior_stats(g);
   const double zero_tol = 1e-12 * kKn / kH;  // round-off of a unit-size coordinate difference
   claims.push_back({kSection, figure_tag(fig) + ": potential is zero on the boundary and positive inside",
-                    "Eq. 12: phi = 0 outside, kn*d_exit/H inside; 'potential values of any points on polygon "
-                    "boundary should be equal'",
+                    "'the potential values of any points on polygon boundary should be equal and the definition "
+                    "satisfies this requirement' (Sect. 3.2.2, Eq. 12)",
                     "max |phi| on boundary = " + format_short(bmax, 3) + " Pa; min phi at " +
                         std::to_string(s.interior) + " interior grid points = " + format_short(s.min_phi, 4) + " Pa",
                     "boundary <= " + format_short(zero_tol, 2) + " Pa; interior min > 0",
                     bmax <= zero_tol && s.interior > 0 && s.min_phi > 0.0});
   claims.back().control = kFieldControl;
+  claims.back().scope = repro::Scope::kPaper;
   claims.push_back({kSection, figure_tag(fig) + ": every interior point has a defined potential (no undefined inner region)",
                     "'the proposed definition ensures the potential value can be obtained for each point inside a "
-                    "polygon' (Fig. 4a's previous definition leaves a large inner part undefined)",
+                    "polygon' (Sect. 3.2.2, Fig. 4)",
                     std::to_string(s.undefined) + " of " + std::to_string(s.interior) +
                         " interior grid points with phi <= 0 or non-finite",
                     "0 points", s.interior > 0 && s.undefined == 0});
   claims.back().control = kFieldControl;
+  claims.back().scope = repro::Scope::kPaper;
   const double slope = max_slope(g);
   claims.push_back({kSection, figure_tag(fig) + ": phi is continuous with slope at most kn/H",
                     "d_exit is a shortest distance, so it changes no faster than p moves (kn/H = 1 Pa/m)",
@@ -262,6 +264,7 @@ inline void add_common_claims(std::vector<Claim>& claims, const std::string& fig
                         " grid = " + format_short(slope, 6) + " Pa/m",
                     "<= kn/H * (1 + 1e-9)", slope <= (kKn / kH) * (1.0 + 1e-9)});
   claims.back().control = kFieldControl;
+  claims.back().scope = repro::Scope::kExtension;  // a property Eqs. 12-14 imply, not a statement of the paper
 }
 
 // ---- figure-specific checks --------------------------------------------------
@@ -326,7 +329,8 @@ inline Claim equal_penetration_row(const dda::Polygon& poly, Phi phi) {
     worst_rel = std::max(worst_rel, std::fabs(v - kKn * delta / kH) / (kKn * delta / kH));
   }
   Claim c{kSection, figure_tag("Fig. 4b") + ": the same penetration below any edge, small edges included, gives the same potential",
-          "'with the same H value ... the contact potential of the points with the same penetrations keeps equal'",
+          "'with the same H value ... it ensures the contact potential of the points with the same penetrations "
+          "keeps equal' (Sect. 3.2.2)",
           "max relative deviation from kn*delta/H at delta = " + format_short(delta, 3) + " m below the " +
               std::to_string(poly.count) + " edge midpoints (edges " + format_short(min_edge, 3) + " to " +
               format_short(max_edge, 3) + " m) = " + format_short(worst_rel, 3),
@@ -346,7 +350,8 @@ inline Claim edge_lines_row(const std::vector<Vec2>& pts, const Grid& g) {
         line_vs_segment = std::max(line_vs_segment, std::fabs(g.d_exit[k] - boundary_distance(pts, g.at(i, j))));
     }
   Claim c{kSection, figure_tag("Fig. 4b") + ": Eqs. 13-14 (edge lines) equal the shortest distance to the boundary",
-          "Eq. 13: d_exit = min |d_eip| over the edges for a convex polygon",
+          "'Using this definition for convex polygons, the shortest distance ... can be obtained by' Eq. 13 "
+          "(Sect. 3.2.2)",
           "max |d_exit - distance to boundary segments| at interior grid points = " + format_short(line_vs_segment, 3) +
               " m",
           "<= 1e-12 m", line_vs_segment <= kLineTolerance};
@@ -397,7 +402,7 @@ inline Claim nearest_point_row(const std::vector<Vec2>& pts, const Grid& g) {
       ++checked;
     }
   Claim c{kSection, figure_tag("Fig. 5") + ": phi equals kn/H times the distance to the nearest boundary point",
-          "Eq. 12: 'a point penetrated in a polygon will always be pushed out along the shortest path'",
+          "'a point penetrated in a polygon will always be pushed out along the shortest path' (Sect. 3.2.2, Fig. 5)",
           "max |phi - kn/H * distance to " + std::to_string(samples.size()) + " boundary samples| at " +
               std::to_string(checked) + " interior points = " + format_short(worst_sample, 3) + " Pa",
           "<= kn/H * half the sample spacing = " + format_short(kKn * max_seg / (2 * kH), 3) + " Pa",
@@ -417,7 +422,8 @@ inline Claim concave_lines_row(const std::vector<Vec2>& pts, const Grid& g) {
       if (edge_line_distance(pts, g.at(i, j)) <= 0.0) ++fails;
     }
   Claim c{kSection, figure_tag("Fig. 5") + ": Eqs. 13-14 (edge lines) alone do not give the concave potential",
-          "Eq. 13 is stated for convex polygons; the paper decomposes the concave polygon into convex parts",
+          "'obtained by decomposing the concave polygon into six convex ones' (Sect. 3.2.2, Fig. 5): Eq. 13 is "
+          "stated for convex polygons",
           std::to_string(fails) + " of " + std::to_string(interior) +
               " interior grid points get d_exit <= 0 from the edge-line formula",
           "> 0 points (the convex formula fails, so the shortest-distance evaluation is needed)", fails > 0};

@@ -163,12 +163,14 @@ inline Impact impact_depth(const dda::paper::SmallEdgeImpact& si) {
 inline repro::Claim undefined_row(const FieldScan& f, double depth, double r_in) {
   repro::Claim c{"3.2.2",
                  "Fig. 4a (reconstructed definition and polygon): the previous sub-polygon potential leaves a large inner part undefined",
-                 "Fig. 4a: 'a large inner part' without a valid potential",
+                 "'there would be a large inner part without a valid potential definition when the previous "
+                 "definition is used' (Sect. 3.2.2, Fig. 4a)",
                  format_short(100.0 * f.undefined(), 3) + " % of " + std::to_string(f.inside) +
                      " interior grid points lie in no sub-polygon (offset depth d* = " + format_short(depth, 3) +
                      " m vs inscribed radius " + format_short(r_in, 3) + " m)",
                  "> 10 % of the area (criterion set before the run)", f.undefined() > kLargeUndefined};
   c.control = std::string("repro_controls: ") + kControlUndefined;
+  c.scope = repro::Scope::kPaper;
   return c;
 }
 
@@ -177,6 +179,7 @@ inline repro::Claim hexagon_row(double ratio) {
                  "(the small edges are the cause)", "d* / inscribed radius = " + format_short(ratio, 6),
                  "= 1 within 1e-9", std::fabs(ratio - 1.0) < kRatioTolerance};
   c.control = std::string("repro_controls: ") + kControlHexagon;
+  c.scope = repro::Scope::kExtension;
   return c;
 }
 
@@ -186,18 +189,20 @@ inline repro::Claim mismatch_row(const FieldScan& f) {
                  "max |phi_previous - phi_current| = " + format_short(f.mismatch, 3) + " Pa", "<= 1e-12 Pa",
                  f.mismatch <= kMismatchTolerance};
   c.control = std::string("repro_controls: ") + kControlMismatch;
+  c.scope = repro::Scope::kExtension;
   return c;
 }
 
 inline repro::Claim impact_row(const Impact& r) {
   repro::Claim c{"5.3", "the 5.3 impact on the 0.01 m edge reaches the part where the previous potential is undefined",
-                 "Sect. 5.3: 'part of the intersection polygon may locate to the inner parts without potential function "
-                 "definition when previous approach [56] is applied'",
+                 "'part of the intersection polygon may locate to the inner parts without potential function "
+                 "definition when previous approach [56] is applied' (Sect. 5.3)",
                  "lower block's offset depth d* = " + format_short(r.lower_depth, 3) + " m; deepest IP vertex " +
                      format_short(r.deepest, 3) + " m; deeper than d* in " + std::to_string(r.beyond) + " of " +
                      std::to_string(r.contact_steps) + " contact steps",
                  "> 0 steps", r.beyond > 0};
   c.control = std::string("repro_controls: ") + kControlImpact;
+  c.scope = repro::Scope::kPaper;
   return c;
 }
 

@@ -66,14 +66,14 @@ inline const char* const kKeyEnergy = "energy";
 inline std::vector<repro::Claim> claims(const Result& r) {
   using repro::format_short;
   std::vector<repro::Claim> c = {
-      {"4.1", "block A stops after the impact", "Fig. 8: v_A -> 0", "v_A(1 s) = " + format_short(r.va) + " m/s",
+      {"4.1", "block A stops after the impact", "'the two blocks exchange their kinetic energy during the collision process' (Sect. 4.1, Fig. 8): v_A -> 0", "v_A(1 s) = " + format_short(r.va) + " m/s",
        "|v_A| < " + format_short(kVelocityTol) + " m/s", std::fabs(r.va) < kVelocityTol},
-      {"4.1", "block B leaves with A's speed", "Fig. 8: v_B -> 1 m/s", "v_B(1 s) = " + format_short(r.vb) + " m/s",
+      {"4.1", "block B leaves with A's speed", "'the two blocks exchange their kinetic energy' (Sect. 4.1, Fig. 8): v_B -> 1 m/s", "v_B(1 s) = " + format_short(r.vb) + " m/s",
        "|v_B - 1| < " + format_short(kVelocityTol) + " m/s", std::fabs(r.vb - kSpeedA) < kVelocityTol},
-      {"4.1", "momentum is conserved", "'the results satisfy the conservation of momentum'",
+      {"4.1", "momentum is conserved", "'the results satisfy the conservation of momentum' (Sect. 4.1, Fig. 8)",
        "max |p - p0| / p0 = " + format_short(r.worst_momentum, 3), "< " + format_short(kMomentumTol),
        r.worst_momentum < kMomentumTol},
-      {"4.1", "energy is conserved through the collision (no damping)", "kinetic energy exchanged",
+      {"4.1", "energy is conserved through the collision (no damping)", "'the two blocks exchange their kinetic energy' (Sect. 4.1): none lost",
        "max |E - E0| / E0 = " + format_short(r.worst_energy, 3) + "; contact from t = " + format_short(r.t_first) +
            " to " + format_short(r.t_last) + " s",
        "< " + format_short(kEnergyTol), r.worst_energy < kEnergyTol},
@@ -86,6 +86,7 @@ inline std::vector<repro::Claim> claims(const Result& r) {
   for (std::size_t i = 0; i < c.size(); ++i) {
     c[i].key = keys[i];
     c[i].control = std::string("repro_controls: ") + controls[i];
+    c[i].scope = repro::Scope::kPaper;
   }
   return c;
 }

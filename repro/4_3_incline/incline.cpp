@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     progress("phi = " + format_short(phi) + ": l = " + format_short(r.distance, 6) + " m, Eq. 30 " +
              format_short(r.analytic, 6) + " m");
     claims.push_back(incline::eq30_row(phi, r));
-    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+    repro::explain_fail(claims.back(), repro::Root::kFrictionStartUp,
                         "Table 4's finite kt = 1e7 N/m: B first sticks elastically and gains a lead that rigid "
                         "Coulomb friction (Eq. 30) does not have (predicted below), and the friction torque rocks B "
                         "on the soft contact of the paper's H = 6.5 m; the friction start-up option beyond the "
@@ -77,19 +77,20 @@ int main(int argc, char** argv) {
                       "|rel. error| < 1 %", incline::eq30_met(s)});
     claims.back().control =
         phi > 0.0 ? incline::kControlEq30Friction : repro::control_test(incline::kControlEq30Frictionless);
-    repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                        "the start-up option should remove the stick-phase lead; not explained, needs an issue note");
+    claims.back().scope = repro::Scope::kOption;
+    repro::explain_fail(claims.back(), repro::Root::kUnexplained,
+                        "the start-up option should remove the stick-phase lead; not explained");
   }
   csv.commit();
   option_csv.commit();
   {
     const Run r = run(dda::paper::incline(incline::kRestPhi), nullptr, incline::kRestPhi, update);
     claims.push_back(incline::rest_row(r));
-    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+    repro::explain_fail(claims.back(), repro::Root::kFrictionStartUp,
                         "the paper's undamped explicit scheme loads the stick spring (Eq. 26, kt = 1e7 N/m) suddenly: "
                         "the shear demand overshoots to twice its static value, 2 m g sin 30 = 1.0 m g, beyond the "
                         "limit m g cos 30 tan 35 = 0.61 m g, so B slips in its stick oscillations (analytic); the "
-                        "return-mapping update (--return-mapping 1) still moves B 0.11 m, so it is not the re-stick "
+                        "return-mapping update still moves B 0.11 m, so it is not the re-stick "
                         "ratchet; the friction start-up option beyond the paper (next row) passes");
     progress("phi = " + format_short(incline::kRestPhi) + ": moved " + format_short(r.distance, 3) + " m");
     // Beside it, the friction start-up option (not the paper's): the stick
@@ -98,9 +99,10 @@ int main(int argc, char** argv) {
     c.section = "4.3 (option)";
     c.claim += ", friction start-up option (settled with sticking contacts, not the paper's start)";
     c.key = "rest-start-up";
+    c.scope = repro::Scope::kOption;
     claims.push_back(c);
-    repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                        "the start-up option should remove the sudden loading; not explained, needs an issue note");
+    repro::explain_fail(claims.back(), repro::Root::kUnexplained,
+                        "the start-up option should remove the sudden loading; not explained");
   }
   // Creep after a stop, with each friction update (incline::creep).
   for (dda::FrictionUpdate u : {dda::FrictionUpdate::kPaper, dda::FrictionUpdate::kReturnMapping}) {
@@ -113,15 +115,13 @@ int main(int argc, char** argv) {
                           (paper ? "paper's friction update (Eq. 26)" : "return-mapping friction update (not the paper's)"),
                       "Coulomb friction: no motion once stopped",
                       "slid " + format_short(early * 1e3, 3) + " mm, then creeps at " + format_short(rate * 1e3, 3) +
-                          " mm/s" +
-                          (paper ? " (cause if FAIL: the paper's method, Eq. 26's friction update: the return mapping "
-                                   "on the same run, next row, stays put)"
-                                 : ""),
+                          " mm/s",
                       "|creep rate| < 1 mm/s", incline::creep_stopped(cr)});
     claims.back().control = repro::control_test(incline::kControlCreep);
-    repro::explain_fail(claims.back(), paper ? repro::Cause::kPaperMethod : repro::Cause::kImplementation,
+    claims.back().scope = paper ? repro::Scope::kExtension : repro::Scope::kOption;
+    repro::explain_fail(claims.back(), paper ? repro::Root::kFrictionUpdate : repro::Root::kUnexplained,
                         paper ? "Eq. 26's friction update: the return mapping on the same run (next row) stays put"
-                              : "the return mapping should stop creep; not explained, needs an issue note");
+                              : "the return mapping should stop creep; not explained");
   }
   // Where the gap comes from. (1) With finite kt the pair starts in an
   // elastic stick phase: friction ramps up from zero until kt |d| reaches
@@ -146,6 +146,7 @@ int main(int argc, char** argv) {
                       "stick phase t* = " + format_short(ts * 1e3, 3) + " ms, predicted rel. lead " +
                           format_short(predicted, 3),
                       "information (no tolerance)", false, repro::Kind::kMeasurement});
+    claims.back().scope = repro::Scope::kExtension;
   }
   // H = 1 m (less rocking) and stiffer kt (shorter stick phase): measured,
   // neither removes the gap (+1.9 % at kt = 1e9 N/m, whatever dt or the
@@ -165,7 +166,8 @@ int main(int argc, char** argv) {
                       "rel. error " + format_short(r.rel_error(), 3) + " (l = " + format_short(r.distance, 5) + " m)",
                       "|rel. error| < 1 %", incline::eq30_met(r)});
     claims.back().control = incline::kControlEq30Friction;
-    repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+    claims.back().scope = repro::Scope::kExtension;
+    repro::explain_fail(claims.back(), repro::Root::kFrictionStartUp,
                         "the paper's start from rest: friction and its torque switched on at once on the undamped "
                         "block, which gains a lead in the stick phase and keeps rocking on its contact (measured: "
                         "independent of dt and of the integration); the friction start-up option beyond the paper "
@@ -177,8 +179,9 @@ int main(int argc, char** argv) {
                       "rel. error " + format_short(s.rel_error(), 3) + " (l = " + format_short(s.distance, 5) + " m)",
                       "|rel. error| < 1 %", incline::eq30_met(s)});
     claims.back().control = incline::kControlEq30Friction;
-    repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                        "the start-up option should remove the sudden start; not explained, needs an issue note");
+    claims.back().scope = repro::Scope::kOption;
+    repro::explain_fail(claims.back(), repro::Root::kUnexplained,
+                        "the start-up option should remove the sudden start; not explained");
   }
   {
     const Run r = run(dda::paper::incline(20.0, 30.0, 1.0, false), nullptr, 20.0, update);
@@ -186,7 +189,8 @@ int main(int argc, char** argv) {
                       "not stated in the paper", "rel. error " + format_short(r.rel_error(), 3),
                       "|rel. error| < 1 %", incline::eq30_met(r)});
     claims.back().control = incline::kControlEq30Friction;
-    repro::explain_fail(claims.back(), repro::Cause::kMissingData,
+    claims.back().scope = repro::Scope::kExtension;
+    repro::explain_fail(claims.back(), repro::Root::kUnstatedSetup,
                         "the paper does not give B's start; dropped onto the slab B bounces and rocks before it "
                         "slides, so this start is not the paper's case");
   }

@@ -70,11 +70,13 @@ inline dda::paper::Incline with_start_up(dda::paper::Incline in) {
 inline repro::Claim eq30_row(double phi_deg, const Run& r) {
   using repro::format_short;
   repro::Claim c{"4.3", "sliding distance at t = 1 s follows Eq. 30, phi = " + format_short(phi_deg) + " deg",
-                 "Fig. 12: 'good agreements'",
+                 "'Good agreements are obtained for numerical results and analytical results' (Sect. 4.3, Fig. 12, "
+                 "Eq. 30)",
                  "l = " + format_short(r.distance, 5) + " m vs " + format_short(r.analytic, 5) + " m, rel. error " +
                      format_short(r.rel_error(), 3),
                  "|rel. error| < 1 %", eq30_met(r)};
   c.control = phi_deg > 0.0 ? kControlEq30Friction : repro::control_test(kControlEq30Frictionless);
+  c.scope = repro::Scope::kPaper;
   return c;
 }
 
@@ -89,11 +91,13 @@ inline const char* const kControlRest = "4.3 rest: FAIL with friction off";
 inline repro::Claim rest_row(const Run& r) {
   using repro::format_short;
   repro::Claim c{"4.3", "a block on a slope gentler than its friction angle stays put (phi = 35 deg on 30 deg)",
-                 "Sect. 4.3, Eq. 30: no sliding when tan(phi) > tan(theta)",
+                 "the premise of Sect. 4.3, not a result the paper reports: 'Block B can slide along the inclined "
+                 "plane of block A if the friction angle ... is smaller than the inclined angle'",
                  "moved " + format_short(r.distance, 3) + " m down the slope in 1 s",
                  "|l| < " + format_short(kRestTolerance) + " m", std::fabs(r.distance) < kRestTolerance};
   c.key = "rest";
   c.control = std::string("repro_controls: ") + kControlRest;
+  c.scope = repro::Scope::kExtension;
   return c;
 }
 

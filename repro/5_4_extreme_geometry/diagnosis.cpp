@@ -125,9 +125,10 @@ std::optional<repro::Claim> option_row(const Case& c, const Outcome& d1, const O
                      "the paper goes down to 5 deg, 0.01 m edges and a 0.1 m block only", describe(opt), tolerance,
                      opt.clean};
     row.control = kCleanControl;
-    return repro::explain_fail(row, repro::Cause::kImplementation,
+    row.scope = repro::Scope::kOption;
+    return repro::explain_fail(row, repro::Root::kUnexplained,
                                "a step that runs clean with the motion guard off should run clean with it; not "
-                               "explained, needs an issue note");
+                               "explained");
   }
   if (c.thin_height <= 0.0) return std::nullopt;
   const StiffOption so = stiff_option(c);
@@ -154,7 +155,7 @@ std::optional<repro::Claim> option_row(const Case& c, const Outcome& d1, const O
   // amplify A's round-off tilt (its rocking mode).
   const bool first_clean = opt.first_release_asymmetry >= 0.0 && opt.first_release_asymmetry < 1e-9;
   const bool amplified = first_clean && opt.asymmetry > 1e3 * std::max(opt.first_release_asymmetry, 1e-16);
-  return repro::explain_fail(row, repro::Cause::kPaperMethod,
+  return repro::explain_fail(row, amplified ? repro::Root::kStiffBounce : repro::Root::kThinBlock,
                              "the penalty bounce of Eq. 12 at a stiffer kn: " + opt.verdict +
                                  (amplified ? "; A leaves its first landing symmetric to " +
                                                   sym(opt.first_release_asymmetry) + ", the asymmetry then grows to " +

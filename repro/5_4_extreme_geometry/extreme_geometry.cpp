@@ -117,20 +117,32 @@ int main(int argc, char** argv) try {
                       "the paper goes down to 5 deg, 0.01 m edges and a 0.1 m block only", measured,
                       "finishes; no flip-through; energy error < 1 %; asymmetry < 1e-9 m", o.clean});
     claims.back().control = kCleanControl;
+    claims.back().scope = repro::Scope::kExtension;
     // Cause: the paper's method when a smaller dt or the exact integration
-    // removes the failure (an option beyond the paper passes), or when even a
-    // stable dt stops on the penetration / approach-energy guard (the penalty
-    // potential of Eq. 12 cannot store A's energy within B's half thickness:
-    // the guard message gives both energies); otherwise not explained.
+    // removes the failure (an option beyond the paper passes: the paper's
+    // fixed dt, or its segmentation), or when even a stable dt stops on the
+    // penetration / approach-energy guard (the penalty potential of Eq. 12
+    // cannot store A's energy within B's half thickness: the guard message
+    // gives both energies); otherwise not explained.
     const bool persists = why.brief.find("persists") != std::string::npos ||
-                          why.brief.find("rerun stopped") != std::string::npos;
-    repro::explain_fail(claims.back(), persists ? repro::Cause::kImplementation : repro::Cause::kPaperMethod,
-                        (persists ? "not explained by dt or the segmentation (needs an issue note): "
+                          why.brief.find("rerun stopped") != std::string::npos ||
+                          why.brief.find("guard only") != std::string::npos;
+    const bool pierced = why.brief.find("stops even at a stable dt") != std::string::npos;
+    const bool segmentation = why.brief.find(": segmentation") != std::string::npos;
+    const repro::Root root = persists       ? repro::Root::kUnexplained
+                             : pierced      ? repro::Root::kThinBlock
+                             : segmentation ? repro::Root::kSegmentation
+                                            : repro::Root::kSmallGeometryStep;
+    repro::explain_fail(claims.back(), root,
+                        (persists ? "not explained by dt or the segmentation: "
                                   : "beyond the paper's sizes, the paper's fixed dt and penalty contact: ") +
                             why.text);
     if (diagnosed) {
       std::optional<repro::Claim> option = option_row(c, d1, d3, total);
-      if (option) claims.push_back(*option);
+      if (option) {
+        option->scope = repro::Scope::kOption;
+        claims.push_back(*option);
+      }
     }
     progress(c.label + ": " + (o.clean ? "clean" : "NOT clean: " + why.brief));
   }

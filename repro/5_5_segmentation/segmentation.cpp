@@ -14,7 +14,7 @@
 //   "paper" = dda::SmallEdgeRays::kVirtualAndVertex, the library default and
 //     the paper's printed rule ("Both the real nodes and virtual nodes of CP
 //     or TP are used in locating the demarcation points");
-//   "replace" = kVirtualReplacesVertex, SPEC.md's reading (the virtual node
+//   "replace" = kVirtualReplacesVertex, the replacing reading (the virtual node
 //     "replaces its two vertices as ray origins"), a library option.
 // Each is compared with dda::Integration::kExactEnvelope (which splits each
 // IP edge at the true breakpoints of the lower envelope):
@@ -193,6 +193,7 @@ int main(int argc, char** argv) try {
     traj_runs.commit();
   }
 
+  repro::default_scope(claims, repro::Scope::kExtension);  // a study beyond the paper, every row
   repro::write_claims(repro::claims_path(out, "5_5_segmentation"), claims);
   progress("done");
   return 0;

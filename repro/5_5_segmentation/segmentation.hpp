@@ -25,7 +25,7 @@ constexpr std::array<const char*, 2> kModeKey = {"paper", "replace"};
 constexpr std::size_t kPaperRule = 0, kReplaceRule = 1;  // indices into kModes
 inline const char* const kSection = "5.5 (extra)";
 inline const char* const kPaperRuleName = "paper's rule (library default: vertex and virtual-node rays)";
-inline const char* const kReplaceRuleName = "SPEC.md's reading (virtual node replaces the vertex rays)";
+inline const char* const kReplaceRuleName = "the replacing reading (virtual node replaces the vertex rays)";
 
 constexpr double kExactTolerance = 1e-8;    // a relative force error above this is not round-off
 constexpr double kInexactThreshold = 1e-6;  // the rectangle case must exceed this

@@ -104,9 +104,10 @@ int main(int argc, char** argv) try {
            " % of the region); H = " + format_short(a.h, 4) + " m; dt/dt_crit = " + format_short(a.dt_ratio0, 3) +
            " predicted at start, at most " + format_short(a.dt_ratio_max, 3) + " (case " + std::to_string(a.index) +
            ") from the live contacts during the run",
-       "dt/dt_crit < 0.6 at start (against the a-priori bound predicted_critical_step) and < 1 throughout (live contacts); dropped area < 1 % of the region",
+       "dt/dt_crit < 0.6 at start (against the predicted critical step, an a-priori bound) and < 1 throughout (live contacts); dropped area < 1 % of the region",
        generator_ok(a)});
   claims.back().control = control(kControlGenerator);
+  claims.back().scope = repro::Scope::kSuite;  // the suite's generator and time step
   for (const CaseResult& r : runs) {
     const EnergyBudget e = energy_budget(r);
     claims.push_back(
@@ -121,6 +122,7 @@ int main(int argc, char** argv) try {
          "largest rise < 1 % of the released potential energy (Verlet conserves energy to O(dt^2); friction removes it)",
          e.pass});
     claims.back().control = control(kControlStable);
+    claims.back().scope = repro::Scope::kSuite;  // the suite's guards
   }
   if (runs.size() == 2) {
     const CaseResult& c1 = runs[0];
@@ -138,7 +140,8 @@ int main(int argc, char** argv) try {
     }
     claims.push_back(
         {"6.1", "lower joint friction collapses faster (case 1: 15 deg vs case 2: 30 deg)" + run_note,
-         "Fig. 20 a/b (2.5 s): \"a faster collapsing process ... with lower friction angle\"",
+         "'A faster collapsing process and a larger runout mass were observed with lower friction angle' "
+         "(Sect. 6.1, Fig. 20 a/b at 2.5 s)",
          "at t = " + time_tag(p1.t) + " s mean centroid drop " + format_short(p1.mean_drop, 3) + " vs " +
              format_short(p2.mean_drop, 3) + " m, front " + format_short(p1.front_x, 4) + " vs " +
              format_short(p2.front_x, 4) + " m; case 1's front ahead or level in " + std::to_string(lead.ahead) +
@@ -146,11 +149,13 @@ int main(int argc, char** argv) try {
          "case 1's mean drop > 1.1 x case 2's and its front > case 2's + 2.5 m at 2.5 s",
          collapses_faster(p1, p2)});
     claims.back().control = control(kControlFaster);
+    claims.back().scope = repro::Scope::kPaper;
     const Sample& e1 = c1.at(duration);
     const Sample& e2 = c2.at(duration);
     claims.push_back(
         {"6.1", "lower joint friction runs out further and with a larger runout mass" + run_note,
-         "Fig. 20 e/f (7.5 s): \"a larger runout mass were observed with lower friction angle\"",
+         "'A faster collapsing process and a larger runout mass were observed with lower friction angle' "
+         "(Sect. 6.1, Fig. 20 e/f at 7.5 s)",
          "at t = " + time_tag(e1.t) + " s: front (farthest vertex) " + format_short(e1.front_x, 4) + " vs " +
              format_short(e2.front_x, 4) + " m, farthest centroid " + format_short(e1.front_cx, 4) + " vs " +
              format_short(e2.front_cx, 4) + " m, largest centroid travel " + format_short(e1.max_travel, 4) +
@@ -160,6 +165,7 @@ int main(int argc, char** argv) try {
          "case 1's front > case 2's + 2.5 m (one joint spacing) and its runout mass > case 2's",
          runs_out_further(e1, e2)});
     claims.back().control = control(kControlRunout);
+    claims.back().scope = repro::Scope::kPaper;
   }
   if (renumber) {
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
@@ -182,6 +188,7 @@ int main(int argc, char** argv) try {
          "in every numbering case 1's front > case 2's + 2.5 m and its runout mass > case 2's",
          ordering_survives(ends)});
     claims.back().control = control(kControlRenumbered);
+    claims.back().scope = repro::Scope::kExtension;
   }
   repro::write_claims(repro::claims_path(out, "6_1_collapse"), claims);
   return 0;

@@ -70,6 +70,7 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
                         format_short(sps, 4) + " steps/s)",
                     "dt/dt_crit < 1 throughout; energy rise < 1e-3 of |E(0)|", runs_stably(m.health)});
   claims.back().control = repro::control_test(kControlHealth);
+  claims.back().scope = repro::Scope::kSuite;  // the suite's time step and energy guards
   // Toppling (right): the blocks rotate toward the valley about their toes:
   // a mean outward rotation beyond 10 deg (far more than the fraction of a
   // degree a settling block takes), at least half the side's mass rotated
@@ -77,7 +78,7 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
   // bases slip, and -- the joints' role -- at least twice the rotation of
   // the locked-joint control.
   claims.push_back({"6.2", "the right slope (joints dipping into the slope) topples, through slip on the 22 deg joints" + run_note,
-                    "Fig. 22 (3.5 s): \"the right part will fail with toppling pattern\"",
+                    "'the right part will fail with toppling pattern' (Sect. 6.2, Fig. 22 at 3.5 s)",
                     "right slope at t = " + format_short(m.time, 3) + " s: " + describe(right) +
                         "; with the joints locked (80 deg): outward rotation " +
                         format_short(c.locked.right.outward_rotation * kDeg, 3) + " deg",
@@ -85,16 +86,18 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
                     "rotation > 2 x |base slip|, and outward rotation > 2 x the locked-joint control's",
                     topples(right, c.locked.right)});
   claims.back().control = kControlMechanism;
+  claims.back().scope = repro::Scope::kPaper;
   // Slumping (left), kinematics: the mass moves down the base -- the bases
   // slip more than 0.5 m (beyond elastic/penalty settling, millimetres) --
   // with small rotations (mean |rotation| < 10 deg and less than half the
   // right slope's).
   claims.push_back({"6.2", "the left slope (joints dipping toward the valley) slumps: slides down its base with small rotations" + run_note,
-                    "Fig. 22 (3.5 s): \"the left part will fail in slumping pattern\"",
+                    "'The left part will fail in slumping pattern' (Sect. 6.2, Fig. 22 at 3.5 s)",
                     "left slope at t = " + format_short(m.time, 3) + " s: " + describe(left),
                     "base slip down-dip > 0.5 m; mean |rotation| < 10 deg and < half the right slope's",
                     slumps(left, right)});
   claims.back().control = kControlMechanism;
+  claims.back().scope = repro::Scope::kPaper;
   // Slumping (left), mechanism: the paper attributes the failure to the
   // 22 deg joints; then locking the joints must stop most of it (slip with
   // free joints > 2 x slip with locked joints).
@@ -106,7 +109,8 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
   // start-up transient of the premise row) and then stay at rest (0.155 /
   // 0.131 m at 7 s): this reconstruction has no joint-driven slumping.
   claims.push_back({"6.2", "the left slope's slumping comes from slip on the 22 deg joints (locking them stops it)" + run_note,
-                    "\"influenced by the joint set with a friction angle of 22 deg, the stable condition ... will be broken\"",
+                    "'influenced by the joint set with a friction angle of 22 deg, the stable condition of both the "
+                    "left part and the right part will be broken' (Sect. 6.2)",
                     "left base slip at t = " + format_short(m.time, 3) + " s: " + format_short(left.base_slip, 3) +
                         " m with the joints at 22 deg, " + format_short(c.locked.left.base_slip, 3) +
                         " m with the joints locked at 80 deg (outward rotation " +
@@ -115,7 +119,8 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
                     "base slip with free joints > 2 x with locked joints",
                     joints_carry_slip(left, c.locked.left)});
   claims.back().control = kControlMechanism;
-  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+  claims.back().scope = repro::Scope::kPaper;
+  repro::explain_fail(claims.back(), repro::Root::kFrictionStartUp,
                       "the left slope slides on its base as much with locked joints: the slip is the start-up "
                       "transient of suddenly applied gravity on the undamped stick spring and the re-stick ratchet "
                       "of Eq. 26 (diagnosis row), not joint slip; the geometry is also reconstructed (Fig. 21 lost); with "
@@ -129,7 +134,8 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
   claims.push_back({"6.2 (option)",
                     "the left slope's slumping comes from slip on the 22 deg joints (locking them stops it), with the "
                     "friction start-up option and the return mapping (not the paper's start and update)" + run_note,
-                    "\"influenced by the joint set with a friction angle of 22 deg, the stable condition ... will be broken\"",
+                    "'influenced by the joint set with a friction angle of 22 deg, the stable condition of both the "
+                    "left part and the right part will be broken' (Sect. 6.2)",
                     "left base slip at t = " + format_short(duration, 3) + " s: " + format_short(c.su.left.base_slip, 3) +
                         " m with the joints at 22 deg (mean |rotation| " +
                         format_short(c.su.left.abs_rotation * kDeg, 3) + " deg), " +
@@ -138,9 +144,10 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
                     "base slip with free joints > 2 x with locked joints, and > 0.01 m (beyond settling)",
                     joints_carry_slip(c.su.left, c.locked_su.left, 0.01)});
   claims.back().control = kControlMechanism;
-  repro::explain_fail(claims.back(), repro::Cause::kImplementation,
+  claims.back().scope = repro::Scope::kOption;
+  repro::explain_fail(claims.back(), repro::Root::kUnexplained,
                       "with the springs pre-loaded and no ratchet only the joints should let the left slope move; "
-                      "not explained, needs an issue note");
+                      "not explained");
   // The premise: one block per slope on the 30 deg base with 32 deg friction
   // is stable (tan 32 > tan 30). Stable: < 0.05 m of slip in 3.5 s (a block
   // that starts sliding at the 8 % friction margin's deficit would move
@@ -158,7 +165,8 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
   // its static penetration and the return mapping: 0.29-0.37 m, then at
   // rest; that remainder scales as 1/kt.
   claims.push_back({"6.2", "premise: each slope as ONE block stays on its 30 deg base (friction 32 deg)" + run_note,
-                    "\"both the left slope and right slope will keep stable as one unique block\"",
+                    "'indicating that both the left slope and right slope will keep stable as one unique block' "
+                    "(Sect. 6.2)",
                     "one block per slope, same parameters, " + format_short(duration, 3) + " s: left slid " +
                         format_short(c.whole.left.base_slip, 3) + " m (rotation " +
                         format_short(c.whole.left.outward_rotation * kDeg, 3) + " deg), right slid " +
@@ -167,7 +175,8 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
                     "|slip| < 0.05 m on both sides",
                     stays(c.whole)});
   claims.back().control = kControlMechanism;
-  repro::explain_fail(claims.back(), repro::Cause::kPaperMethod,
+  claims.back().scope = repro::Scope::kPaper;
+  repro::explain_fail(claims.back(), repro::Root::kFrictionStartUp,
                       "suddenly applied gravity on the undamped stick spring (kt = 1e8 N/m) reaches the friction "
                       "limit moving, and the 8 % margin stops the wedge only after ~0.3 m (analytic, see the source); "
                       "then each re-stick of Eq. 26 restarts the spring from zero shear and the wedge ratchets on; "
@@ -178,15 +187,17 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
   claims.push_back({"6.2 (option)",
                     "premise: each slope as ONE block stays on its 30 deg base (friction 32 deg), with the friction "
                     "start-up option (settled with sticking contacts, not the paper's start)" + run_note,
-                    "\"both the left slope and right slope will keep stable as one unique block\"",
+                    "'indicating that both the left slope and right slope will keep stable as one unique block' "
+                    "(Sect. 6.2)",
                     "one block per slope, settled, then " + format_short(duration, 3) + " s: left slid " +
                         format_short(c.whole_su.left.base_slip, 3) + " m, right slid " +
                         format_short(c.whole_su.right.base_slip, 3) + " m",
                     "|slip| < 0.05 m on both sides",
                     stays(c.whole_su)});
   claims.back().control = kControlMechanism;
-  repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                      "the start-up option should remove the sudden loading; not explained, needs an issue note");
+  claims.back().scope = repro::Scope::kOption;
+  repro::explain_fail(claims.back(), repro::Root::kUnexplained,
+                      "the start-up option should remove the sudden loading; not explained");
   // Diagnosis of the two rows above (not a paper claim): if the slip that
   // goes on after the start-up transient is the ratchet of Eq. 26's
   // re-stick (spring restarted from zero shear), the elastic-plastic update
@@ -204,7 +215,7 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
                 "from zero shear), not a failure mechanism" + run_note,
          "Sect. 3.2.5-3.2.6: d = Delta d after a sliding step; the paper reports no creep",
          "left base slip between t = " + half + " and " + end + " s, paper rule / elastic-plastic update "
-         "(dda::FrictionUpdate::kReturnMapping): model " + format_short(model_paper, 3) + " / " +
+         "(the return mapping): model " + format_short(model_paper, 3) + " / " +
              format_short(model_rm, 3) + " m; one block per slope, left " + format_short(one_paper, 3) + " / " +
              format_short(one_rm, 3) + " m, right " + format_short(one_paper_r, 3) + " / " +
              format_short(one_rm_r, 3) + " m; total slip with the elastic-plastic update: model left " +
@@ -215,6 +226,7 @@ std::vector<repro::Claim> rows(const ModelRun& m, const Controls& c) {
          "model left: late slip with the elastic-plastic update < 0.25 x with the paper rule",
          ratchet_explains(model_rm, model_paper)});
     claims.back().control = repro::control_test(kControlRatchet);
+    claims.back().scope = repro::Scope::kExtension;  // a diagnosis, not a statement of the paper
   }
   return claims;
 }

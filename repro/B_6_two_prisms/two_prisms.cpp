@@ -69,7 +69,9 @@ std::string subdivision_mode_text(const dda::cdem::CdemOptions& o) {
   if (!o.subdivision) return "none (clone node of the coarse nodes)";
   switch (o.subdivision_mode) {
     case dda::cdem::SubdivisionMode::kSubModel:
-      return "sub-model of the colliding elements (Paper B Sect. 5 as written)";
+      return o.submodel_transfer == dda::cdem::SubModelTransfer::kWholeElement
+                 ? "sub-model of the colliding elements (Paper B Sect. 5; step 5 returns every sub-node's force)"
+                 : "sub-model of the colliding elements (Paper B Sect. 5; step 5 read literally)";
     case dda::cdem::SubdivisionMode::kInPlace:
       return "in-place refinement (beyond the paper)";
   }
@@ -246,7 +248,7 @@ int main(int argc, char** argv) try {
     const dda::cdem::CdemEnergyAccount& b = matched.accounts.back();
     claims.push_back(repro::measurement(
         "B-6",
-        "(option patch_deletion = kEnergyMatched, beyond the paper) energy lost at the patch deletion, beside the "
+        "(energy-matched patch deletion option, beyond the paper) energy lost at the patch deletion, beside the "
         "paper's restriction",
         "not stated (Sect. 5 deletes the patch after separation)",
         "deletion loss " + format_short(b.deletion_loss, 4) + " J/m (" +
@@ -261,6 +263,8 @@ int main(int argc, char** argv) try {
         "the restriction's energy drop handed to the coarse velocity deviations and stresses (each scaled by at most "
         "3): the fine-scale energy becomes coarse vibration, not conserved by a projection; the rest is where a "
         "factor reached its cap"));
+    claims.back().key = "option-patch-deletion-energy-matched";
+    claims.back().scope = repro::Scope::kOption;
   }
   // Sect. 4.1: the contact points' mass sets the touch's loss
   // (CdemOptions::contact_point_mass); masses as fractions of the touching
@@ -292,19 +296,20 @@ int main(int argc, char** argv) try {
       worst = std::max(worst, std::fabs(p.loss - p.loss_eq5) / p.loss_eq5);
     }
     claims.push_back({"B-6", "the touch's loss follows Eq. 5 over a range of contact-point masses and falls with the mass",
-                      "Sect. 4.1: 'the loss in mechanical energy decreases as the mass of the contact points "
-                      "decreases, and dE is zero if the mass is zero'",
+                      "'the loss in mechanical energy decreases as the mass of the contact points decreases, and "
+                      "∆E is zero if the mass is zero' (Sect. 4.1)",
                       text + "; coarse nodes (no subdivision): " + format_short(coarse.touch.mass_main) + " / " +
                           format_short(coarse.touch.mass_target) + " kg/m, loss " +
                           format_short(coarse.touch.energy_loss, 6) + " J/m; worst |loss - Eq. 5| / Eq. 5 " +
                           format_short(worst, 3) + "; the mass is set through the mesh (k), so 0 is a limit, not a run; "
-                          "in-place option (kInPlace; contact_point_mass is refused with the sub-model), masses as "
+                          "on the in-place option (the only mode that sets the contact points' mass), masses as "
                           "fractions of the in-place run's touching node (" + format_short(m_node) + " kg/m); table "
                           "contact_mass.csv",
                       "|loss - Eq. 5| <= " + format_short(prisms::kEq5Agreement) +
                           " Eq. 5 at each mass; loss strictly falls with the reduced mass",
                       prisms::touch_loss_follows_eq5(pts)});
     claims.back().control = repro::control_test(prisms::kTestContactMass);
+    claims.back().scope = repro::Scope::kPaper;  // Sect. 4.1's statement, tested where the mass can be set
   }
   for (repro::Claim& c : claims) c.claim += run_note;
   std::string vj_text, node_text, meeting;
@@ -317,9 +322,8 @@ int main(int argc, char** argv) try {
   }
   const double finest = mesh.back().vj;
   const std::string mesh_mode =
-      "; the refinement study of the in-place option (kInPlace, set explicitly; table mesh_study.csv): the paper's "
-      "sub-model has its own study (mesh_study_submodel.csv, the row 'Sect. 5 as written (sub-model): mesh "
-      "refinement'), which stops at 32 divisions";
+      "; the refinement study of the in-place option (table mesh_study.csv); the sub-model has its own study "
+      "(mesh_study_submodel.csv and its mesh-refinement row)";
   auto order_text = [](double p) {
     return p > 0.0 ? "observed order over the three finest " + format_short(p, 3)
                    : std::string("no observed order: the last differences do not shrink (the separation step moves "
@@ -331,14 +335,17 @@ int main(int argc, char** argv) try {
       "v_j(0.5 s) in m/s by divisions " + vj_text + "; " + order_text(prisms::observed_order(vjs)) + "; the paper's " + std::to_string(prisms::kPaperDivisions) +
           "-division mesh is " + format_short(100.0 * (mesh.front().vj - finest) / finest, 3) + " % off the finest" + mesh_mode,
       "a converged quantity (the block average after the collision)"));
+  claims.back().scope = repro::Scope::kExtension;
   claims.push_back(prisms::fig14c_converged_row(mesh));
   claims.back().measured += mesh_mode;
+  claims.back().scope = repro::Scope::kPaper;
   claims.push_back(repro::measurement(
       "B-6", "mesh refinement: j's largest nodal velocity at 0.3400 s (the quantity of Fig. 14c's 3.205 m/s)",
       "'from 0.0 to 3.205 m/s' (Fig. 14c)",
       "nodal v_x in m/s by divisions " + node_text + "; the Fig. 14c row's criterion holds for divisions " +
           (meeting.empty() ? std::string("none") : meeting) + mesh_mode,
       "a nodal value in the wave, not a converged quantity: where the Fig. 14c row passes it tells the mesh"));
+  claims.back().scope = repro::Scope::kExtension;
   repro::write_claims(repro::claims_path(out, kDriver), claims);
   progress("done");
   return 0;

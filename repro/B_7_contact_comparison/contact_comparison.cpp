@@ -232,11 +232,15 @@ int main(int argc, char** argv) {
       claims.push_back({sec, "contact duration on the prisms", "Paper B Figs. 14-15: about 7 ms (0.3333 to 0.3405 s)",
                         "A " + format_short(a0.contact_end - a0.contact_start, 4) + " s (kn = 0.4 GPa), B " +
                             format_short(bb.contact_end - bb.contact_start, 4) + " s, B0 " +
-                            format_short(bc.contact_end - bc.contact_start, 4) +
-                            " s. The penalty contact lasts 30 times longer than the wave-governed one",
-                        "B within 2 ms of 7.2 ms (the rebuilt size was fitted to it); A > 3 x B",
+                            format_short(bc.contact_end - bc.contact_start, 4) + " s. The penalty contact lasts " +
+                            format_short((a0.contact_end - a0.contact_start) / (bb.contact_end - bb.contact_start), 3) +
+                            " times longer than the wave-governed one",
+                        "B within 2 ms of 7.2 ms; A > 3 x B",
                         prisms_duration_ok(a0, bb)});
       claims.back().control = repro::control_test(kTestPrismsDuration);
+      // The rebuilt prisms' size was chosen so that the clone separates at
+      // about the paper's 0.3405 s: B's duration is fitted, not reproduced.
+      claims.back().fitted = true;
     }
   }
   // Paper A's contact depends on kn, Paper B's has no such parameter: the
@@ -266,6 +270,7 @@ int main(int argc, char** argv) {
       c.claim += " [NOT THE DEFAULT SETTINGS: prisms " + std::to_string(set.prism_divisions) + " divisions, dt " +
                  format_short(set.prisms_dt) + " s; squares " + std::to_string(set.square_divisions) +
                  " divisions, dt " + format_short(set.squares_dt) + " s]";
+  repro::default_scope(claims, repro::Scope::kExtension);  // a comparison neither paper makes, every row
   repro::write_claims(repro::claims_path(out, kDriver), claims);
   progress("done");
   return 0;

@@ -1,7 +1,7 @@
 // B-7's fourth model "P": the conventional node-to-edge penalty contact on
 // the same CST blocks as B and B0 (dda::cdem ContactMode::kNodeToEdgePenalty,
 // lib/cdem/src/model_penalty.cpp), the method Paper B argues against, as a
-// baseline (issue 23, item 7). Same scenes, meshes and dt sweeps as B0; kn =
+// baseline. Same scenes, meshes and dt sweeps as B0; kn =
 // E / 100 of the scene's material (0.4 GPa on the prisms, 10 MPa on the
 // squares: the kn of A), frictionless, undamped.
 // The runs and the criteria of P's rows are here (header-only, like

@@ -234,8 +234,8 @@ int main(int argc, char** argv) try {
       "implementation: with subdivision the finest run " + (bf.ok() ? std::string("completed") : "stopped") +
       " with " + std::to_string(bf.touches) + " touches on ny " + std::to_string(bf.ny) +
       " (B0: " + std::to_string(b0.back().touches) + "), largest (E - E0) / E0 " + format_short(b_growth, 3) +
-      "; the patch coupling (velocity boundary condition, hanging nodes, Eq. 12 approximations in model.hpp) is "
-      "ours: Paper B gives no algorithm";
+      "; the patch coupling (velocity boundary condition, hanging nodes, the approximations of Eq. 12 in the "
+      "model) is ours: Paper B gives no algorithm";
   std::vector<repro::Claim> claims;
   struct Quantity {
     const char* key;
@@ -270,26 +270,33 @@ int main(int argc, char** argv) try {
                      q.ok(f, s)};
       c.key = model + "-" + q.key;
       c.control = repro::control_test(q.control);
-      if (model == "B") repro::explain_fail(c, repro::Cause::kImplementation, b_cause);
-      if (model == "B0") repro::explain_fail(c, repro::Cause::kPaperMethod,
+      if (model == "B") repro::explain_fail(c, repro::Root::kUnexplained, b_cause);
+      if (model == "B0") repro::explain_fail(c, repro::Root::kMeshDispersion,
                                              "the CST mesh's dispersion (error ~ h^(2/3)); a finer mesh passes");
       claims.push_back(c);
     }
-    // Paper A at its dt and kn ratio, the same criterion.
-    repro::Claim c{"B-8",
-                   std::string("A (Paper A's 6-DOF blocks, penalty kn = E/100): ") + q.what + run_note,
-                   theory,
-                   "relative error " + pct(a0.*q.err) + " at dt " + format_short(a0.dt) + " s (duration " +
-                       format_short(a0.duration, 4) + " s, mean stress " + format_short(a0.mean_stress, 4) +
-                       " Pa, plateau " + format_short(a0.plateau_stress, 4) + " Pa, v " + format_short(a0.v0, 3) +
-                       " / " + format_short(a0.v1, 4) + " m/s)",
-                   "|error| < " + pct(q.tol) + " (the CDEM rows' criterion)",
-                   q.ok(a0, s)};
+    // Paper A at its dt and kn ratio. Its block has 6 DOF (one
+    // constant-strain mode) and carries no wave: the penalty spring kn sets
+    // the contact time and force (the kn series row), not the bar's
+    // impedance rho c, so the wave's duration, stress and plateau cannot be
+    // met by construction: measurements. The exchange of velocities is a
+    // check (momentum and energy give it to any elastic contact).
+    const bool wave = std::string(q.key) != "exchange";
+    const std::string a_what = std::string("A (Paper A's 6-DOF blocks, penalty kn = E/100): ") + q.what + run_note;
+    const std::string a_measured = "relative error " + pct(a0.*q.err) + " at dt " + format_short(a0.dt) + " s (duration " +
+                                   format_short(a0.duration, 4) + " s, mean stress " + format_short(a0.mean_stress, 4) +
+                                   " Pa, plateau " + format_short(a0.plateau_stress, 4) + " Pa, v " +
+                                   format_short(a0.v0, 3) + " / " + format_short(a0.v1, 4) + " m/s)";
+    repro::Claim c = wave ? repro::measurement("B-8", a_what, theory, a_measured,
+                                               "no verdict: a 6-DOF block carries no wave, its contact follows kn "
+                                               "(the kn series row)")
+                          : repro::Claim{"B-8", a_what, theory, a_measured,
+                                         "|error| < " + pct(q.tol) + " (the CDEM rows' criterion)", q.ok(a0, s)};
     c.key = std::string("A-") + q.key;
-    c.control = repro::control_test(q.control);
-    repro::explain_fail(c, repro::Cause::kPaperMethod,
-                        "Paper A's block has 6 DOF (one constant-strain mode) and carries no wave: the penalty "
-                        "spring kn sets the contact time and force (kn series row), not the bar's impedance rho c");
+    if (!wave) c.control = repro::control_test(q.control);
+    repro::explain_fail(c, repro::Root::kUnexplained,
+                        "an elastic contact of two equal free blocks exchanges their velocities (momentum and "
+                        "energy); not explained");
     claims.push_back(c);
   }
   // Energy never grows.
@@ -310,7 +317,7 @@ int main(int argc, char** argv) try {
                    energy_never_grows(v)};
     c.key = model + "-energy";
     c.control = repro::control_test(kTestEnergy);
-    if (model == "B") repro::explain_fail(c, repro::Cause::kImplementation, b_cause);
+    if (model == "B") repro::explain_fail(c, repro::Root::kUnexplained, b_cause);
     claims.push_back(c);
   }
   // Measurements: observed order, dt refinement, work-precision, A's kn.
@@ -398,6 +405,7 @@ int main(int argc, char** argv) try {
            "exchange (the block has no wave)"));
     claims.back().key = "A-kn";
   }
+  repro::default_scope(claims, repro::Scope::kExtension);  // beyond both papers: 1D wave theory, every row
   repro::write_claims(repro::claims_path(out, kDriver), claims);
   progress("done");
   return 0;

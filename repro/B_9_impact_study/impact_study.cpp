@@ -1,4 +1,4 @@
-// Issue 23, item 2 ("an impact study"), on Paper B's two-scale contact
+// An impact study beyond Paper B, on its two-scale contact
 // (Sects. 3-5: two time stages, clone node by the perfectly inelastic Eq. 4,
 // Mohr-Coulomb sliding, local subdivision): two 1 m CST-meshed squares of
 // Paper B's material (E 40 GPa, nu 0.25, rho 2700 kg/m3, d_tol 5e-3 m), A
@@ -6,7 +6,7 @@
 // 0.1-30 m/s, friction mu = tan(phi) 0 / 0.3 / 0.6, subdivision off / on
 // ('on': the in-place refinement, SubdivisionMode::kInPlace, set explicitly;
 // beyond the paper), and the 'on' cells again with Paper B Sect. 5's
-// sub-model as written (subdivision 'sub-model', kSubModel), whose rows
+// sub-model as we read it (subdivision 'sub-model', kSubModel), whose rows
 // (the same per-cell criteria) stand beside the others.
 // impact_study.hpp has the set-up, the rigid-body impact law compared with
 // and the per-cell criteria.
@@ -44,7 +44,7 @@ std::string yes(bool b) { return b ? "y" : "n"; }
 
 int main(int argc, char** argv) try {
   repro::check_command_line(argc, argv,
-                            "Issue 23 item 2: impact study of Paper B's two-scale contact (two 1 m squares, angle x "
+                            "Beyond Paper B: impact study of its two-scale contact (two 1 m squares, angle x "
                             "speed x friction x subdivision).",
                             {{"--dt", "S", "time step, s (default 2e-5: 0.28 of the squares' critical step)", false}});
   const double dt = repro::option_number(argc, argv, "--dt", impact::kDt);
@@ -61,14 +61,14 @@ int main(int argc, char** argv) try {
        "touch_loss_eq5", "touch_loss_eq5_group", "total_loss", "block_eq5", "restitution", "jn", "jt", "jt_over_jn", "jt_law", "law_regime",
        "omega_a", "omega_b", "slip0", "slip_end", "ok_pass_through", "ok_energy", "ok_separation", "ok_touch_loss",
        "ok_total_loss", "ok_coulomb", "ok_rigid_law", "wall_s"},
-      {"Issue 23 item 2: oblique impacts of two 1 m squares (Paper B material, 2 divisions, dt " +
+      {"Beyond Paper B: oblique impacts of two 1 m squares (Paper B material, 2 divisions, dt " +
        repro::format_short(dt) + " s); angle from the contact normal; impulses on B, N s/m; energies J/m; "
        "outcome 'ok' or the solver's stop message (a stopped run's state is reported where finite); touch_impact "
        "'paper' (Eq. 4) or 'coulomb' (option TouchImpact::kCoulomb, beyond the paper: the same grid again)"});
   // The paper's method, then the same grid with the Coulomb touch option.
   std::vector<impact::Cell> cells = impact::grid(false);
   for (const impact::Cell& c : impact::grid(true)) cells.push_back(c);
-  // Paper B Sect. 5 as written: the subdivision-on cells with the sub-model.
+  // Paper B Sect. 5's sub-model: the subdivision-on cells again.
   for (const impact::Cell& c : impact::submodel_grid()) cells.push_back(c);
   std::vector<impact::CellResult> results, option_results, submodel_results;
   for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -113,12 +113,13 @@ int main(int argc, char** argv) try {
       "wall time of the cells on this machine"));
   claims.back().key = "cost";
   claims.push_back(repro::measurement(
-      "B-9", "cost of the sub-model cells (Sect. 5 as written) against the in-place refinement's", "-",
+      "B-9", "cost of the sub-model cells (Sect. 5's sub-model) against the in-place refinement's", "-",
       std::to_string(submodel_results.size()) + " sub-model cells in " + repro::format_short(sub_wall, 3) +
           " s of run time; the same cells with the in-place refinement " + repro::format_short(inplace_wall, 3) +
           " s" + note,
       "wall time of the cells on this machine (not in the cost row above)"));
   claims.back().key = "submodel-cost";
+  repro::default_scope(claims, repro::Scope::kExtension);  // beyond the paper; the option rows say so themselves
   repro::write_claims(repro::claims_path(out, kDriver), claims);
   progress("done");
   return 0;

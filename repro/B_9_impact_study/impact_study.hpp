@@ -1,4 +1,4 @@
-// Issue 23 item 2, the impact study (impact_study.cpp says what it runs):
+// The impact study beyond Paper B (impact_study.cpp says what it runs):
 // one oblique impact of two CST-meshed 1 m squares with Paper B's two-scale
 // contact per cell (angle, speed, friction, subdivision), the measured
 // quantities of a cell and the per-cell criteria of the rows, here so that
@@ -75,7 +75,7 @@ struct Cell {
   // CdemOptions::touch_impact = TouchImpact::kCoulomb (beyond the paper: the
   // touch's tangential impulse capped at mu times its normal impulse)
   bool coulomb = false;
-  // With subdivision: Paper B Sect. 5 as written, the sub-model
+  // With subdivision: Paper B Sect. 5's sub-model
   // (SubdivisionMode::kSubModel); false: the in-place refinement (kInPlace,
   // beyond the paper), set explicitly so that the study's 'on' cells do not
   // follow the library's default.
@@ -343,7 +343,7 @@ inline bool matches_rigid_law(const CellResult& r) {
 }
 
 // ---- the study's grid and rows ------------------------------------------------------
-// Default grid: the issue's ranges, 210 cells (each well under a second: the
+// Default grid: 210 cells (each well under a second: the
 // whole grid is the default, no coarser one needed).
 inline const std::vector<double> kAngles = {0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0};  // deg from the normal
 inline const std::vector<double> kSpeeds = {0.1, 1.0, 5.0, 15.0, 30.0};                // m/s
@@ -454,16 +454,16 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
     out.back().control = repro::control_test(test);
   };
   const auto stop_cause = [&](repro::Claim& c) {
-    repro::explain_fail(c, repro::Cause::kImplementation,
+    repro::explain_fail(c, repro::Root::kUnexplained,
                         "in the failing cells the contact with friction creates energy (the touches' measured loss "
                         "far above the run's loss: the energy account's remainder is a gain), and some runs grow until "
                         "an element inverts or a node ends deeper than d_tol and the solver stops; the cells affected "
                         "change erratically with dt. Paper B's method cannot add energy (Eq. 4 removes it, central "
                         "differences below the critical step conserve it): the fault is in our clone/sliding "
-                        "implementation (issue 23, item 2 finding)");
+                        "implementation");
   };
 
-  add("no-pass-through", "no pass-through in any cell of the impact study", "issue 23: no pass-through in any cell",
+  add("no-pass-through", "no pass-through in any cell of the impact study", "not in the paper: no pass-through in any cell",
       tally(cells, no_pass_through,
             [](const CellResult& r) {
               return stopped_or(r, "depth " + format_short(r.max_depth, 3) + " m, centres " +
@@ -477,7 +477,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
       kTestPassThrough);
   stop_cause(out.back());
 
-  add("kinetic-energy", "kinetic energy never grows in any cell", "issue 23: kinetic energy never grows",
+  add("kinetic-energy", "kinetic energy never grows in any cell", "not in the paper: kinetic energy never grows",
       tally(cells, energy_never_grows,
             [](const CellResult& r) { return "max KE/KE0 - 1 = " + format_short(r.ke_growth, 3) + (r.ok ? "" : ", stopped"); }),
       "max KE/KE0 - 1 over the finished cells " +
@@ -490,7 +490,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
   stop_cause(out.back());
 
   add("separation", "the blocks separate in every cell (no cohesion or tensile strength holds them)",
-      "issue 23: the blocks separate (when friction allows)",
+      "not in the paper: the blocks separate (when friction allows)",
       tally(cells, separates,
             [](const CellResult& r) { return stopped_or(r, r.separated ? "separated" : "still tied or closing"); }),
       "last clone released at " +
@@ -522,9 +522,9 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
       "KE0). The group projection is Eq. 4 for several ties (momentum conserved, every tie inelastic), so its Eq. 5 "
       "is the group's; a single pair's Eq. 5 leaves out the other ties' relative velocities the group takes",
       kTestTouchLoss);
-  repro::explain_fail(out.back(), repro::Cause::kImplementation,
+  repro::explain_fail(out.back(), repro::Root::kUnexplained,
                       "a touch's measured drop exceeds the Eq. 5 of the clone group it projects: the group "
-                      "projection (model_clone.cpp, Gauss-Seidel) did not reach the group's perfectly inelastic "
+                      "projection (Gauss-Seidel) did not reach the group's perfectly inelastic "
                       "state, or energy entered in it");
 
   add("total-loss-eq5", "the run's energy loss stays within Eq. 5 for the two blocks",
@@ -539,7 +539,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
   stop_cause(out.back());
 
   add("coulomb", "the tangential impulse obeys Coulomb's limit in every cell",
-      "rigid-body Coulomb impact: |J_t| <= mu J_n (issue 23)",
+      "not in the paper: the rigid-body Coulomb impact law, |J_t| <= mu J_n",
       tally(cells, obeys_coulomb,
             [](const CellResult& r) { return stopped_or(r, "J_t/J_n = " + format_short(r.jt / r.jn, 3)); }, 6),
       "J_t/J_n - mu over the finished cells " +
@@ -549,27 +549,27 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
       "per cell: |J_t| <= (mu + 0.01) J_n (J from B's momentum at the end; 1 % for the explicit lag of the sliding "
       "clone's shear force)",
       kTestCoulomb);
-  repro::explain_fail(out.back(), repro::Cause::kPaperMethod,
+  repro::explain_fail(out.back(), repro::Root::kCloneImpact,
                       "Paper B Sect. 4.1 forms each clone by a perfectly inelastic impact of the two contact points "
                       "(Eq. 4, 'no slipping occurs' in the touch step): it takes the points' whole relative "
                       "velocity, tangential included, whatever phi is; only afterwards does the Mohr-Coulomb limit "
                       "(Eqs. 7-10) cap the clone's shear force. The formation impulses are not limited by mu J_n "
                       "(at mu = 0 J_t is not 0). A stopped run fails this row too (see the pass-through row)");
   const std::string option_grid = std::to_string(option_cells.size()) +
-                                  " cells (the same grid, CdemOptions::touch_impact = TouchImpact::kCoulomb)" + note;
+                                  " cells (the same grid with the Coulomb touch option)" + note;
   auto add_option = [&](const std::string& key, const std::string& claim, const std::string& paper, const Tally& t,
                         const std::string& extra, const std::string& tol, const char* test) {
     out.push_back({"B-9", claim, paper, count_text(t) + (extra.empty() ? "" : "; " + extra) + "; " + option_grid, tol,
                    t.pass == t.total && t.total > 0});
     out.back().key = key;
     out.back().control = repro::control_test(test);
+    out.back().scope = repro::Scope::kOption;
   };
   if (!option_cells.empty()) {
     add_option("coulomb-option",
-               "(option touch_impact = kCoulomb, beyond the paper) the tangential impulse obeys Coulomb's limit in "
-               "every cell",
-               "rigid-body Coulomb impact: |J_t| <= mu J_n (issue 23); the option caps each touch's tangential "
-               "impulse at mu times its normal impulse",
+               "(Coulomb touch option, beyond the paper) the tangential impulse obeys Coulomb's limit in every cell",
+               "not in the paper: the rigid-body Coulomb impact law, |J_t| <= mu J_n; the option caps each touch's "
+               "tangential impulse at mu times its normal impulse",
                tally(option_cells, obeys_coulomb,
                      [](const CellResult& r) { return stopped_or(r, "J_t/J_n = " + format_short(r.jt / r.jn, 3)); }, 6),
                "J_t/J_n - mu over the finished cells " +
@@ -588,7 +588,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
                    std::to_string(tally(option_cells, touch_loss_within_eq5, [](const CellResult&) { return ""; }).pass) +
                    " of " + std::to_string(option_cells.size()),
                "per cell: |J_t| <= (mu + 0.01) J_n, as the paper's row", kTestCoulomb);
-    repro::explain_fail(out.back(), repro::Cause::kImplementation,
+    repro::explain_fail(out.back(), repro::Root::kCornerNormal,
                         "with the Coulomb touch each touch's impulse obeys mu J_n along the clone's normal, but the "
                         "squares' corners are level (A's lower right corner meets B's lower left one): a corner "
                         "arriving within d_tol of the other block's corner is tied to the perpendicular face, whose "
@@ -599,7 +599,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
   }
 
   add("rigid-law", "the tangential impulse matches the rigid-body stick/slide law in every cell",
-      "rigid-body Coulomb impact (impact_study.hpp): stick if mu J_n >= m_t v_t0 (J_t = m_t v_t0, m_t = m/5 with the "
+      "not in the paper: the rigid-body Coulomb impact law, stick if mu J_n >= m_t v_t0 (J_t = m_t v_t0, m_t = m/5 with the "
       "spin), else slide (J_t = mu J_n)",
       tally(cells, matches_rigid_law,
             [](const CellResult& r) {
@@ -609,16 +609,16 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
       "(J_t - J_t,law)/J_n over the finished cells " +
           stats(cells, [](const CellResult& r) { return (r.jt - r.jt_law) / r.jn; }, [](const CellResult&) { return true; }),
       "per cell: |J_t - J_t,law| <= 0.05 J_n with the measured J_n and restitution", kTestRigidLaw);
-  repro::explain_fail(out.back(), repro::Cause::kPaperMethod,
+  repro::explain_fail(out.back(), repro::Root::kCloneImpact,
                       "the clone formation of Eq. 4 takes the tangential relative velocity of every touching node "
                       "pair (see the Coulomb row), so the tangential impulse follows the number and masses of the "
                       "touches, not mu: above the law's value in sliding cells (mu = 0 included) and off it in "
                       "sticking ones (the deformable blocks' spin differs from the rigid face-centre impulse too)");
   if (!option_cells.empty()) {
     add_option("rigid-law-option",
-               "(option touch_impact = kCoulomb, beyond the paper) the tangential impulse matches the rigid-body "
-               "stick/slide law in every cell",
-               "rigid-body Coulomb impact (impact_study.hpp), as the paper's row",
+               "(Coulomb touch option, beyond the paper) the tangential impulse matches the rigid-body stick/slide "
+               "law in every cell",
+               "not in the paper: the rigid-body Coulomb impact law, as the row of the paper's method",
                tally(option_cells, matches_rigid_law,
                      [](const CellResult& r) {
                        return stopped_or(r, "J_t/J_n = " + format_short(r.jt / r.jn, 3) + " vs law " +
@@ -629,7 +629,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
                    stats(option_cells, [](const CellResult& r) { return (r.jt - r.jt_law) / r.jn; },
                          [](const CellResult&) { return true; }),
                "per cell: |J_t - J_t,law| <= 0.05 J_n with the measured J_n and restitution", kTestRigidLaw);
-    repro::explain_fail(out.back(), repro::Cause::kImplementation,
+    repro::explain_fail(out.back(), repro::Root::kCornerNormal,
                         "the cells failing the option's Coulomb row (corner-to-corner touches on the perpendicular "
                         "face, see there) fail this row too; the others are deformable CST meshes touching node by "
                         "node, whose stick regime's J_t differs from the rigid law's m_t v_t0 (m_t = m/5 with the "
@@ -663,7 +663,7 @@ inline std::vector<repro::Claim> rows(const std::vector<CellResult>& cells, cons
   return out;
 }
 
-// The rows of the sub-model cells (Paper B Sect. 5 as written, the grid's
+// The rows of the sub-model cells (Paper B Sect. 5's sub-model, the grid's
 // subdivision-on cells with SubdivisionMode::kSubModel), with the same
 // per-cell criteria as the paper's rows above; the grid's 'on' cells (the
 // in-place refinement, kInPlace, beyond the paper) are quoted beside.
@@ -675,8 +675,7 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
   for (const CellResult& r : cells)
     if (r.cell.subdivision && !r.cell.submodel) inplace.push_back(r);
   const std::string grid_text = std::to_string(sub.size()) +
-                                " cells (the grid's subdivision-on cells with Sect. 5's sub-model, "
-                                "SubdivisionMode::kSubModel)" + note;
+                                " cells (the grid's subdivision-on cells with Sect. 5's sub-model)" + note;
   auto add = [&](const std::string& key, const std::string& claim, const std::string& paper, const Tally& t,
                  const Tally& beside, const std::string& extra, const std::string& tol, const char* test) {
     out.push_back({"B-9", claim, paper,
@@ -688,8 +687,8 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
   };
   const auto none = [](const CellResult&) { return std::string(); };
   const auto all = [](const CellResult&) { return true; };
-  add("submodel-no-pass-through", "(Sect. 5 as written, sub-model) no pass-through in any cell of the impact study",
-      "issue 23: no pass-through in any cell",
+  add("submodel-no-pass-through", "(Sect. 5's sub-model, our reading) no pass-through in any cell of the impact study",
+      "not in the paper: no pass-through in any cell",
       tally(sub, no_pass_through,
             [](const CellResult& r) {
               return stopped_or(r, "depth " + format_short(r.max_depth, 3) + " m, centres " +
@@ -699,16 +698,16 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
       "deepest node " + stats(sub, [](const CellResult& r) { return r.max_depth; }, all) + " m",
       "per cell, as the paper's row: the run finishes, no node deeper than d_tol, centres > L/2 apart",
       kTestSubPassThrough);
-  add("submodel-kinetic-energy", "(Sect. 5 as written, sub-model) kinetic energy never grows in any cell",
-      "issue 23: kinetic energy never grows",
+  add("submodel-kinetic-energy", "(Sect. 5's sub-model, our reading) kinetic energy never grows in any cell",
+      "not in the paper: kinetic energy never grows",
       tally(sub, energy_never_grows,
             [](const CellResult& r) { return "max KE/KE0 - 1 = " + format_short(r.ke_growth, 3) + (r.ok ? "" : ", stopped"); }),
       tally(inplace, energy_never_grows, none),
       "max KE/KE0 - 1 " + stats(sub, [](const CellResult& r) { return r.ke_growth; }, all) + "; of KE + strain " +
           stats(sub, [](const CellResult& r) { return r.total_growth; }, all),
       "per cell, as the paper's row: KE(t) <= KE0 (1 + 1e-9) at every step", kTestSubEnergy);
-  add("submodel-separation", "(Sect. 5 as written, sub-model) the blocks separate in every cell",
-      "issue 23: the blocks separate (when friction allows)",
+  add("submodel-separation", "(Sect. 5's sub-model, our reading) the blocks separate in every cell",
+      "not in the paper: the blocks separate (when friction allows)",
       tally(sub, separates,
             [](const CellResult& r) { return stopped_or(r, r.separated ? "separated" : "still tied or closing"); }),
       tally(inplace, separates, none),
@@ -716,15 +715,17 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
           stats(sub, [](const CellResult& r) { return r.t_sep * 1e3; }, [](const CellResult& r) { return r.t_sep >= 0.0; }) +
           " ms",
       "per cell, as the paper's row: no clone left at the end and B moving away from A in x", kTestSubSeparation);
-  repro::explain_fail(out.back(), repro::Cause::kPaperMethod,
-                      "Sect. 5 steps 3-5 as written: the sub-model's free sub-nodes carry mass the coarse nodes carry "
-                      "too and the force returned to the coarse nodes includes their inertia, so the blocks' momentum "
-                      "is not conserved while a sub-model lives (B-6's sub-model momentum row); the blocks' relative "
-                      "motion changes, the contact re-touches (measured in (30 deg, 0.1 m/s, mu 0.3): 52 touches "
-                      "against 8 without subdivision, x-momentum 3.7 % below its start) and a clone formed late is "
-                      "still tied at the end of the window. The same cells separate without subdivision and with the "
-                      "in-place refinement (beside)");
-  add("submodel-touch-loss-eq5", "(Sect. 5 as written, sub-model) the touches' measured loss stays within Eq. 5",
+  {
+    // Attached on FAIL only, with the run's numbers: the same cells with the
+    // in-place refinement (beside) and without subdivision.
+    const Tally beside = tally(inplace, separates, none);
+    repro::explain_fail(out.back(), repro::Root::kSubModelReading,
+                        "the sub-model of Sect. 5 as we read its steps (1)-(5) changes the blocks' relative motion "
+                        "while it lives; the contact re-touches and a clone formed late is still tied at the end of "
+                        "the window; the same grid separates in " + std::to_string(beside.pass) + " of " +
+                        std::to_string(beside.total) + " cells with the in-place refinement");
+  }
+  add("submodel-touch-loss-eq5", "(Sect. 5's sub-model, our reading) the touches' measured loss stays within Eq. 5",
       "Paper B Eq. 5 (the clones are between coarse nodes: Eq. 5 with the coarse masses)",
       tally(sub, touch_loss_within_eq5,
             [](const CellResult& r) {
@@ -734,7 +735,7 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
       tally(inplace, touch_loss_within_eq5, none), "",
       "per cell, as the paper's row: 0 <= measured <= group Eq. 5 (+1e-9 KE0)", kTestSubTouchLoss);
   add("submodel-total-loss-eq5",
-      "(Sect. 5 as written, sub-model) the run's energy loss stays within Eq. 5 for the two blocks",
+      "(Sect. 5's sub-model, our reading) the run's energy loss stays within Eq. 5 for the two blocks",
       "Eq. 5 applied to the blocks: a perfectly inelastic block impact loses 1/2 (m/2) |v|^2, the most any impact can",
       tally(sub, total_loss_within_block_eq5,
             [](const CellResult& r) {
@@ -744,7 +745,7 @@ inline std::vector<repro::Claim> submodel_rows(const std::vector<CellResult>& su
       "loss / block Eq. 5 " + stats(sub, [](const CellResult& r) { return r.total_loss / r.block_eq5; }, all),
       "per cell, as the paper's row: 0 <= KE0 - (KE + strain)_end <= 1/2 (m/2) |v0|^2 (1 + 1e-9)", kTestSubTotalLoss);
   out.push_back(repro::measurement(
-      "B-9", "(Sect. 5 as written, sub-model) restitution and energy loss against the in-place refinement",
+      "B-9", "(Sect. 5's sub-model, our reading) restitution and energy loss against the in-place refinement",
       "Paper B: the clone impact is perfectly inelastic at the contact points",
       "e: sub-model " + stats(sub, [](const CellResult& r) { return r.e; }, all) + ", in-place " +
           stats(inplace, [](const CellResult& r) { return r.e; }, all) + "; loss / block Eq. 5: sub-model " +

@@ -218,7 +218,7 @@ std::vector<repro::Claim> claim_rows(const std::vector<CurveSummary>& curves, co
         if (cs.scene == scene && cs.option == option && cs.measure.rfind("trajectory", 0) == 0)
           dt_error = std::max(dt_error, cs.error_at_paper);
       claims.push_back({"S1 / integration", scene + ", " + option + " vs exact integration: converged trajectories",
-                        "Sect. 3.2.3 segmentation (SPEC: exact only if the bisector crossings are all the kinks)",
+                        "Sect. 3.2.3 segmentation (exact only where the bisector crossings are all the kinks of the potential)",
                         "max vertex distance between the two converged runs " + format_short(d, 3) +
                             " m; dt error of the paper segmentation at the paper's dt " +
                             format_short(dt_error, 3) + " m",

@@ -68,7 +68,9 @@ int main(int argc, char** argv) {
   const std::vector<s1::Case> cases = s1::all_cases();
   s1::References references;
   const std::vector<s1::CurveSummary> curves = s1::sweep(cases, out + "/data/work_precision", references, progress);
-  repro::write_claims(repro::claims_path(out, "S1_work_precision"), s1::claim_rows(curves, references));
+  std::vector<repro::Claim> claims = s1::claim_rows(curves, references);
+  repro::default_scope(claims, repro::Scope::kSuite);  // integrator orders and work-precision: the suite's own
+  repro::write_claims(repro::claims_path(out, "S1_work_precision"), claims);
   progress("done");
   return 0;
 }

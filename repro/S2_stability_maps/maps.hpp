@@ -59,11 +59,19 @@ struct MapRun {
 // balance_guard false: the energy-budget guard off from the start.
 MapRun map_run(const MapScene& m, double kn, double dt, bool balance_guard = true);
 
-// The row "no blow-up at dt <= the predicted dt_crit" counts the cells with
-// dt <= bound that map_run calls a blow-up; its negative control.
+// A cell with dt <= bound that map_run calls a blow-up; its negative control.
 inline constexpr const char* kControlBlowUp = "S2 no blow-up: FAIL against a bound 4 times too large";
 inline bool blowup_at_or_below(const MapRun& r, double dt, double bound) {
   return r.cls == repro::stab::RunClass::kBlowUp && dt <= bound;
+}
+// The row "no blow-up and no pass-through at dt <= the predicted dt_crit"
+// counts the cells with dt <= bound that map_run calls a blow-up or a
+// flip-through: a pass-through is a failure of the method on that case
+// whatever the time step; its negative control.
+inline constexpr const char* kControlFailBelow =
+    "S2 no blow-up or pass-through: FAIL against a bound 4 times too large and at a kn that passes through";
+inline bool fails_at_or_below(const MapRun& r, double dt, double bound) {
+  return dt <= bound && (r.cls == repro::stab::RunClass::kBlowUp || r.cls == repro::stab::RunClass::kFlipThrough);
 }
 
 }  // namespace s2

@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
                           "blocks) = " + format_short(worst_emp, 3),
                       "< " + format_short(kEmpiricalTolerance), linearised_is_empirical(worst_emp)});
     claims.back().control = repro::control_test(kControlEmpirical);
-    claims.push_back({"S2 / dt_crit", "the solver's critical_time_step() never exceeds the linearised limit",
+    claims.push_back({"S2 / dt_crit", "the solver's critical time step never exceeds the linearised limit",
                       "a critical step must be safe",
                       "current / linearised in [" + format_short(best_cur, 3) + ", " + format_short(worst_cur, 3) +
                           "]; predicted / linearised <= " + format_short(worst_pred, 3) +
@@ -167,12 +167,16 @@ int main(int argc, char** argv) {
                           "largest_stable_below_first_failure", "smallest_not_stable", "smallest_blowup"},
                          {m.title + ": dt_crit lines (s) and the empirical boundary per kn"});
     // Per class, below (dt <= predicted) and above the prediction.
-    int below[4] = {0, 0, 0, 0}, above[4] = {0, 0, 0, 0}, old_blowups_below = 0, blowups_below = 0;
+    int below[4] = {0, 0, 0, 0}, above[4] = {0, 0, 0, 0}, old_blowups_below = 0, failures_below = 0;
+    // The largest kn at which every cell with dt <= predicted passes
+    // through (0: none): where the scene's own kn sits against it.
+    double all_through_kn = 0.0;
     double min_blowup_ratio = 1e300, max_blowup_ratio = 0.0;  // first blow-up dt / predicted, over kn
     double growth_ratio = 1e300;  // smallest dt/predicted of an 'energy growth' run
     std::vector<double> flip_below;  // kn with a flip-through at dt <= predicted
     for (double kn : kns) {
       const Lines l = lines_for(m, kn);
+      int cells_below = 0, through_below = 0;
       double first_bad = std::numeric_limits<double>::infinity(), first_blowup = first_bad, last_good = 0.0;
       for (double dt : dts) {
         const MapRun r = map_run(m, kn, dt);
@@ -181,7 +185,11 @@ int main(int argc, char** argv) {
                                          r.message});
         const int c = static_cast<int>(r.cls);
         ++(dt <= l.predicted ? below : above)[c];
-        if (blowup_at_or_below(r, dt, l.predicted)) ++blowups_below;
+        if (fails_at_or_below(r, dt, l.predicted)) ++failures_below;
+        if (dt <= l.predicted) {
+          ++cells_below;
+          through_below += r.cls == RunClass::kFlipThrough;
+        }
         if (r.cls == RunClass::kBlowUp) {
           first_blowup = std::min(first_blowup, dt);
           if (dt <= l.old) ++old_blowups_below;
@@ -191,6 +199,7 @@ int main(int argc, char** argv) {
           flip_below.push_back(kn);
         if (r.cls != RunClass::kStable) first_bad = std::min(first_bad, dt);
       }
+      if (cells_below > 0 && through_below == cells_below) all_through_kn = std::max(all_through_kn, kn);
       for (double dt : dts)
         if (dt < first_bad) last_good = dt;
       bnd.row({kn, l.predicted, l.old, l.linearized, l.current_min, last_good,
@@ -209,16 +218,30 @@ int main(int argc, char** argv) {
     std::string flip_note;
     for (double kn : flip_below) flip_note += (flip_note.empty() ? "" : ", ") + format_short(kn);
     const std::string summary = "at dt <= predicted: " + counts(below) + "; above: " + counts(above);
-    claims.push_back({"S2 / map", m.title + ": no blow-up at dt <= the predicted dt_crit",
+    const double paper_kn = m.scene.contact.kn;
+    const std::string threshold =
+        all_through_kn > 0.0
+            ? "every dt <= predicted passes through at kn <= " + format_short(all_through_kn, 4) +
+                  " Pa: the paper's kn " + format_short(paper_kn, 3) + " Pa is " +
+                  format_short(paper_kn / all_through_kn, 3) + " times that"
+            : "no kn of the map passes through at every dt (the paper's kn " + format_short(paper_kn, 3) + " Pa)";
+    claims.push_back({"S2 / map", m.title + ": no blow-up and no pass-through at dt <= the predicted dt_crit",
                       "not in the papers: stability of stiff cases against the predicted critical step",
-                      summary + "; first blow-up at " + format_short(min_blowup_ratio, 3) + " to " +
+                      threshold + "; " + summary + "; first blow-up at " + format_short(min_blowup_ratio, 3) + " to " +
                           format_short(max_blowup_ratio, 3) + " x predicted over kn; per-block estimate 2 kn L_max / H: " +
                           std::to_string(old_blowups_below) + " blow-ups at or below it",
-                      "0 blow-ups at dt <= predicted", blowups_below == 0});
-    claims.back().control = repro::control_test(kControlBlowUp);
-    repro::explain_fail(claims.back(), repro::Cause::kImplementation,
-                        "the solver's a-priori dt_crit (Simulation::predicted_critical_step) is not a bound for this "
-                        "scene: a run blows up below it; open, needs an issue note");
+                      "0 blow-ups and 0 flip-throughs at dt <= predicted", failures_below == 0});
+    claims.back().key = "map-" + m.name + "-no-failure-below-predicted";
+    claims.back().control = repro::control_test(kControlFailBelow);
+    repro::explain_fail(claims.back(),
+                        below[static_cast<int>(RunClass::kBlowUp)] > 0 ? repro::Root::kUnexplained
+                                                                        : repro::Root::kThinBlock,
+                        below[static_cast<int>(RunClass::kBlowUp)] > 0
+                            ? "the solver's a-priori critical step is not a bound for this scene: a run blows up "
+                              "below it; not explained"
+                            : std::to_string(below[static_cast<int>(RunClass::kFlipThrough)]) +
+                                  " cells at dt <= predicted pass through: below some kn the penalty cannot stop the "
+                                  "block within the thin block's half thickness at any dt; " + threshold);
     claims.push_back({"S2 / map", m.title + ": energy created by under-resolved impacts below the prediction",
                       "not discussed in the paper",
                       "smallest dt / predicted of an 'energy growth > 1 %' run: " + format_short(growth_ratio, 3) +
@@ -228,6 +251,7 @@ int main(int argc, char** argv) {
                       "information: an accuracy limit (few steps per contact), not a stability limit", false, repro::Kind::kMeasurement});
     progress(m.title + ": " + summary);
   }
+  repro::default_scope(claims, repro::Scope::kSuite);  // the suite's own stability study, every row
   repro::write_claims(repro::claims_path(out, "S2_stability_maps"), claims);
   progress("done");
   return 0;

@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
                       guard_stop_complete(message, static_cast<long>(series.rows()))});
     claims.back().control = repro::control_test(kControlGuardStop);
   }
+  repro::default_scope(claims, repro::Scope::kSuite);  // the suite's guards, every row
   repro::write_claims(repro::claims_path(out, "S3_extreme_cases"), claims);
   progress("done");
   return 0;

@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
                         (first_false.empty() ? "" : " (first: " + first_false + ")") + "; " +
                         std::to_string(other_stops) + " cells stopped by another guard",
                     "measurement, no verdict", false, repro::Kind::kMeasurement});
+  repro::default_scope(claims, repro::Scope::kSuite);  // the suite's guards, every row
   repro::write_claims(repro::claims_path(out, "S3_penetration_map"), claims);
   progress("done");
   return 0;

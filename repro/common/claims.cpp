@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 #include "repro/common/csv.hpp"
@@ -45,22 +46,85 @@ Claim measurement(std::string section, std::string claim, std::string paper, std
   return c;
 }
 
-Claim& explain_fail(Claim& c, Cause cause, std::string text) {
+Cause root_cause(Root root) {
+  switch (root) {
+    case Root::kFrictionStartUp:
+    case Root::kFrictionUpdate:
+    case Root::kSegmentation:
+    case Root::kThinBlock:
+    case Root::kSmallGeometryStep:
+    case Root::kStiffBounce:
+    case Root::kCloneImpact:
+    case Root::kNodalPeak:
+    case Root::kMeshDispersion: return Cause::kPaperMethod;
+    case Root::kSubModelReading: return Cause::kOurReading;
+    case Root::kUnstatedSetup:
+    case Root::kPrintedNumbers: return Cause::kMissingData;
+    case Root::kCornerNormal:
+    case Root::kUnexplained: return Cause::kImplementation;
+    case Root::kNone: break;
+  }
+  return Cause::kNone;
+}
+
+Claim& explain_fail(Claim& c, Root root, std::string text) {
   if (c.kind == Kind::kCheck && !c.pass) {
-    c.cause = cause;
+    c.root = root;
+    c.cause = root_cause(root);
     c.cause_text = std::move(text);
   }
   return c;
 }
 
-std::string kind_name(Kind kind) { return kind == Kind::kCheck ? "check" : "measurement"; }
+void default_scope(std::vector<Claim>& claims, Scope scope) {
+  for (Claim& c : claims)
+    if (c.scope == Scope::kNone) c.scope = scope;
+}
+
+std::string kind_name(const Claim& c) {
+  if (c.kind == Kind::kMeasurement) return "measurement";
+  return c.fitted ? "fitted" : "check";
+}
 
 std::string cause_name(Cause cause) {
   switch (cause) {
     case Cause::kPaperMethod: return "paper_method";
     case Cause::kMissingData: return "missing_data";
+    case Cause::kOurReading: return "our_reading";
     case Cause::kImplementation: return "implementation";
     case Cause::kNone: break;
+  }
+  return "";
+}
+
+std::string scope_name(Scope scope) {
+  switch (scope) {
+    case Scope::kPaper: return "paper";
+    case Scope::kExtension: return "extension";
+    case Scope::kOption: return "option";
+    case Scope::kSuite: return "suite";
+    case Scope::kNone: break;
+  }
+  return "";
+}
+
+std::string root_name(Root root) {
+  switch (root) {
+    case Root::kFrictionStartUp: return "friction_start_up";
+    case Root::kFrictionUpdate: return "friction_update";
+    case Root::kSegmentation: return "segmentation";
+    case Root::kThinBlock: return "thin_block";
+    case Root::kSmallGeometryStep: return "small_geometry_step";
+    case Root::kStiffBounce: return "stiff_bounce";
+    case Root::kCloneImpact: return "clone_impact";
+    case Root::kNodalPeak: return "nodal_peak";
+    case Root::kMeshDispersion: return "mesh_dispersion";
+    case Root::kSubModelReading: return "sub_model_reading";
+    case Root::kUnstatedSetup: return "unstated_setup";
+    case Root::kPrintedNumbers: return "printed_numbers";
+    case Root::kCornerNormal: return "corner_normal";
+    case Root::kUnexplained: return "unexplained";
+    case Root::kNone: break;
   }
   return "";
 }
@@ -70,19 +134,26 @@ std::string claim_id(const Claim& c) { return c.section + ":" + (c.key.empty() ?
 void write_claims(const std::string& path, const std::vector<Claim>& claims) {
   const double run_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - g_start).count();
-  CsvWriter w(path, {"id", "section", "kind", "claim", "paper", "measured", "tolerance", "status", "cause",
-                     "cause_text", "control", "run_time_s"});
   std::map<std::string, int> seen;
+  std::vector<std::string> ids;
   for (const Claim& c : claims) {
     std::string id = claim_id(c);
     const int n = ++seen[id];
     if (n > 1) id += "-" + std::to_string(n);
+    if (c.scope == Scope::kNone)
+      throw std::invalid_argument("claims " + path + ": row " + id + " has no scope (paper, extension, option, suite)");
+    ids.push_back(id);
+  }
+  CsvWriter w(path, {"id", "section", "scope", "kind", "claim", "paper", "measured", "tolerance", "status", "cause",
+                     "root_cause", "cause_text", "control", "run_time_s"});
+  for (std::size_t i = 0; i < claims.size(); ++i) {
+    const Claim& c = claims[i];
     const bool check = c.kind == Kind::kCheck;
-    w.row(std::vector<std::string>{id, c.section, kind_name(c.kind), c.claim, c.paper, c.measured, c.tolerance,
-                                   check ? (c.pass ? "PASS" : "FAIL") : "",
-                                   check && !c.pass ? cause_name(c.cause) : "",
-                                   check && !c.pass ? c.cause_text : "", check ? c.control : "",
-                                   format_short(run_time_s, 3)});
+    const bool failed = check && !c.pass;
+    w.row(std::vector<std::string>{ids[i], c.section, scope_name(c.scope), kind_name(c), c.claim, c.paper, c.measured,
+                                   c.tolerance, check ? (c.pass ? "PASS" : "FAIL") : "",
+                                   failed ? cause_name(c.cause) : "", failed ? root_name(c.root) : "",
+                                   failed ? c.cause_text : "", check ? c.control : "", format_short(run_time_s, 3)});
   }
   w.commit();
 }

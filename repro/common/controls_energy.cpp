@@ -1,4 +1,4 @@
-// Negative controls of the energy-account rows (issue 23, item 4) of the
+// Negative controls of the energy-account rows of the
 // Paper B drivers: each test applies the driver's own criterion (from the
 // driver's header) to a deliberately wrong account and asserts FAIL, and
 // that the paper's run passes. Part of repro_controls_tests (the main is in
@@ -15,8 +15,8 @@
 #include "repro/common/controls_b6.hpp"
 
 
-// The default is the sub-model (Sect. 5 as written), whose row fails
-// (paper_method: the returned inertia of its free sub-nodes is in `other`);
+// The default is the sub-model (Sect. 5), whose row fails (paper_method:
+// the fine-scale kinetic energy of its free sub-nodes is in `other`);
 // the in-place option's row beside it passes.
 TEST_CASE(prisms::kTestEnergyCloses, "[controls][B-6][energy]") {
   const prisms::Result sub = prisms::simulate(dda::cdem::two_prisms(2));

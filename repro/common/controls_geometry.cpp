@@ -1,4 +1,4 @@
-// Negative controls of the geometry drivers' check rows (issue 21, item 2):
+// Negative controls of the geometry drivers' check rows:
 // 3.2.2 previous potential (Fig. 4a), 3.2.2 potential fields (Figs. 4b, 5),
 // 5.3 mirror symmetry and 5.5 segmentation. Each test applies the driver's
 // own criterion (from the driver's header / library) to a deliberately wrong

@@ -1,5 +1,5 @@
-// Negative controls of the B-9 impact study (issue 23 item 2; issue 21,
-// item 2): each test applies the driver's own per-cell criterion (from
+// Negative controls of the B-9 impact study:
+// each test applies the driver's own per-cell criterion (from
 // repro/B_9_impact_study/impact_study.hpp) to a deliberately wrong cell
 // (a made-up record or a real run with a broken setting) and asserts FAIL,
 // and to a good cell and asserts PASS; the rows name the tests through the

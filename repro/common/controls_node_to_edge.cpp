@@ -1,5 +1,5 @@
 // Negative controls of B-7's node-to-edge penalty baseline P
-// (repro/B_7_contact_comparison/penalty_baseline.hpp, issue 23 item 7):
+// (repro/B_7_contact_comparison/penalty_baseline.hpp):
 // each test applies the row's own criterion to the paper's configuration
 // (PASS) and to a deliberately wrong one (FAIL). On the prisms (P runs there
 // take milliseconds). Part of repro_controls_tests (main in test_controls.cpp).

@@ -1,4 +1,6 @@
-// Atomic CSV output for the reproduction drivers.
+// Atomic CSV output for the reproduction drivers: the library's writer
+// (dda::io::CsvFile, lib/io/include/dda/io/csv.hpp, target dda_csv, which
+// depends on nothing else of the project) with the drivers' conventions.
 //
 // CsvWriter writes to "<path>.tmp" and only commit() renames it to <path>, so
 // a reader (or make) never sees a half-written file: a driver that throws or
@@ -6,10 +8,11 @@
 // Non-finite numbers are refused with an exception naming the column: a NaN
 // is a failed computation, never data.
 #pragma once
-#include <cstdio>
 #include <initializer_list>
 #include <string>
 #include <vector>
+
+#include "dda/io/csv.hpp"
 
 namespace repro {
 
@@ -20,9 +23,7 @@ class CsvWriter {
   // std::runtime_error if the file cannot be opened.
   CsvWriter(std::string path, std::vector<std::string> header,
             const std::vector<std::string>& comments = {});
-  ~CsvWriter();  // without commit(): closes and removes the tmp file
-  CsvWriter(const CsvWriter&) = delete;
-  CsvWriter& operator=(const CsvWriter&) = delete;
+  // Without commit() the destructor closes and removes the tmp file.
 
   // One row of numbers (shortest round-trip decimal form, i.e. full
   // precision). Throws std::invalid_argument if the width differs from the
@@ -34,22 +35,14 @@ class CsvWriter {
 
   // Flushes, closes and atomically renames the tmp file to the final path.
   // Throws std::runtime_error on any I/O error (the tmp file is then removed).
-  void commit();
+  void commit() { file_.commit(); }
 
-  const std::string& path() const { return path_; }
-  std::size_t rows() const { return rows_; }
+  const std::string& path() const { return file_.path(); }
+  std::size_t rows() const { return file_.rows(); }
 
  private:
-  void check_open() const;
-  void write_fields(const std::vector<std::string>& fields);
-  void write_line();  // line_ and a newline to the file
-
-  std::string path_, tmp_;
-  std::vector<std::string> header_;
-  std::FILE* file_ = nullptr;
-  std::size_t rows_ = 0;
-  bool committed_ = false;
-  std::string line_;  // the row being written, reused from row to row
+  dda::io::CsvFile file_;
+  std::vector<dda::io::CsvValue> values_;  // the row being written, reused from row to row
 };
 
 // Quotes a CSV field if it contains a comma, quote, CR or LF.

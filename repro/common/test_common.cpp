@@ -75,16 +75,28 @@ TEST_CASE("full-precision numbers read back exactly", "[csv]") {
     CHECK(std::strtod(repro::format_full(v).c_str(), nullptr) == v);
 }
 
-TEST_CASE("claims file has the report's columns, kinds, ids and causes", "[claims]") {
+TEST_CASE("claims file has the report's columns, scopes, kinds, ids and causes", "[claims]") {
   const std::string out = scratch("o");
   const std::string path = repro::claims_path(out, "drv");
   repro::Claim fail{"4.1", "c", "\"q\"", "3", "<2", false};
-  repro::explain_fail(fail, repro::Cause::kMissingData, "geometry reconstructed");
+  repro::explain_fail(fail, repro::Root::kUnstatedSetup, "geometry reconstructed");
+  fail.scope = repro::Scope::kPaper;
   repro::Claim pass{"4.1", "a, b", "x", "1", "<2", true};
   pass.control = "ctl";
-  repro::explain_fail(pass, repro::Cause::kImplementation, "ignored: the check passes");
-  repro::write_claims(path, {pass, fail, repro::measurement("5.1", "H (m)", "-", "0.5", "information"),
-                             repro::measurement("5.1", "H (m)", "-", "0.6", "information")});
+  pass.scope = repro::Scope::kOption;
+  repro::explain_fail(pass, repro::Root::kUnexplained, "ignored: the check passes");
+  repro::Claim fitted{"B-6", "f", "p", "0.34", "~0.34", true};
+  fitted.fitted = true;
+  fitted.control = "ctl";
+  fitted.scope = repro::Scope::kPaper;
+  repro::Claim reading{"B-6", "r", "p", "0.4", "<1e-12", false};
+  repro::explain_fail(reading, repro::Root::kSubModelReading, "momentum drifts");
+  reading.scope = repro::Scope::kPaper;
+  std::vector<repro::Claim> rows = {pass, fail, fitted, reading,
+                                    repro::measurement("5.1", "H (m)", "-", "0.5", "information"),
+                                    repro::measurement("5.1", "H (m)", "-", "0.6", "information")};
+  repro::default_scope(rows, repro::Scope::kExtension);  // the measurements only: the others have one
+  repro::write_claims(path, rows);
   std::string text = slurp(path);
   // The run time is the last column; drop its values before comparing.
   std::string stripped;
@@ -96,12 +108,37 @@ TEST_CASE("claims file has the report's columns, kinds, ids and causes", "[claim
     pos = eol + 1;
   }
   CHECK(stripped ==
-        "id,section,kind,claim,paper,measured,tolerance,status,cause,cause_text,control,run_time_s\n"
-        "4.1:a-b,4.1,check,\"a, b\",x,1,<2,PASS,,,ctl\n"
-        "4.1:c,4.1,check,c,\"\"\"q\"\"\",3,<2,FAIL,missing_data,geometry reconstructed,\n"
-        "5.1:h-m,5.1,measurement,H (m),-,0.5,information,,,,\n"
-        "5.1:h-m-2,5.1,measurement,H (m),-,0.6,information,,,,\n");
+        "id,section,scope,kind,claim,paper,measured,tolerance,status,cause,root_cause,cause_text,control,run_time_s\n"
+        "4.1:a-b,4.1,option,check,\"a, b\",x,1,<2,PASS,,,,ctl\n"
+        "4.1:c,4.1,paper,check,c,\"\"\"q\"\"\",3,<2,FAIL,missing_data,unstated_setup,geometry reconstructed,\n"
+        "B-6:f,B-6,paper,fitted,f,p,0.34,~0.34,PASS,,,,ctl\n"
+        "B-6:r,B-6,paper,check,r,p,0.4,<1e-12,FAIL,our_reading,sub_model_reading,momentum drifts,\n"
+        "5.1:h-m,5.1,extension,measurement,H (m),-,0.5,information,,,,,\n"
+        "5.1:h-m-2,5.1,extension,measurement,H (m),-,0.6,information,,,,,\n");
+  // A row without a scope is refused, naming it; nothing is written.
+  const std::string bad = repro::claims_path(out, "bad");
+  repro::Claim none{"6.2", "no scope", "p", "1", "<2", true};
+  try {
+    repro::write_claims(bad, {pass, none});
+    FAIL("no exception");
+  } catch (const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("6.2:no-scope has no scope") != std::string::npos);
+  }
+  CHECK_FALSE(fs::exists(bad));
   fs::remove_all(fs::path(scratch("")));
+}
+
+TEST_CASE("every root cause has a name and a category", "[claims]") {
+  using repro::Root;
+  for (Root r : {Root::kFrictionStartUp, Root::kFrictionUpdate, Root::kSegmentation, Root::kThinBlock,
+                 Root::kSmallGeometryStep, Root::kStiffBounce, Root::kCloneImpact, Root::kNodalPeak,
+                 Root::kMeshDispersion, Root::kSubModelReading, Root::kUnstatedSetup, Root::kPrintedNumbers,
+                 Root::kCornerNormal, Root::kUnexplained}) {
+    CHECK_FALSE(repro::root_name(r).empty());
+    CHECK(repro::root_cause(r) != repro::Cause::kNone);
+  }
+  CHECK(repro::root_cause(Root::kSubModelReading) == repro::Cause::kOurReading);
+  CHECK(repro::cause_name(repro::Cause::kOurReading) == "our_reading");
 }
 
 TEST_CASE("claim ids: explicit key, or a bounded slug of the claim", "[claims]") {

@@ -1,4 +1,4 @@
-// Negative controls of the claim rows (issue 21, item 2): every check that
+// Negative controls of the claim rows: every check that
 // names a control here ("repro_controls: <test name>") is run with the
 // driver's own criterion on a deliberately wrong configuration that the claim
 // depends on, and must come out FAIL. A criterion that passes anyway checks
@@ -740,6 +740,36 @@ TEST_CASE("S2 no blow-up: FAIL against a bound 4 times too large", "[controls][S
   CHECK_FALSE(s2::blowup_at_or_below(over, 3.0 * predicted, predicted));
   const s2::MapRun under = s2::map_run(m, kn, 0.5 * predicted);
   CHECK_FALSE(s2::blowup_at_or_below(under, 0.5 * predicted, wrong_bound));
+}
+
+TEST_CASE("S2 no blow-up or pass-through: FAIL against a bound 4 times too large and at a kn that passes through",
+          "[controls][S2]") {
+  // The row's criterion counts blow-ups and pass-throughs at dt <= bound.
+  // (1) A blow-up above the true limit counts against a bound that claims it
+  // is safe; (2) on the bouncing block (B 0.1 m), a kn 50 times below the
+  // paper's passes through at half the predicted step and counts, while the
+  // paper's kn at the same fraction of its predicted step does not.
+  {
+    const s2::MapScene m = s2::two_squares_map();
+    const double kn = 1e8;
+    dda::Scene s = m.scene;
+    s.contact.kn = kn;
+    const double predicted = dda::Simulation(s).predicted_critical_step();
+    const s2::MapRun over = s2::map_run(m, kn, 3.0 * predicted);
+    INFO(over.message);
+    CHECK(s2::fails_at_or_below(over, 3.0 * predicted, 4.0 * predicted));
+    CHECK_FALSE(s2::fails_at_or_below(over, 3.0 * predicted, predicted));
+  }
+  const s2::MapScene m = s2::bouncing_map(dda::HRule::kMinMaxEdge);
+  for (const double factor : {1.0 / 50.0, 1.0}) {
+    const double kn = factor * m.scene.contact.kn;
+    dda::Scene s = m.scene;
+    s.contact.kn = kn;
+    const double predicted = dda::Simulation(s).predicted_critical_step();
+    const s2::MapRun r = s2::map_run(m, kn, 0.5 * predicted);
+    INFO("kn " << kn << ": " << r.message);
+    CHECK(s2::fails_at_or_below(r, 0.5 * predicted, predicted) == (factor < 1.0));
+  }
 }
 
 TEST_CASE("S2 classification: an energy-budget stop that stays bounded is not a blow-up", "[controls][S2]") {

@@ -1,7 +1,7 @@
 // Paper B Sect. 4.1: the clone (unified) node formed at a touch, the
 // perfectly inelastic impact that sets its velocity (Eq. 4, energy loss
 // Eq. 5), and the clone's geometry (normal, tributary length A_c).
-#include "dda/cdem/model.hpp"
+#include "model_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,21 +15,19 @@ namespace dda::cdem {
 
 using namespace detail;
 
-bool Model::in_clone(int node) const { return clone_count_[node] > 0; }
-
 // A node cannot start a new touch while it is a clone's main node or is tied
 // node-to-node; a node tied as an end of a touched edge (weight < 1) can, so
 // that a corner of a face in contact still finds the other block.
-bool Model::touch_blocked(int node) const {
-  for (const Clone& c : clones_)
+bool touch_blocked(const std::vector<Clone>& clones, int node) {
+  for (const Clone& c : clones)
     if (c.main == node || (c.t[0] == node && c.t[1] < 0)) return true;
   return false;
 }
 
 // Nodes tied with `node` by some clone (a touch between them is that clone).
-std::vector<int> Model::tied_partners(int node) const {
+std::vector<int> tied_partners(const std::vector<Clone>& clones, int node) {
   std::vector<int> out;
-  for (const Clone& c : clones_) {
+  for (const Clone& c : clones) {
     const bool has = c.main == node || c.t[0] == node || c.t[1] == node;
     if (!has) continue;
     for (int a : {c.main, c.t[0], c.t[1]})
@@ -38,9 +36,9 @@ std::vector<int> Model::tied_partners(int node) const {
   return out;
 }
 
-std::vector<int> Model::clone_component(int ci) const {
+std::vector<int> clone_component(const std::vector<Clone>& clones, int ci) {
   std::vector<int> comp{ci};
-  std::vector<char> in(clones_.size(), 0);
+  std::vector<char> in(clones.size(), 0);
   in[static_cast<std::size_t>(ci)] = 1;
   auto nodes_of = [&](const Clone& c) {
     std::vector<int> n{c.main};
@@ -49,10 +47,10 @@ std::vector<int> Model::clone_component(int ci) const {
     return n;
   };
   for (std::size_t head = 0; head < comp.size(); ++head) {
-    const std::vector<int> a = nodes_of(clones_[static_cast<std::size_t>(comp[head])]);
-    for (std::size_t j = 0; j < clones_.size(); ++j) {
-      if (in[j] || clones_[j].fine != clones_[static_cast<std::size_t>(ci)].fine) continue;
-      const std::vector<int> b = nodes_of(clones_[j]);
+    const std::vector<int> a = nodes_of(clones[static_cast<std::size_t>(comp[head])]);
+    for (std::size_t j = 0; j < clones.size(); ++j) {
+      if (in[j] || clones[j].fine != clones[static_cast<std::size_t>(ci)].fine) continue;
+      const std::vector<int> b = nodes_of(clones[j]);
       bool share = false;
       for (int x : a)
         for (int y : b) share = share || x == y;
@@ -81,14 +79,14 @@ std::vector<int> Model::clone_component(int ci) const {
 // with both rows, as in Eq. 4. W^+ by eigen-decomposition: eigenvalues
 // below kRankTolerance of the largest are dropped (ties that repeat others,
 // e.g. two corners each tied to the other's face).
-double Model::group_eq5(const std::vector<int>& comp) const {
+double group_eq5(const std::vector<Clone>& clones, const NodeState& nd, const MeshState& mesh, const std::vector<int>& comp) {
   constexpr double kRankTolerance = 1e-12;  // relative; W's entries are sums of 1/m, round-off ~1e-16
   std::vector<Vec2> dirs;                   // one row per tie direction
   std::vector<int> row_clone;
   for (std::size_t k = 0; k < comp.size(); ++k) {
-    const Clone& cl = clones_[static_cast<std::size_t>(comp[k])];
+    const Clone& cl = clones[static_cast<std::size_t>(comp[k])];
     if (cl.sliding && k > 0) {
-      dirs.push_back(clone_normal(cl));
+      dirs.push_back(clone_normal(cl, mesh, nd.x));
       row_clone.push_back(comp[k]);
     } else {
       dirs.push_back({1.0, 0.0});
@@ -108,13 +106,13 @@ double Model::group_eq5(const std::vector<int>& comp) const {
   Eigen::MatrixXd w = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   for (int i = 0; i < n; ++i) {
-    const auto ti = terms(clones_[static_cast<std::size_t>(row_clone[i])]);
-    for (const auto& [node, c] : ti) r(i) += c * dot(dirs[i], v_[node]);
+    const auto ti = terms(clones[static_cast<std::size_t>(row_clone[i])]);
+    for (const auto& [node, c] : ti) r(i) += c * dot(dirs[i], nd.v[node]);
     for (int j = 0; j < n; ++j) {
-      const auto tj = terms(clones_[static_cast<std::size_t>(row_clone[j])]);
+      const auto tj = terms(clones[static_cast<std::size_t>(row_clone[j])]);
       for (const auto& [a, ca] : ti)
         for (const auto& [b, cb] : tj)
-          if (a == b) w(i, j) += ca * cb * inv_m_[a] * dot(dirs[i], dirs[j]);
+          if (a == b) w(i, j) += ca * cb * nd.inv_m[a] * dot(dirs[i], dirs[j]);
     }
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(w);
@@ -138,11 +136,12 @@ double Model::group_eq5(const std::vector<int>& comp) const {
 // Gauss-Seidel step: each update minimises the kinetic energy over the
 // clone's impulse within the cap, so the loss stays below the group's
 // Eq. 5); capped, the clone starts sliding (Eq. 10).
-double Model::project_component(int ci, TouchRecord* rec) {
-  const std::vector<int> comp = clone_component(ci);
+double project_component(std::vector<Clone>& clones, NodeState& nd, const MeshState& mesh, const CdemOptions& opt, int ci,
+                         TouchRecord* rec) {
+  const std::vector<int> comp = clone_component(clones, ci);
   std::vector<int> nodes;
   for (int c : comp) {
-    const Clone& cl = clones_[static_cast<std::size_t>(c)];
+    const Clone& cl = clones[static_cast<std::size_t>(c)];
     nodes.push_back(cl.main);
     for (int q = 0; q < 2; ++q)
       if (cl.t[q] >= 0 && cl.w[q] != 0.0) nodes.push_back(cl.t[q]);
@@ -152,37 +151,37 @@ double Model::project_component(int ci, TouchRecord* rec) {
   auto ke = [&] {
     double e = 0.0, vmax = 0.0;
     for (int n : nodes) {
-      e += 0.5 * m_[n] * length_squared(v_[n]);
-      vmax = std::max(vmax, length(v_[n]));
+      e += 0.5 * nd.m[n] * length_squared(nd.v[n]);
+      vmax = std::max(vmax, length(nd.v[n]));
     }
     return std::make_pair(e, vmax);
   };
-  if (rec) rec->energy_loss_eq5_group = group_eq5(comp);
-  const bool coulomb = rec && opt_.touch_impact == TouchImpact::kCoulomb;
+  if (rec) rec->energy_loss_eq5_group = group_eq5(clones, nd, mesh, comp);
+  const bool coulomb = rec && opt.touch_impact == TouchImpact::kCoulomb;
   constexpr double kPi = 3.14159265358979323846;
-  const double tan_phi = std::tan(opt_.strength.friction_deg * kPi / 180.0);
+  const double tan_phi = std::tan(opt.strength.friction_deg * kPi / 180.0);
   double jn_new = 0.0, jt_new = 0.0;  // the new clone's accumulated impulse (normal, tangential)
   bool capped = false;
   const auto [before, vscale] = ke();
   for (int it = 0; it < 500; ++it) {
     double worst = 0.0;
     for (int c : comp) {
-      const Clone& cl = clones_[static_cast<std::size_t>(c)];
-      Vec2 r = v_[cl.main];
-      double w = inv_m_[cl.main];
+      const Clone& cl = clones[static_cast<std::size_t>(c)];
+      Vec2 r = nd.v[cl.main];
+      double w = nd.inv_m[cl.main];
       for (int q = 0; q < 2; ++q)
         if (cl.t[q] >= 0 && cl.w[q] != 0.0) {
-          r -= cl.w[q] * v_[cl.t[q]];
-          w += cl.w[q] * cl.w[q] * inv_m_[cl.t[q]];
+          r -= cl.w[q] * nd.v[cl.t[q]];
+          w += cl.w[q] * cl.w[q] * nd.inv_m[cl.t[q]];
         }
       if (!(w > 0.0)) continue;
       if (cl.sliding) {  // only the normal velocity is tied (Eq. 10)
-        const Vec2 n = clone_normal(cl);
+        const Vec2 n = clone_normal(cl, mesh, nd.x);
         r = dot(r, n) * n;
       }
       Vec2 j = -(1.0 / w) * r;
       if (c == ci && rec) {
-        const Vec2 n = clone_normal(cl), u = perp_left(n);
+        const Vec2 n = clone_normal(cl, mesh, nd.x), u = perp_left(n);
         const double jn = jn_new + dot(j, n), jt_want = jt_new + dot(j, u);
         double jt = jt_want;
         if (coulomb) {
@@ -195,9 +194,9 @@ double Model::project_component(int ci, TouchRecord* rec) {
         jt_new = jt;
       }
       worst = std::max(worst, w * length(j));
-      v_[cl.main] += inv_m_[cl.main] * j;
+      nd.v[cl.main] += nd.inv_m[cl.main] * j;
       for (int q = 0; q < 2; ++q)
-        if (cl.t[q] >= 0 && cl.w[q] != 0.0) v_[cl.t[q]] -= (cl.w[q] * inv_m_[cl.t[q]]) * j;
+        if (cl.t[q] >= 0 && cl.w[q] != 0.0) nd.v[cl.t[q]] -= (cl.w[q] * nd.inv_m[cl.t[q]]) * j;
     }
     if (worst <= 1e-14 * (vscale + 1e-300)) break;
   }
@@ -205,39 +204,45 @@ double Model::project_component(int ci, TouchRecord* rec) {
     rec->impulse_normal = jn_new;
     rec->impulse_tangential = jt_new;
     rec->coulomb_capped = capped;
-    if (capped) clones_[static_cast<std::size_t>(ci)].sliding = true;
+    if (capped) clones[static_cast<std::size_t>(ci)].sliding = true;
   }
   return before - ke().first;
 }
 
-bool Model::process_touch(const Touch& touch, bool fine_level, double t, double t0, double t1) {
+// A touch of `touch.node` at time t within the interval [t0, t1]: the
+// sub-model's request (kSubModel) or the refinement (kInPlace), the clone
+// and its Eq. 4 projection, the record. False when the node cannot touch
+// (tied already, a dead or hanging node).
+bool process_touch(const ModelSetup& su, ModelState& st, const Touch& touch, bool fine_level, double t, double t0,
+                   double t1) {
+  NodeState& nd = st.nodes;
   const int m = touch.node;
-  if (touch_blocked(m) || kind_[m] == NodeKind::kDead || kind_[m] == NodeKind::kHanging) return false;
+  if (touch_blocked(st.clones, m) || nd.kind[m] == NodeKind::kDead || nd.kind[m] == NodeKind::kHanging) return false;
   {
-    const std::vector<int> partners = tied_partners(m);
+    const std::vector<int> partners = tied_partners(st.clones, m);
     auto tied = [&](int a) { return std::find(partners.begin(), partners.end(), a) != partners.end(); };
     if ((touch.xi <= kNodeTieXi && tied(touch.ea)) || (touch.xi >= 1.0 - kNodeTieXi && tied(touch.eb))) return false;
   }
   int ea = touch.ea, eb = touch.eb;
-  const int bm = node_block_[m], bt = node_block_[ea];
+  const int bm = nd.block[m], bt = nd.block[ea];
   // A node that touches again and again within one coarse step chatters
   // (each touch separates at once): the contact is not resolved.
   constexpr int kMaxTouchesPerStep = 1000;
-  if (++step_touch_count_[m] > kMaxTouchesPerStep) {
-    const Vec2 e = x_[eb] - x_[ea];
-    const double depth = std::max(0.0, -cross(x_[m] - x_[ea], e) / length(e));
+  if (++st.step_touch_count[m] > kMaxTouchesPerStep) {
+    const Vec2 e = nd.x[eb] - nd.x[ea];
+    const double depth = std::max(0.0, -cross(nd.x[m] - nd.x[ea], e) / length(e));
     std::ostringstream s;
     s << "cdem: node " << m << " of block " << bm << " touched block " << bt << " " << kMaxTouchesPerStep
-      << " times within step " << steps_ + 1 << " (t = " << t << " s, depth " << depth
+      << " times within step " << st.steps + 1 << " (t = " << t << " s, depth " << depth
       << " m): each clone separates at once and the contact is not resolved; try a smaller dt";
-    throw ContactError(s.str(), m, bm, bt, steps_ + 1, t, depth, StopReason::kOther);
+    throw ContactError(s.str(), m, bm, bt, st.steps + 1, t, depth, StopReason::kOther);
   }
   double xi = touch.xi;
   {
-    const Vec2 e = x_[eb] - x_[ea];
-    xi = std::clamp(dot(x_[m] - x_[ea], e) / length_squared(e), 0.0, 1.0);
+    const Vec2 e = nd.x[eb] - nd.x[ea];
+    xi = std::clamp(dot(nd.x[m] - nd.x[ea], e) / length_squared(e), 0.0, 1.0);
   }
-  const Vec2 point = lerp(x_[ea], x_[eb], xi);
+  const Vec2 point = lerp(nd.x[ea], nd.x[eb], xi);
   TouchRecord rec;
   rec.time = t;
   rec.step_start = t0;
@@ -250,16 +255,16 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
   rec.target_block = bt;
   rec.point = point;
 
-  if (submodel_mode())
-    request_submodel(m, point, ea, eb, rec);  // Sect. 5 step 1, built at the step end
-  else if (opt_.subdivision)
-    refine_contact_zone(m, point, ea, eb, xi, rec);
+  if (submodel_mode(su.opt))
+    request_submodel(st.submodels, static_cast<int>(st.log.touches.size()), m, point, ea, eb, rec.dt2);  // Sect. 5 step 1
+  else if (su.opt.subdivision)
+    refine_contact_zone(su, st, m, point, ea, eb, xi, rec);
 
   Clone c;
   c.main = m;
   c.ea = ea;
   c.eb = eb;
-  const double len = distance(x_[ea], x_[eb]);
+  const double len = distance(nd.x[ea], nd.x[eb]);
   if (xi * len <= kNodeTieXi * len) {
     c.t = {ea, -1};
     c.w = {1.0, 0.0};
@@ -271,48 +276,48 @@ bool Model::process_touch(const Touch& touch, bool fine_level, double t, double 
     c.w = {1.0 - xi, xi};
   }
   rec.node_to_node = c.t[1] < 0;
-  c.area = tributary_length(m);
-  c.fine = kind_[m] == NodeKind::kFine;
+  c.area = tributary_length(st.mesh, nd.x, m);
+  c.fine = nd.kind[m] == NodeKind::kFine;
   for (int q = 0; q < 2; ++q) {
     const int a = c.t[q];
-    if (a < 0 || blocks_[node_block_[a]].fixed) continue;
-    if ((kind_[a] == NodeKind::kFine) != c.fine)
+    if (a < 0 || st.blocks[nd.block[a]].fixed) continue;
+    if ((nd.kind[a] == NodeKind::kFine) != c.fine)
       throw SimulationError("cdem: clone nodes on two integration levels (internal error)");
   }
-  rec.mass_main = m_[m];
+  rec.mass_main = nd.m[m];
   double inv_t = 0.0;
   Vec2 vt{};
   for (int q = 0; q < 2; ++q)
     if (c.t[q] >= 0) {
-      inv_t += c.w[q] * c.w[q] * inv_m_[c.t[q]];
-      vt += c.w[q] * v_[c.t[q]];
+      inv_t += c.w[q] * c.w[q] * nd.inv_m[c.t[q]];
+      vt += c.w[q] * nd.v[c.t[q]];
     }
   rec.mass_target = inv_t > 0.0 ? 1.0 / inv_t : 0.0;
-  rec.v_main = v_[m];
+  rec.v_main = nd.v[m];
   rec.v_target = vt;
-  const double inv_sum = inv_m_[m] + inv_t;
-  rec.energy_loss_eq5 = inv_sum > 0.0 ? 0.5 / inv_sum * length_squared(v_[m] - vt) : 0.0;
-  clones_.push_back(c);
-  clone_count_[m] += 1;
+  const double inv_sum = nd.inv_m[m] + inv_t;
+  rec.energy_loss_eq5 = inv_sum > 0.0 ? 0.5 / inv_sum * length_squared(nd.v[m] - vt) : 0.0;
+  st.clones.push_back(c);
+  nd.clone_count[m] += 1;
   for (int q = 0; q < 2; ++q)
-    if (c.t[q] >= 0) clone_count_[c.t[q]] += 1;
-  rec.energy_loss = project_component(static_cast<int>(clones_.size()) - 1, &rec);
-  rec.v_clone = v_[m];
-  impact_loss_ += rec.energy_loss;
-  touch_loss_eq5_ += rec.energy_loss_eq5;
-  touch_loss_eq5_group_ += rec.energy_loss_eq5_group;
-  if (opt_.capture_touch_snapshots) {
-    rec.snapshot.push_back(snapshot());
+    if (c.t[q] >= 0) nd.clone_count[c.t[q]] += 1;
+  rec.energy_loss = project_component(st.clones, nd, st.mesh, su.opt, static_cast<int>(st.clones.size()) - 1, &rec);
+  rec.v_clone = nd.v[m];
+  st.energy.impact_loss += rec.energy_loss;
+  st.energy.touch_loss_eq5 += rec.energy_loss_eq5;
+  st.energy.touch_loss_eq5_group += rec.energy_loss_eq5_group;
+  if (su.opt.capture_touch_snapshots) {
+    rec.snapshot.push_back(snapshot_of(st));
     rec.snapshot.back().time = t;
   }
-  touches_.push_back(std::move(rec));
+  st.log.touches.push_back(std::move(rec));
   return true;
 }
 
-Vec2 Model::vertex_normal(int node) const {
+Vec2 vertex_normal(const MeshState& mesh, const std::vector<Vec2>& x, int node) {
   Vec2 n{};
-  for (const BEdge& e : bedges_)
-    if (e.a == node || e.b == node) n += normalized(perp_right(x_[e.b] - x_[e.a]));
+  for (const BoundaryEdge& e : mesh.bedges)
+    if (e.a == node || e.b == node) n += normalized(perp_right(x[e.b] - x[e.a]));
   return normalized(n);
 }
 
@@ -320,18 +325,18 @@ Vec2 Model::vertex_normal(int node) const {
 // touched edge's outward normal; for two merged nodes the difference of
 // their vertex normals, so that it does not depend on which of the two was
 // found as the main node (an apex on a flat face gets the face normal).
-Vec2 Model::clone_normal(const Clone& c) const {
+Vec2 clone_normal(const Clone& c, const MeshState& mesh, const std::vector<Vec2>& x) {
   if (c.t[1] < 0) {
-    const Vec2 n = normalized(vertex_normal(c.t[0]) - vertex_normal(c.main));
+    const Vec2 n = normalized(vertex_normal(mesh, x, c.t[0]) - vertex_normal(mesh, x, c.main));
     if (n != Vec2{}) return n;
   }
-  return normalized(perp_right(x_[c.eb] - x_[c.ea]));
+  return normalized(perp_right(x[c.eb] - x[c.ea]));
 }
 
-double Model::tributary_length(int node) const {
+double tributary_length(const MeshState& mesh, const std::vector<Vec2>& x, int node) {
   double l = 0.0;
-  for (const BEdge& e : bedges_)
-    if (e.a == node || e.b == node) l += 0.5 * distance(x_[e.a], x_[e.b]);
+  for (const BoundaryEdge& e : mesh.bedges)
+    if (e.a == node || e.b == node) l += 0.5 * distance(x[e.a], x[e.b]);
   return l;
 }
 

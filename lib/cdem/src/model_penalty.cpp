@@ -2,7 +2,7 @@
 // contact on the same CST blocks (CdemOptions::contact =
 // ContactMode::kNodeToEdgePenalty), the contact Paper B argues against
 // (Paper B Sect. 1: contact springs whose stiffness is "difficult to
-// identify", penetration, a step limited by the spring). Issue 23, item 7.
+// identify", penetration, a step limited by the spring).
 //
 // Source: the standard node-to-segment penalty method of explicit FE/DEM
 // codes (e.g. Hallquist, Goudreau & Benson 1985, "Sliding interfaces with
@@ -48,7 +48,7 @@
 #include <limits>
 #include <sstream>
 
-#include "dda/cdem/model.hpp"
+#include "model_ops.hpp"
 #include "dda/polygon.hpp"
 #include "geometry.hpp"
 
@@ -65,35 +65,39 @@ constexpr double kDefaultKnPerYoung = 1.0 / 100.0;
 constexpr double kMaxDepthPerElement = 0.5;
 }  // namespace
 
-void Model::setup_penalty() {
-  contact_critical_dt_ = critical_dt_;
-  if (opt_.contact == ContactMode::kTwoScale) return;
-  if (opt_.contact != ContactMode::kNodeToEdgePenalty) throw SceneError("options.contact: unknown contact mode");
-  if (opt_.subdivision)
+// The penalty constants of the set-up: kn, the depth limit, the critical
+// step with the springs (SceneError when dt exceeds it).
+void setup_penalty(ModelSetup& su, const ModelState& st) {
+  const NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  su.contact_critical_dt = su.critical_dt;
+  if (su.opt.contact == ContactMode::kTwoScale) return;
+  if (su.opt.contact != ContactMode::kNodeToEdgePenalty) throw SceneError("options.contact: unknown contact mode");
+  if (su.opt.subdivision)
     throw SceneError(
         "options.subdivision: the node-to-edge penalty contact has no local subdivision; set subdivision = false");
-  if (!(std::isfinite(opt_.penalty_kn) && opt_.penalty_kn >= 0.0))
+  if (!(std::isfinite(su.opt.penalty_kn) && su.opt.penalty_kn >= 0.0))
     throw SceneError("options.penalty_kn: must be >= 0 (Pa; 0 = E / 100)");
   double young = 0.0;
-  for (const Block& b : blocks_) young = std::max(young, scene_.materials[static_cast<std::size_t>(b.material)].young);
-  penalty_kn_ = opt_.penalty_kn > 0.0 ? opt_.penalty_kn : kDefaultKnPerYoung * young;
+  for (const BlockState& b : st.blocks) young = std::max(young, su.scene.materials[static_cast<std::size_t>(b.material)].young);
+  su.penalty_kn = su.opt.penalty_kn > 0.0 ? su.opt.penalty_kn : kDefaultKnPerYoung * young;
   double h_min = std::numeric_limits<double>::infinity();
-  for (int e : coarse_elems_) {
-    const Elem& el = elem(e);
-    h_min = std::min(h_min, std::sqrt(2.0 * cst({x_[el.n[0]], x_[el.n[1]], x_[el.n[2]]}).area));
+  for (int e : mesh.coarse_elems) {
+    const Element& el = mesh.elem(e);
+    h_min = std::min(h_min, std::sqrt(2.0 * cst({nd.x[el.n[0]], nd.x[el.n[1]], nd.x[el.n[2]]}).area));
   }
-  penalty_max_depth_ = kMaxDepthPerElement * h_min;
+  su.penalty_max_depth = kMaxDepthPerElement * h_min;
   double max_inv_m = 0.0;
-  for (int n : bnodes_) max_inv_m = std::max(max_inv_m, inv_m_[n]);
-  const double omega_mesh = std::isfinite(critical_dt_) ? 2.0 / critical_dt_ : 0.0;
+  for (int n : mesh.bnodes) max_inv_m = std::max(max_inv_m, nd.inv_m[n]);
+  const double omega_mesh = std::isfinite(su.critical_dt) ? 2.0 / su.critical_dt : 0.0;
   constexpr double kSpringsPerNode = 3.0;  // its own and one on each adjacent boundary edge (above)
-  const double omega2 = omega_mesh * omega_mesh + kSpringsPerNode * 2.0 * penalty_kn_ * max_inv_m;
-  contact_critical_dt_ = omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
-  if (opt_.check_stability && dt_ > contact_critical_dt_) {
+  const double omega2 = omega_mesh * omega_mesh + kSpringsPerNode * 2.0 * su.penalty_kn * max_inv_m;
+  su.contact_critical_dt = omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
+  if (su.opt.check_stability && su.dt > su.contact_critical_dt) {
     std::ostringstream s;
-    s << "dt: time step " << dt_ << " s exceeds the critical step " << contact_critical_dt_
-      << " s of the mesh with the node-to-edge penalty springs (kn " << penalty_kn_ << " Pa; mesh alone "
-      << critical_dt_ << " s): use a smaller dt or a smaller kn";
+    s << "dt: time step " << su.dt << " s exceeds the critical step " << su.contact_critical_dt
+      << " s of the mesh with the node-to-edge penalty springs (kn " << su.penalty_kn << " Pa; mesh alone "
+      << su.critical_dt << " s): use a smaller dt or a smaller kn";
     throw SceneError(s.str());
   }
 }
@@ -101,38 +105,42 @@ void Model::setup_penalty() {
 // One explicit central-difference step (Eq. 1) with the penalty springs as
 // external forces: half-kick, drift, forces at t1 (elements, gravity,
 // damping, add_penalty_forces via compute_coarse_forces), half-kick.
-void Model::penalty_step() {
-  step_t0_ = time_;
-  kick_coarse_first_half();
-  for (int n : coarse_dofs_) x_[n] += dt_ * v_[n];
-  time_ += dt_;
-  forces_and_second_half_kick();
-  ++steps_;
-  check_state();
+void penalty_step(const ModelSetup& su, ModelState& st) {
+  NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  st.step_t0 = st.time;
+  kick_coarse_first_half(nd, mesh, su.dt);
+  for (int n : mesh.coarse_dofs) nd.x[n] += su.dt * nd.v[n];
+  st.time += su.dt;
+  forces_and_second_half_kick(su, st);
+  ++st.steps;
+  check_state(st);
 }
 
-void Model::add_penalty_forces() {
-  penalty_contacts_.clear();
-  std::vector<Aabb> box(blocks_.size());
-  for (int n : bnodes_) {
-    Aabb& b = box[static_cast<std::size_t>(node_block_[n])];
-    b.lo = {std::min(b.lo.x, x_[n].x), std::min(b.lo.y, x_[n].y)};
-    b.hi = {std::max(b.hi.x, x_[n].x), std::max(b.hi.y, x_[n].y)};
+void add_penalty_forces(const ModelSetup& su, ModelState& st) {
+  NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  st.penalty_contacts.clear();
+  std::vector<Aabb> box(st.blocks.size());
+  for (int n : mesh.bnodes) {
+    Aabb& b = box[static_cast<std::size_t>(nd.block[n])];
+    b.lo = {std::min(b.lo.x, nd.x[n].x), std::min(b.lo.y, nd.x[n].y)};
+    b.hi = {std::max(b.hi.x, nd.x[n].x), std::max(b.hi.y, nd.x[n].y)};
   }
-  for (int n : bnodes_) {
-    const int bn = node_block_[n];
-    const Vec2 p = x_[n];
-    for (std::size_t ob = 0; ob < blocks_.size(); ++ob) {
-      if (static_cast<int>(ob) == bn || (blocks_[bn].fixed && blocks_[ob].fixed)) continue;
+  for (int n : mesh.bnodes) {
+    const int bn = nd.block[n];
+    const Vec2 p = nd.x[n];
+    for (std::size_t ob = 0; ob < st.blocks.size(); ++ob) {
+      if (static_cast<int>(ob) == bn || (st.blocks[bn].fixed && st.blocks[ob].fixed)) continue;
       const Aabb& o = box[ob];
       if (p.x < o.lo.x || p.x > o.hi.x || p.y < o.lo.y || p.y > o.hi.y) continue;
       // inside the boundary loop (crossing number) and the nearest edge
       bool inside = false;
       double best = std::numeric_limits<double>::infinity();
-      const BEdge* near = nullptr;
-      for (int ei : block_bedges_[ob]) {
-        const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
-        const Vec2 a = x_[e.a], c = x_[e.b];
+      const BoundaryEdge* near = nullptr;
+      for (int ei : mesh.block_bedges[ob]) {
+        const BoundaryEdge& e = mesh.bedges[static_cast<std::size_t>(ei)];
+        const Vec2 a = nd.x[e.a], c = nd.x[e.b];
         if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) / (c.y - a.y) * (c.x - a.x)) inside = !inside;
         const double d = point_segment_distance(p, a, c);
         if (d < best) {
@@ -141,32 +149,32 @@ void Model::add_penalty_forces() {
         }
       }
       if (!inside || near == nullptr) continue;
-      const Vec2 a = x_[near->a], edge = x_[near->b] - a;
+      const Vec2 a = nd.x[near->a], edge = nd.x[near->b] - a;
       const double len = length(edge);
       const Vec2 normal = perp_right(edge) / len;
       const double depth = -dot(normal, p - a);
       if (!(depth > 0.0)) continue;
-      if (depth > penalty_max_depth_) {
+      if (depth > su.penalty_max_depth) {
         std::ostringstream s;
         s << "cdem: node-to-edge penalty: node " << n << " of block " << bn << " is " << depth << " m inside block "
-          << ob << " at t = " << time_ << " s (step " << steps_ << "), deeper than half the smallest element ("
-          << penalty_max_depth_ << " m): kn = " << penalty_kn_
+          << ob << " at t = " << st.time << " s (step " << st.steps << "), deeper than half the smallest element ("
+          << su.penalty_max_depth << " m): kn = " << su.penalty_kn
           << " Pa is far too small for this impact (or dt too large); the node would pass through the edge";
-        throw ContactError(s.str(), n, bn, static_cast<int>(ob), steps_, time_, depth);
+        throw ContactError(s.str(), n, bn, static_cast<int>(ob), st.steps, st.time, depth);
       }
       const double xi = std::clamp(dot(p - a, edge) / (len * len), 0.0, 1.0);
-      const Vec2 f = (penalty_kn_ * depth) * normal;
-      if (inv_m_[n] > 0.0) f_[n] += f;
-      if (inv_m_[near->a] > 0.0) f_[near->a] -= (1.0 - xi) * f;
-      if (inv_m_[near->b] > 0.0) f_[near->b] -= xi * f;
-      penalty_contacts_.push_back({n, near->a, near->b, xi, depth, normal});
+      const Vec2 f = (su.penalty_kn * depth) * normal;
+      if (nd.inv_m[n] > 0.0) nd.f[n] += f;
+      if (nd.inv_m[near->a] > 0.0) nd.f[near->a] -= (1.0 - xi) * f;
+      if (nd.inv_m[near->b] > 0.0) nd.f[near->b] -= xi * f;
+      st.penalty_contacts.push_back({n, near->a, near->b, xi, depth, normal});
     }
   }
 }
 
-double Model::penalty_energy() const {
+double penalty_energy(const ModelSetup& su, const std::vector<PenaltyContact>& contacts) {
   double w = 0.0;
-  for (const PenaltyContact& c : penalty_contacts_) w += 0.5 * penalty_kn_ * c.depth * c.depth;
+  for (const PenaltyContact& c : contacts) w += 0.5 * su.penalty_kn * c.depth * c.depth;
   return w;
 }
 

@@ -1,5 +1,5 @@
-// Paper B Sect. 5 as written (SubdivisionMode::kSubModel): the two space
-// scales by a separate sub-model of the colliding elements.
+// Paper B Sect. 5 (SubdivisionMode::kSubModel): the two space scales by a
+// separate sub-model of the colliding elements.
 //
 // The paper's steps, and how each is done here:
 //  (1) At a touch at P_i the circles of radius c dt2 (c = sqrt(E / rho) of
@@ -38,13 +38,16 @@
 //      positions and velocities interpolated linearly from the parents'
 //      corners (the velocities are the coarse half-step ones), stress the
 //      parent's; lumped sub-element masses.
-//  (5) The sub-elements' force on the prescribed sub-nodes at the end of the
-//      integration (t1; chosen over the average of the substeps because the
-//      coarse kick-drift-kick needs the force AT t1, and a step average lags
-//      by dt/2, which pumps energy into a leapfrog scheme) is distributed to
-//      the coarse nodes with the same linear weights and REPLACES the
-//      colliding elements' own element force. The parents' stress is frozen
-//      while they are owned.
+//  (5) The sub-elements' forces at the end of the integration (t1; chosen
+//      over the average of the substeps because the coarse kick-drift-kick
+//      needs the force AT t1, and a step average lags by dt/2, which pumps
+//      energy into a leapfrog scheme) are distributed to the coarse nodes
+//      with linear weights and REPLACE the colliding elements' own element
+//      force. Which forces (CdemOptions::submodel_transfer): by default the
+//      forces on every sub-node, each with its linear weights in its home
+//      parent (the paper's 'force values for the whole element'); in the
+//      literal reading only those on the prescribed sub-nodes, with their
+//      drive weights. The parents' stress is frozen while they are owned.
 // The sub-model lives from the touch until no clone ties a corner of its
 // parents (the contact points separated); it is deleted at the end of that
 // step: each parent takes its sub-elements' area-averaged stress, its
@@ -52,14 +55,16 @@
 // change of that is deletion_loss; the free sub-nodes' kinetic energy is
 // dropped (SubModelRecord::kinetic_dropped; it is not in the coarse balance).
 //
-// Energy and momentum (measured, not assumed): the coarse model's kinetic
-// energy and momentum are those of the coarse nodes; its strain energy
-// counts the sub-elements in place of their parents. The free sub-nodes'
-// mass is also carried by the coarse nodes, so their kinetic energy is shown
-// beside the balance (CdemEnergyAccount::submodel_kinetic), not in it. The
-// returned forces do not sum to zero when the free sub-nodes accelerate
-// (their inertia), so the coarse momentum is not exactly conserved while a
-// sub-model lives: a property of the paper's procedure, reported as such.
+// Energy and momentum: the coarse model's kinetic energy and momentum are
+// those of the coarse nodes, which keep their masses (the free sub-nodes'
+// mass is the coarse nodes' too, so their kinetic energy relative to the
+// coarse field is shown beside the balance, CdemEnergyAccount::
+// submodel_kinetic, not in it); its strain energy counts the sub-elements in
+// place of their parents. By default the returned forces are every
+// sub-element's nodal forces, which sum to zero element by element: the
+// coarse momentum is conserved to round-off. In the literal reading the
+// returned forces lack the free sub-nodes' share, i.e. they include those
+// nodes' inertia, and do not sum to zero while a sub-model lives.
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -68,7 +73,7 @@
 #include <unordered_map>
 
 #include "dda/cdem/mesh.hpp"
-#include "dda/cdem/model.hpp"
+#include "model_ops.hpp"
 #include "geometry.hpp"
 
 namespace dda::cdem {
@@ -87,29 +92,31 @@ constexpr double kCeilSlack = 1e-9;
 }  // namespace
 
 // Step (1) at the touch: the request; the sub-model is built at t1.
-void Model::request_submodel(int main_node, Vec2 point, int ea, int eb, const TouchRecord& rec) {
-  SubRequest r;
+void request_submodel(SubModels& subs, int touch_index, int main_node, Vec2 point, int ea, int eb, double dt2) {
+  SubModelRequest r;
   r.main_node = main_node;
   r.point = point;
   r.ea = ea;
   r.eb = eb;
-  r.dt2 = rec.dt2;
-  sub_requests_.push_back(r);
-  touch_of_request_.push_back(static_cast<int>(touches_.size()));
+  r.dt2 = dt2;
+  subs.requests.push_back(r);
+  subs.request_touch.push_back(touch_index);
 }
 
-void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
-  if (elem_sub_.empty()) elem_sub_.assign(elems_.size(), -1);
+void create_submodel(const ModelSetup& su, ModelState& st, const SubModelRequest& req, int touch_index, double t) {
+  const NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  if (st.submodels.elem_owner.empty()) st.submodels.elem_owner.assign(mesh.elems.size(), -1);
   const int m = req.main_node;
-  const int bm = node_block_[m], bt = node_block_[req.ea];
-  const double rm = wave_speed_[blocks_[bm].material] * req.dt2;
-  const double rt = wave_speed_[blocks_[bt].material] * req.dt2;
+  const int bm = nd.block[m], bt = nd.block[req.ea];
+  const double rm = su.wave_speed[st.blocks[bm].material] * req.dt2;
+  const double rt = su.wave_speed[st.blocks[bt].material] * req.dt2;
   const double eps = kInsideRelTol * (length(req.point) + 1.0);
-  auto tri = [&](int e) { return std::array<Vec2, 3>{x_[elem(e).n[0]], x_[elem(e).n[1]], x_[elem(e).n[2]]}; };
-  auto has = [&](int e, int a) { return std::find(elem(e).n.begin(), elem(e).n.end(), a) != elem(e).n.end(); };
+  auto tri = [&](int e) { return std::array<Vec2, 3>{nd.x[mesh.elem(e).n[0]], nd.x[mesh.elem(e).n[1]], nd.x[mesh.elem(e).n[2]]}; };
+  auto has = [&](int e, int a) { return std::find(mesh.elem(e).n.begin(), mesh.elem(e).n.end(), a) != mesh.elem(e).n.end(); };
   // the touched point: a node, or both nodes of the touched edge
-  const Vec2 ed = x_[req.eb] - x_[req.ea];
-  const double xi = std::clamp(dot(req.point - x_[req.ea], ed) / length_squared(ed), 0.0, 1.0);
+  const Vec2 ed = nd.x[req.eb] - nd.x[req.ea];
+  const double xi = std::clamp(dot(req.point - nd.x[req.ea], ed) / length_squared(ed), 0.0, 1.0);
   std::vector<int> touched;
   if (xi <= kNodeTieXi)
     touched = {req.ea};
@@ -118,9 +125,9 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
   else
     touched = {req.ea, req.eb};
   std::vector<int> parents;
-  for (int e : coarse_elems_) {
-    const int b = elem(e).block;
-    if ((b != bm && b != bt) || blocks_[b].fixed || elem_sub_[e] >= 0) continue;
+  for (int e : mesh.coarse_elems) {
+    const int b = mesh.elem(e).block;
+    if ((b != bm && b != bt) || st.blocks[b].fixed || st.submodels.elem_owner[e] >= 0) continue;
     const double d = point_triangle_distance(req.point, tri(e));
     bool in = (b == bm && d <= rm + eps) || (b == bt && d <= rt + eps) || (b == bm && has(e, m));
     if (b == bt) {
@@ -130,18 +137,18 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
     }
     if (in) parents.push_back(e);
   }
-  TouchRecord* rec = touch_index < static_cast<int>(touches_.size()) ? &touches_[touch_index] : nullptr;
+  TouchRecord* rec = touch_index < static_cast<int>(st.log.touches.size()) ? &st.log.touches[touch_index] : nullptr;
   if (rec) rec->radius = std::max(rm, rt);
   if (parents.empty()) return;  // every colliding element already has a sub-model
 
   double he = 0.0;
   for (int e : parents) he = std::max(he, std::sqrt(2.0 * cst(tri(e)).area));
   const double r = std::min(rm, rt);
-  int k = opt_.max_subdivision;
+  int k = su.opt.max_subdivision;
   if (r > 0.0 && he > 0.0) k = static_cast<int>(std::ceil(he / r - kCeilSlack));
-  k = std::clamp(k, opt_.min_subdivision, opt_.max_subdivision);
+  k = std::clamp(k, su.opt.min_subdivision, su.opt.max_subdivision);
 
-  const double energy_before = energy().strain;
+  const double energy_before = energy_of(su, st).strain;
   SubModel s;
   s.k = k;
   s.parents = parents;
@@ -152,7 +159,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
     const int i = static_cast<int>(s.coarse.size());
     coarse_index.emplace(a, i);
     s.coarse.push_back(a);
-    s.coarse_x0.push_back(x_[a]);
+    s.coarse_x0.push_back(nd.x[a]);
     return i;
   };
   auto add_node = [&](Vec2 x, Vec2 v, int block, bool prescribed, int a, int b, double w) {
@@ -175,7 +182,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
     const std::uint64_t key = edge_key(a, b);
     auto it = edge_subnodes.find(key);
     if (it == edge_subnodes.end()) {
-      const EdgeInfo& info = edges_.at(key);
+      const MeshEdge& info = mesh.edges.at(key);
       // prescribed where the edge is shared with an element outside the sub-model
       bool shared_out = false;
       for (int e2 : info.elems)
@@ -183,7 +190,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
       std::vector<int> ids;
       for (int q = 1; q < k; ++q) {
         const double w = static_cast<double>(q) / k;
-        ids.push_back(add_node(lerp(x_[info.lo], x_[info.hi], w), lerp(v_[info.lo], v_[info.hi], w), block, shared_out,
+        ids.push_back(add_node(lerp(nd.x[info.lo], nd.x[info.hi], w), lerp(nd.v[info.lo], nd.v[info.hi], w), block, shared_out,
                                info.lo, info.hi, w));
       }
       it = edge_subnodes.emplace(key, std::move(ids)).first;
@@ -194,12 +201,12 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
   };
   const auto lattice = lattice_triangles(k);
   for (int e : parents) {
-    const Elem& pe = elem(e);
+    const Element& pe = mesh.elem(e);
     std::array<int, 3> c{};
     for (int q = 0; q < 3; ++q) {
       const int a = pe.n[q];
       auto it = corner.find(a);
-      if (it == corner.end()) it = corner.emplace(a, add_node(x_[a], v_[a], pe.block, true, a, a, 0.0)).first;
+      if (it == corner.end()) it = corner.emplace(a, add_node(nd.x[a], nd.v[a], pe.block, true, a, a, 0.0)).first;
       c[q] = it->second;
     }
     const std::vector<int> e01 = edge_nodes(pe.n[0], pe.n[1], pe.block);
@@ -208,7 +215,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
     std::vector<int> lat(static_cast<std::size_t>(lattice_count(k)), -1);
     std::vector<std::array<double, 2>> lat_ab(static_cast<std::size_t>(lattice_count(k)));
     const std::array<Vec2, 3> px = tri(e);
-    const std::array<Vec2, 3> pv{v_[pe.n[0]], v_[pe.n[1]], v_[pe.n[2]]};
+    const std::array<Vec2, 3> pv{nd.v[pe.n[0]], nd.v[pe.n[1]], nd.v[pe.n[2]]};
     for (int j = 0; j <= k; ++j)
       for (int i = 0; i + j <= k; ++i) {
         int id = lattice_boundary_node(i, j, k, c, e01, e12, e02);
@@ -226,7 +233,7 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
       }
     const double mass = pe.mass / (static_cast<double>(k) * k);
     for (const auto& lt : lattice) {
-      SubElem se;
+      SubElement se;
       se.n = {lat[static_cast<std::size_t>(lt[0])], lat[static_cast<std::size_t>(lt[1])], lat[static_cast<std::size_t>(lt[2])]};
       se.parent = e;
       // the parent's stress and reference configuration (its corners at its
@@ -242,6 +249,9 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
       s.elems.push_back(se);
     }
   }
+  s.home_c.resize(s.x.size());
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    for (int q = 0; q < 3; ++q) s.home_c[i][q] = coarse_index.at(mesh.elem(s.home[i]).n[q]);
   s.inv_m.resize(s.m.size());
   int free_nodes = 0;
   for (std::size_t i = 0; i < s.m.size(); ++i) {
@@ -251,13 +261,13 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
   s.coarse_force.assign(s.coarse.size(), Vec2{});
   // step (4)'s n from the sub-elements' critical step (element bound)
   double omega = 0.0;
-  for (const SubElem& se : s.elems) {
-    const auto kk = element_stiffness({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, d_[blocks_[elem(se.parent).block].material]);
+  for (const SubElement& se : s.elems) {
+    const auto kk = element_stiffness({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, su.d[st.blocks[mesh.elem(se.parent).block].material]);
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(kk, Eigen::EigenvaluesOnly);
     omega = std::max(omega, std::sqrt(std::max(es.eigenvalues().maxCoeff(), 0.0) / (se.mass / 3.0)));
   }
-  const double sub_critical = omega > 0.0 ? 2.0 / omega : dt_;
-  s.substeps = std::max(1, static_cast<int>(std::ceil(dt_ / (opt_.substep_safety * sub_critical) - kCeilSlack)));
+  const double sub_critical = omega > 0.0 ? 2.0 / omega : su.dt;
+  s.substeps = std::max(1, static_cast<int>(std::ceil(su.dt / (su.opt.substep_safety * sub_critical) - kCeilSlack)));
 
   SubModelRecord record;
   record.created = t;
@@ -271,56 +281,70 @@ void Model::create_submodel(const SubRequest& req, int touch_index, double t) {
   record.substeps = s.substeps;
   record.sub_critical_dt = sub_critical;
   record.radius = std::max(rm, rt);
-  s.record = static_cast<int>(submodel_records_.size());
-  submodel_records_.push_back(record);
+  s.record = static_cast<int>(st.submodels.records.size());
+  st.submodels.records.push_back(record);
   if (rec) {
     rec->subdivision = k;
     rec->refined_elements = static_cast<int>(parents.size());
   }
-  const int index = static_cast<int>(subs_.size());
-  for (int e : parents) elem_sub_[e] = index;
-  subs_.push_back(std::move(s));
-  submodel_forces(subs_.back(), t);
+  const int index = static_cast<int>(st.submodels.live.size());
+  for (int e : parents) st.submodels.elem_owner[e] = index;
+  st.submodels.live.push_back(std::move(s));
+  submodel_forces(st.submodels.live.back(), su, st, t);
   // the sub-elements take their parents' stress on the same area: the strain
   // energy changes by round-off only; measured as refine_loss
-  refine_loss_ += energy_before - energy().strain;
+  st.energy.refine_loss += energy_before - energy_of(su, st).strain;
 }
 
 // Eqs. 2-3 on the sub-elements at their current positions: the forces on
 // the free sub-nodes (with gravity and mass damping, Eq. 1) and, step (5),
-// the forces on the prescribed ones returned to the coarse nodes.
-void Model::submodel_forces(SubModel& s, double t) {
-  const Vec2 g = scene_.gravity;
+// the forces returned to the coarse nodes: the element forces on every
+// sub-node by its weights in its home parent (kWholeElement), or those on
+// the prescribed sub-nodes by their drive weights (kPrescribedNodes).
+void submodel_forces(SubModel& s, const ModelSetup& su, const ModelState& st, double t) {
+  const MeshState& mesh = st.mesh;
+  const Vec2 g = su.scene.gravity;
   for (std::size_t i = 0; i < s.x.size(); ++i)
-    s.f[i] = s.prescribed[i] ? Vec2{} : s.m[i] * g - opt_.mass_damping * s.m[i] * s.v[i];
+    s.f[i] = s.prescribed[i] ? Vec2{} : s.m[i] * g - su.opt.mass_damping * s.m[i] * s.v[i];
   std::fill(s.coarse_force.begin(), s.coarse_force.end(), Vec2{});
-  std::vector<Vec2>& bc = s.bc;  // element forces on the prescribed sub-nodes
+  const bool whole = su.opt.submodel_transfer == SubModelTransfer::kWholeElement;
+  std::vector<Vec2>& bc = s.bc;  // element forces on the returned sub-nodes
   bc.assign(s.x.size(), Vec2{});
   for (std::size_t q = 0; q < s.elems.size(); ++q) {
-    SubElem& se = s.elems[q];
+    SubElement& se = s.elems[q];
     const std::array<Vec2, 3> x{s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]};
     std::array<Vec2, 3> f;
-    const int block = elem(se.parent).block;
-    if (cst_incremental_force(x, se.last, se.stress, d_[blocks_[block].material], f) != 0) {
+    const int block = mesh.elem(se.parent).block;
+    if (cst_incremental_force(x, se.last, se.stress, su.d[st.blocks[block].material], f) != 0) {
       std::ostringstream msg;
       msg << "cdem: sub-element " << q << " of the sub-model of element " << se.parent << " of block " << block
-          << " inverted at t = " << t << " s (step " << steps_ + 1 << ")";
+          << " inverted at t = " << t << " s (step " << st.steps + 1 << ")";
       throw SimulationError(msg.str(), StopReason::kAreaCollapsed);
     }
     for (int i = 0; i < 3; ++i) (s.prescribed[se.n[i]] ? bc : s.f)[se.n[i]] += f[i];
+    if (whole)
+      for (int i = 0; i < 3; ++i)
+        if (!s.prescribed[se.n[i]]) bc[se.n[i]] += f[i];
   }
   for (std::size_t i = 0; i < s.x.size(); ++i) {
     if (!is_finite(s.x[i]) || !is_finite(s.v[i]) || !is_finite(s.f[i]) || !is_finite(bc[i])) {
       int parent = -1;
-      for (const SubElem& se : s.elems)
+      for (const SubElement& se : s.elems)
         for (int a : se.n)
           if (a == static_cast<int>(i)) parent = se.parent;
       std::ostringstream msg;
       msg << "cdem: non-finite state at sub-node " << i << " of the sub-model of element " << parent << " of block "
-          << s.block[i] << ", t = " << t << " s (step " << steps_ + 1 << ")";
+          << s.block[i] << ", t = " << t << " s (step " << st.steps + 1 << ")";
       throw SimulationError(msg.str(), StopReason::kNonFinite);
     }
-    if (!s.prescribed[i]) continue;
+    if (!s.prescribed[i]) {
+      if (!whole) continue;
+      const double a = s.home_ab[i][0], b = s.home_ab[i][1];
+      s.coarse_force[static_cast<std::size_t>(s.home_c[i][0])] += (1.0 - a - b) * bc[i];
+      s.coarse_force[static_cast<std::size_t>(s.home_c[i][1])] += a * bc[i];
+      s.coarse_force[static_cast<std::size_t>(s.home_c[i][2])] += b * bc[i];
+      continue;
+    }
     const double w = s.drive_w[i];
     s.coarse_force[static_cast<std::size_t>(s.drive[i][0])] += (1.0 - w) * bc[i];
     s.coarse_force[static_cast<std::size_t>(s.drive[i][1])] += w * bc[i];
@@ -330,12 +354,13 @@ void Model::submodel_forces(SubModel& s, double t) {
 // Steps (2)-(4) for the live sub-models over the coarse step t0 -> t1 (the
 // coarse nodes already at t1), then step (1)'s sub-models of this step's
 // touches built at t1.
-void Model::advance_submodels(double t0, double t1) {
+void advance_submodels(const ModelSetup& su, ModelState& st, double t0, double t1) {
+  const NodeState& nd = st.nodes;
   const double span = t1 - t0;
-  for (SubModel& s : subs_) {
+  for (SubModel& s : st.submodels.live) {
     std::vector<Vec2> x1(s.coarse.size()), vc(s.coarse.size());
     for (std::size_t c = 0; c < s.coarse.size(); ++c) {
-      x1[c] = x_[s.coarse[c]];
+      x1[c] = nd.x[s.coarse[c]];
       vc[c] = (x1[c] - s.coarse_x0[c]) / span;
     }
     const int n = s.substeps;
@@ -353,48 +378,51 @@ void Model::advance_submodels(double t0, double t1) {
           s.x[i] += h * s.v[i];
         }
       }
-      submodel_forces(s, t0 + (j + 1) * h);
+      submodel_forces(s, su, st, t0 + (j + 1) * h);
       for (std::size_t i = 0; i < s.x.size(); ++i)
         if (!s.prescribed[i]) s.v[i] += (0.5 * h * s.inv_m[i]) * s.f[i];
     }
     s.coarse_x0 = x1;
-    submodel_records_[static_cast<std::size_t>(s.record)].substeps_taken += n;
-    sub_substeps_taken_ += n;
+    st.submodels.records[static_cast<std::size_t>(s.record)].substeps_taken += n;
+    st.submodels.substeps_taken += n;
   }
-  for (std::size_t r = 0; r < sub_requests_.size(); ++r) create_submodel(sub_requests_[r], touch_of_request_[r], t1);
-  sub_requests_.clear();
-  touch_of_request_.clear();
+  for (std::size_t r = 0; r < st.submodels.requests.size(); ++r)
+    create_submodel(su, st, st.submodels.requests[r], st.submodels.request_touch[r], t1);
+  st.submodels.requests.clear();
+  st.submodels.request_touch.clear();
 }
 
-void Model::add_submodel_forces() {
-  for (const SubModel& s : subs_)
-    for (std::size_t c = 0; c < s.coarse.size(); ++c) f_[s.coarse[c]] += s.coarse_force[c];
+void add_submodel_forces(const SubModels& subs, NodeState& nd) {
+  for (const SubModel& s : subs.live)
+    for (std::size_t c = 0; c < s.coarse.size(); ++c) nd.f[s.coarse[c]] += s.coarse_force[c];
 }
 
 // The end of a sub-model: no clone ties a corner of its parents any more.
-bool Model::delete_separated_submodels() {
-  std::vector<char> busy(x_.size(), 0);
-  for (const Clone& c : clones_) {
+bool delete_separated_submodels(const ModelSetup& su, ModelState& st) {
+  const NodeState& nd = st.nodes;
+  MeshState& mesh = st.mesh;
+  std::vector<char> busy(nd.x.size(), 0);
+  for (const Clone& c : st.clones) {
     busy[c.main] = 1;
     for (int a : c.t)
       if (a >= 0) busy[a] = 1;
   }
   bool any = false;
-  for (std::size_t q = subs_.size(); q-- > 0;) {
-    SubModel& s = subs_[q];
+  for (std::size_t q = st.submodels.live.size(); q-- > 0;) {
+    SubModel& s = st.submodels.live[q];
     bool live = false;
     for (int e : s.parents)
-      for (int a : elem(e).n) live = live || busy[a];
+      for (int a : mesh.elem(e).n) live = live || busy[a];
     if (live) continue;
-    SubModelRecord& record = submodel_records_[static_cast<std::size_t>(s.record)];
-    record.kinetic_dropped = submodel_kinetic(s);
+    SubModelRecord& record = st.submodels.records[static_cast<std::size_t>(s.record)];
+    record.kinetic_dropped = submodel_kinetic(s, mesh, nd);
     double change = 0.0;
     for (int e : s.parents) {
-      Elem& pe = elem(e);
-      const Mat3& c = c_[blocks_[pe.block].material];
+      Element& pe = mesh.elem(e);
+      const Mat3& c = su.c[st.blocks[pe.block].material];
       Vec3 sum = Vec3::Zero();
       double area = 0.0, before = 0.0;
-      for (const SubElem& se : s.elems) {
+      for (const SubElement& se : s.elems) {
         if (se.parent != e) continue;
         const std::array<Vec2, 3> x{s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]};
         const double a = cst(x).area;
@@ -403,48 +431,49 @@ bool Model::delete_separated_submodels() {
         before += cst_strain_energy(x, se.stress, c);
       }
       pe.stress = sum / area;
-      pe.last = {x_[pe.n[0]], x_[pe.n[1]], x_[pe.n[2]]};
+      pe.last = {nd.x[pe.n[0]], nd.x[pe.n[1]], nd.x[pe.n[2]]};
       change += cst_strain_energy(pe.last, pe.stress, c) - before;
-      elem_sub_[e] = -1;
+      st.submodels.elem_owner[e] = -1;
     }
     record.strain_change = change;
-    record.deleted = time_;
-    deletion_loss_ -= change;
-    subs_.erase(subs_.begin() + static_cast<std::ptrdiff_t>(q));
+    record.deleted = st.time;
+    st.energy.deletion_loss -= change;
+    st.submodels.live.erase(st.submodels.live.begin() + static_cast<std::ptrdiff_t>(q));
     any = true;
   }
   if (any) {
-    std::fill(elem_sub_.begin(), elem_sub_.end(), -1);
-    for (std::size_t q = 0; q < subs_.size(); ++q)
-      for (int e : subs_[q].parents) elem_sub_[e] = static_cast<int>(q);
+    std::fill(st.submodels.elem_owner.begin(), st.submodels.elem_owner.end(), -1);
+    for (std::size_t q = 0; q < st.submodels.live.size(); ++q)
+      for (int e : st.submodels.live[q].parents) st.submodels.elem_owner[e] = static_cast<int>(q);
   }
   return any;
 }
 
-double Model::submodel_strain() const {
+double submodel_strain(const ModelSetup& su, const ModelState& st) {
+  const MeshState& mesh = st.mesh;
   double e = 0.0;
-  for (const SubModel& s : subs_)
-    for (const SubElem& se : s.elems)
+  for (const SubModel& s : st.submodels.live)
+    for (const SubElement& se : s.elems)
       e += cst_strain_energy({s.x[se.n[0]], s.x[se.n[1]], s.x[se.n[2]]}, se.stress,
-                         c_[blocks_[elem(se.parent).block].material]);
+                         su.c[st.blocks[mesh.elem(se.parent).block].material]);
   return e;
 }
 
-double Model::submodel_kinetic(const SubModel& s) const {
+double submodel_kinetic(const SubModel& s, const MeshState& mesh, const NodeState& nd) {
   double e = 0.0;
   for (std::size_t i = 0; i < s.x.size(); ++i) {
     if (s.prescribed[i]) continue;
-    const Elem& pe = elem(s.home[i]);
+    const Element& pe = mesh.elem(s.home[i]);
     const double a = s.home_ab[i][0], b = s.home_ab[i][1];
-    const Vec2 vc = v_[pe.n[0]] + a * (v_[pe.n[1]] - v_[pe.n[0]]) + b * (v_[pe.n[2]] - v_[pe.n[0]]);
+    const Vec2 vc = nd.v[pe.n[0]] + a * (nd.v[pe.n[1]] - nd.v[pe.n[0]]) + b * (nd.v[pe.n[2]] - nd.v[pe.n[0]]);
     e += 0.5 * s.m[i] * length_squared(s.v[i] - vc);
   }
   return e;
 }
 
-double Model::submodel_kinetic() const {
+double submodel_kinetic(const ModelState& st) {
   double e = 0.0;
-  for (const SubModel& s : subs_) e += submodel_kinetic(s);
+  for (const SubModel& s : st.submodels.live) e += submodel_kinetic(s, st.mesh, st.nodes);
   return e;
 }
 

@@ -1,7 +1,7 @@
 // Paper B Sects. 2-3: contact detection (boundary nodes against boundary
 // edges of other blocks) and the time of impact on the collision path, which
 // splits a step into its two time stages dt1 and dt2.
-#include "dda/cdem/model.hpp"
+#include "model_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -77,46 +77,51 @@ bool swept_touch(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double to
 
 }  // namespace
 
-std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start, const std::vector<Vec2>& p0,
-                                              const std::vector<Vec2>& p1) const {
-  const double tol = opt_.tolerance;
-  std::vector<Aabb> box(blocks_.size());
+// The touches over one interval (coarse step or patch step) of every
+// boundary node moving p0 -> p1 against the boundary edges of the other
+// blocks, earliest first; at most one (the earliest) per node.
+std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool coarse_level, double t_start,
+                                const std::vector<Vec2>& p0, const std::vector<Vec2>& p1) {
+  const NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  const double tol = su.opt.tolerance;
+  std::vector<Aabb> box(st.blocks.size());
   auto grow = [](Aabb& b, Vec2 p) {
     b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)};
     b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)};
   };
-  for (int n : bnodes_) {
-    grow(box[node_block_[n]], p0[n]);
-    grow(box[node_block_[n]], p1[n]);
+  for (int n : mesh.bnodes) {
+    grow(box[nd.block[n]], p0[n]);
+    grow(box[nd.block[n]], p1[n]);
   }
   for (Aabb& b : box) {
     b.lo = b.lo - Vec2{tol, tol};
     b.hi = b.hi + Vec2{tol, tol};
   }
   std::vector<Touch> out;
-  for (int n : bnodes_) {
-    const NodeKind kn = kind_[n];
-    if (kn == NodeKind::kDead || kn == NodeKind::kHanging || touch_blocked(n)) continue;
+  for (int n : mesh.bnodes) {
+    const NodeKind kn = nd.kind[n];
+    if (kn == NodeKind::kDead || kn == NodeKind::kHanging || touch_blocked(st.clones, n)) continue;
     // A node whose clone was removed may touch again within the same coarse
     // or patch step (a sliding clone keeps a pressed node tied, so a release
     // is a separation or a slide past the target's corner).
     if (coarse_level && kn != NodeKind::kCoarse) continue;
     const bool node_fine = kn == NodeKind::kFine;
-    const std::vector<int> partners = in_clone(n) ? tied_partners(n) : std::vector<int>{};
+    const std::vector<int> partners = in_clone(nd, n) ? tied_partners(st.clones, n) : std::vector<int>{};
     auto tied = [&](int a) { return std::find(partners.begin(), partners.end(), a) != partners.end(); };
-    const int bn = node_block_[n];
+    const int bn = nd.block[n];
     Aabb nb;
     grow(nb, p0[n]);
     grow(nb, p1[n]);
     Touch best;
     best.s = 2.0;
-    for (std::size_t ob = 0; ob < blocks_.size(); ++ob) {
-      if (static_cast<int>(ob) == bn || (blocks_[bn].fixed && blocks_[ob].fixed) || !aabb_overlap(nb, box[ob]))
+    for (std::size_t ob = 0; ob < st.blocks.size(); ++ob) {
+      if (static_cast<int>(ob) == bn || (st.blocks[bn].fixed && st.blocks[ob].fixed) || !aabb_overlap(nb, box[ob]))
         continue;
       bool found = false;
-      for (int ei : block_bedges_[ob]) {
-        const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
-        const bool any_fine = node_fine || kind_[e.a] == NodeKind::kFine || kind_[e.b] == NodeKind::kFine;
+      for (int ei : mesh.block_bedges[ob]) {
+        const BoundaryEdge& e = mesh.bedges[static_cast<std::size_t>(ei)];
+        const bool any_fine = node_fine || nd.kind[e.a] == NodeKind::kFine || nd.kind[e.b] == NodeKind::kFine;
         if (coarse_level == any_fine) continue;  // coarse step: all-coarse pairs; patch steps: the rest
         double s = 0.0, xi = 0.0;
         if (swept_touch(p0[n], p1[n], p0[e.a], p1[e.a], p0[e.b], p1[e.b], tol, s, xi)) {
@@ -127,14 +132,14 @@ std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start,
           // may cross one edge's line (or approach it from behind) while it
           // stays outside the other edge, and a clone formed there separates
           // at once and re-forms, without end.
-          if (s < 1.0 && !(depth_inside(static_cast<int>(ob), p1[n], p1) > 0.0)) continue;
+          if (s < 1.0 && !(depth_inside(mesh, static_cast<int>(ob), p1[n], p1) > 0.0)) continue;
           // A node released at the start of this interval touches again in
           // the next patch step (a coarse step: later in this one): touching
           // at once, its clone re-forms and separates again and again within
           // ever shorter steps (seen after tension releases next to sliding
           // clones). Its motion meanwhile, |v| dt/n, is found at s = 0 next.
           constexpr double kStartFraction = 1e-9;  // of the interval: the patch loop's grouping of simultaneous touches
-          if (released_at_[n] >= t_start && (!coarse_level || s <= kStartFraction)) continue;
+          if (nd.released_at[n] >= t_start && (!coarse_level || s <= kStartFraction)) continue;
           if (s < best.s) {
             best.s = s;
             best.node = n;
@@ -148,7 +153,7 @@ std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start,
       // is never skipped: within d_tol of its boundary and approaching it
       // touches at s = 0 (above); deeper, its time of impact lies in an
       // earlier step, and the run stops.
-      if (!found) check_not_inside(n, static_cast<int>(ob), p0, t_start);
+      if (!found) check_not_inside(su, st, n, static_cast<int>(ob), p0, t_start);
     }
     if (best.node >= 0) out.push_back(best);
   }
@@ -158,11 +163,11 @@ std::vector<Model::Touch> Model::find_touches(bool coarse_level, double t_start,
 
 // Depth of p inside block b (positions pos): the distance to the block's
 // boundary if p lies inside its boundary loop (crossing number), else 0.
-double Model::depth_inside(int b, Vec2 p, const std::vector<Vec2>& pos) const {
+double depth_inside(const MeshState& mesh, int b, Vec2 p, const std::vector<Vec2>& pos) {
   bool inside = false;
   double depth = std::numeric_limits<double>::infinity();
-  for (int ei : block_bedges_[static_cast<std::size_t>(b)]) {
-    const BEdge& e = bedges_[static_cast<std::size_t>(ei)];
+  for (int ei : mesh.block_bedges[static_cast<std::size_t>(b)]) {
+    const BoundaryEdge& e = mesh.bedges[static_cast<std::size_t>(ei)];
     const Vec2 a = pos[e.a], c = pos[e.b];
     if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) / (c.y - a.y) * (c.x - a.x)) inside = !inside;
     depth = std::min(depth, point_segment_distance(p, a, c));
@@ -170,22 +175,24 @@ double Model::depth_inside(int b, Vec2 p, const std::vector<Vec2>& pos) const {
   return inside ? depth : 0.0;
 }
 
-void Model::check_not_inside(int node, int other, const std::vector<Vec2>& pos, double t) const {
-  const double depth = depth_inside(other, pos[node], pos);
-  if (!(depth > opt_.tolerance)) return;
+void check_not_inside(const ModelSetup& su, const ModelState& st, int node, int other, const std::vector<Vec2>& pos,
+                      double t) {
+  const NodeState& nd = st.nodes;
+  const double depth = depth_inside(st.mesh, other, pos[node], pos);
+  if (!(depth > su.opt.tolerance)) return;
   std::ostringstream s;
-  s << "cdem: node " << node << " of block " << node_block_[node] << " is " << depth << " m inside block " << other
-    << " at t = " << t << " s (step " << steps_ + 1 << "), deeper than the contact tolerance d_tol = "
-    << opt_.tolerance << " m: its time of impact lies in an earlier step and the contact cannot be resolved; "
+  s << "cdem: node " << node << " of block " << nd.block[node] << " is " << depth << " m inside block " << other
+    << " at t = " << t << " s (step " << st.steps + 1 << "), deeper than the contact tolerance d_tol = "
+    << su.opt.tolerance << " m: its time of impact lies in an earlier step and the contact cannot be resolved; "
     << "use a smaller dt or check that the blocks do not overlap at the start";
-  throw ContactError(s.str(), node, node_block_[node], other, steps_ + 1, t, depth);
+  throw ContactError(s.str(), node, nd.block[node], other, st.steps + 1, t, depth);
 }
 
-bool Model::locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const {
+bool locate_edge(const MeshState& mesh, const std::vector<Vec2>& x, int block, Vec2 p, int& a, int& b, double& xi) {
   double best = std::numeric_limits<double>::infinity();
-  for (const BEdge& e : bedges_) {
+  for (const BoundaryEdge& e : mesh.bedges) {
     if (e.block != block) continue;
-    const double d = point_segment_distance(p, x_[e.a], x_[e.b]);
+    const double d = point_segment_distance(p, x[e.a], x[e.b]);
     if (d < best) {
       best = d;
       a = e.a;
@@ -193,17 +200,54 @@ bool Model::locate_edge(int block, Vec2 p, int& a, int& b, double& xi) const {
     }
   }
   if (!std::isfinite(best)) return false;
-  const Vec2 e = x_[b] - x_[a];
-  xi = std::clamp(dot(p - x_[a], e) / length_squared(e), 0.0, 1.0);
+  const Vec2 e = x[b] - x[a];
+  xi = std::clamp(dot(p - x[a], e) / length_squared(e), 0.0, 1.0);
   return true;
 }
 
 // The coarse step's candidates: every coarse node moving linearly with its
 // half-kicked velocity over [t0, t0 + dt].
-std::vector<Model::Touch> Model::coarse_touches(double t0) const {
-  std::vector<Vec2> p0 = x_, p1 = x_;
-  for (int n : coarse_dofs_) p1[n] = x_[n] + dt_ * v_[n];
-  return find_touches(true, t0, p0, p1);
+std::vector<Touch> coarse_touches(const ModelSetup& su, const ModelState& st, double t0) {
+  const NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  std::vector<Vec2> p0 = nd.x, p1 = nd.x;
+  for (int n : mesh.coarse_dofs) p1[n] = nd.x[n] + su.dt * nd.v[n];
+  return find_touches(su, st, true, t0, p0, p1);
+}
+
+// Sect. 3's two time stages over a coarse step (without subdivision, and
+// with the sub-model, whose contact stays at the coarse nodes): the
+// touching nodes move dt1 with their free velocity, take the inelastic
+// impact, and move dt2 as a clone; every other node moves the full dt.
+void two_stage_step(const ModelSetup& su, ModelState& st, const std::vector<Touch>& touches, double t0) {
+  NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  std::vector<double> tau(nd.x.size(), 0.0);
+  std::vector<char> changed(nd.x.size(), 0);
+  for (const Touch& T : touches) {
+    if (touch_blocked(st.clones, T.node)) continue;
+    std::vector<int> set{T.node, T.ea, T.eb};
+    for (std::size_t head = 0; head < set.size(); ++head)
+      for (const Clone& c : st.clones) {
+        std::vector<int> cn{c.main};
+        for (int a : c.t)
+          if (a >= 0) cn.push_back(a);
+        if (std::find(cn.begin(), cn.end(), set[head]) == cn.end()) continue;
+        for (int a : cn)
+          if (std::find(set.begin(), set.end(), a) == set.end()) set.push_back(a);
+      }
+    bool stale = false;
+    for (int a : set) stale = stale || changed[a];
+    if (stale) continue;  // found again next step from the updated motion
+    for (int a : set)
+      if (nd.kind[a] == NodeKind::kCoarse && !st.blocks[nd.block[a]].fixed) {
+        nd.x[a] += ((T.s - tau[a]) * su.dt) * nd.v[a];
+        tau[a] = T.s;
+      }
+    if (process_touch(su, st, T, false, t0 + T.s * su.dt, t0, t0 + su.dt))
+      for (int a : set) changed[a] = 1;
+  }
+  for (int n : mesh.coarse_dofs) nd.x[n] += ((1.0 - tau[n]) * su.dt) * nd.v[n];
 }
 
 }  // namespace dda::cdem

@@ -19,6 +19,8 @@ namespace dda {
 namespace detail {
 class TeamBarrier;
 }
+class ByteWriter;  // dda/state_bytes.hpp
+class ByteReader;
 
 // A scene that cannot be simulated; what() names the field and the reason,
 // e.g. "blocks[2].vertices[1]: clockwise vertex order".
@@ -41,11 +43,18 @@ enum class StopReason : std::uint8_t {
 };
 
 // A run that went wrong (non-finite state, a collapsed block); what() says
-// the step, the time, the block and what was exceeded; reason() the guard.
+// the step, the time, the block and what was exceeded; reason the guard.
+// The same facts as fields, for callers that act on them (the Python
+// module's exception): set by Simulation's guards, left at "not known"
+// (-1, NaN) where a thrower does not know them.
 struct SimulationError : std::runtime_error {
   explicit SimulationError(const std::string& what, StopReason why = StopReason::kOther)
       : std::runtime_error(what), reason(why) {}
   StopReason reason;
+  std::int64_t step = -1;   // the step that failed (its count after the step)
+  double time = NAN;        // its time, s
+  int block = -1;           // the block named (-1: none)
+  int pair_a = -1, pair_b = -1;  // the pair named, pair_a < pair_b (-1: none)
 };
 
 // Throws SceneError for the first problem found in the scene.
@@ -199,6 +208,16 @@ class Simulation {
   const std::vector<PhaseTimes>& phase_times() const { return phase_times_; }
   void reset_phase_times() { phase_times_.clear(); }
 
+  // The full state a step reads (simulation/state.cpp): the blocks, the
+  // near-pair lists with each pair's contact and friction history, the
+  // broad phase's grown boxes and order, the guards' and the energy
+  // budget's accumulators, the clock. restore_state reads what save_state
+  // wrote into a simulation built from the same scene: the run then goes on
+  // with the same bits as the one saved (any thread count). Throws
+  // StateError (the stream is truncated, inconsistent or of another scene).
+  void save_state(ByteWriter& out) const;
+  void restore_state(ByteReader& in);
+
  private:
   // Defined in lib/src/simulation/internal.hpp (users need not see them).
   struct PairHistory;   // a pair's friction history
@@ -300,7 +319,7 @@ class Simulation {
   }
 
   // Hot state, one entry per block.
-  // Block geometry pooled by vertex count (issue 25 item 3; a Polygon value
+  // Block geometry pooled by vertex count (a Polygon value
   // has room for kMaxVertices = 32, a block mostly has 3-8): block i's
   // count vertices then its count normals, adjacent for the cache, from
   // geometry_[2 * geometry_offset_[i]]; count = geometry_offset_[i + 1] -

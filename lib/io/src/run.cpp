@@ -1,5 +1,8 @@
+// The run loop of `dda run`: either model behind dda::Stepper, the outputs
+// written at one place (run_outputs.hpp), checkpoints, the interrupt.
 #include "dda/io/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,10 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "dda/io/block_table.hpp"
-#include "dda/io/csv.hpp"
-#include "dda/io/vtk_dda.hpp"
-#include "dda/io/vtk_series.hpp"
+#include "dda/io/models.hpp"
+#include "dda/state_bytes.hpp"
+#include "run_outputs.hpp"
 
 namespace dda::io {
 
@@ -20,6 +22,19 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using detail::first_step_reaching;
+using detail::RunOutputs;
+
+const char* const kRunSection = "run";
+const char* const kPenaltySection = "penalty.simulation";
+
+// The penalty model runs its steps in groups (one thread team per group,
+// Simulation::advance) that end where an output, a checkpoint or the end is
+// due, and last about this long (s of wall-clock time) so that the interrupt
+// flag, the progress line and a wall-clock checkpoint are looked at that
+// often. The grouping changes the time a run takes, never its bits.
+constexpr double kGroupSeconds = 0.05;
+constexpr std::int64_t kMaxGroup = 1000;  // steps
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -29,38 +44,61 @@ std::string short_number(double x, int digits = 3) {
   return buf;
 }
 
-std::vector<int> tracked_blocks(const SceneFile& file) {
-  if (!file.output.tracked_blocks.empty()) return file.output.tracked_blocks;
-  std::vector<int> all(file.scene.blocks.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  return all;
+// Every outline's index, kind, name, mass and area at t = 0 (run.json).
+nlohmann::ordered_json block_table(const SceneFile& file, const RunModel& m) {
+  nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
+  const Scene& scene = file.scene;
+  if (m.penalty) {
+    const Simulation& sim = m.penalty->simulation();
+    for (int i = 0; i < sim.block_count(); ++i) {
+      const bool boundary = i >= sim.scene_block_count();
+      nlohmann::ordered_json b;
+      b["index"] = i;
+      b["kind"] = boundary ? "boundary" : "block";
+      b["name"] = boundary ? "boundaries[" + std::to_string(i - sim.scene_block_count()) + "]"
+                           : scene.blocks[static_cast<std::size_t>(i)].name;
+      b["fixed"] = sim.fixed(i);
+      b["mass"] = boundary || sim.fixed(i) ? 0.0 : sim.mass(i);
+      b["area"] = sim.area(i);
+      b["potential_length"] = sim.potential_length(i);
+      blocks.push_back(b);
+    }
+    return blocks;
+  }
+  const cdem::Model& model = m.cdem->model();
+  for (int i = 0; i < model.block_count(); ++i) {
+    const BlockSpec& spec = scene.blocks[static_cast<std::size_t>(i)];
+    const std::vector<Vec2> o = model.block_outline(i);
+    nlohmann::ordered_json b;
+    b["index"] = i;
+    b["kind"] = "block";
+    b["name"] = spec.name;
+    b["fixed"] = spec.fixed;
+    b["mass"] = spec.fixed ? 0.0 : model.block_mass(i);
+    b["area"] = area(make_polygon(o.data(), static_cast<int>(o.size())));
+    blocks.push_back(b);
+  }
+  return blocks;
 }
 
-// All vertices of every polygon, or NonFiniteValue before anything is written.
-void write_snapshot(CsvFile& csv, const Simulation& sim) {
-  for (int b = 0; b < sim.block_count(); ++b) {
-    const Polygon& p = sim.polygon(b);
-    for (int k = 0; k < p.count; ++k)
-      if (!is_finite(p.vertex(k)))
-        throw NonFiniteValue(csv.path() + ": snapshot at t = " + format_number(sim.time()) + " s: block " +
-                             std::to_string(b) + " vertex " + std::to_string(k) + " is not finite (not written)");
+const char* status_name(RunStatus s) {
+  switch (s) {
+    case RunStatus::kCompleted: return "completed";
+    case RunStatus::kSimulationError: return "simulation_error";
+    case RunStatus::kInterrupted: return "interrupted";
   }
-  for (int b = 0; b < sim.block_count(); ++b) {
-    const Polygon& p = sim.polygon(b);
-    for (int k = 0; k < p.count; ++k)
-      csv.row({sim.time(), static_cast<long long>(sim.step_count()), b, k, p.vertex(k).x, p.vertex(k).y});
-  }
+  return "completed";
 }
 
-// `dt`: the step used (Simulation::dt(), which differs from scene.dt when
-// scene.dt_fraction > 0).
-std::string run_json(const SceneFile& file, const RunOptions& opt, const RunResult& res, double dt,
+std::string run_json(const SceneFile& file, const std::string& label, const RunResult& res, double dt,
                      const nlohmann::ordered_json& blocks) {
   nlohmann::ordered_json j;
-  j["status"] = res.status == RunStatus::kCompleted ? "completed" : "simulation_error";
+  j["status"] = status_name(res.status);
   j["message"] = res.message;
-  j["scene"] = opt.scene_label;
+  j["scene"] = label;
   j["name"] = file.scene.name;
+  j["model"] = model_name(file.model);
+  j["threads"] = res.threads;
   j["dt"] = dt;
   j["duration"] = file.scene.duration;
   j["steps"] = res.steps;
@@ -74,139 +112,178 @@ std::string run_json(const SceneFile& file, const RunOptions& opt, const RunResu
   j["vtk_frames"] = res.vtk_frames;
   j["tracked_blocks"] = tracked_blocks(file);
   j["blocks"] = blocks;
+  if (res.status == RunStatus::kInterrupted) j["checkpoint"] = res.checkpoint_path;
   return j.dump(2) + "\n";
 }
 
+// The checkpoint schedule and where it stands.
+struct Schedule {
+  CheckpointSpec spec;
+  std::int64_t next_index = 1;  // the next simulated-time checkpoint is at next_index * spec.every
+};
+
 }  // namespace
 
-std::vector<std::string> timeseries_header(const std::vector<int>& tracked) {
-  std::vector<std::string> h{"time", "step"};
-  for (int i : tracked) {
-    const std::string b = "b" + std::to_string(i) + "_";
-    for (const char* c : {"x", "y", "vx", "vy", "rot", "spin"}) h.push_back(b + c);
-  }
-  // The energy budget (Energy::balance_error): E_total + E_dissipated - E_initial.
-  for (const char* c : {"E_kinetic", "E_gravity", "E_strain", "E_contact", "E_friction_spring", "E_total",
-                        "E_dissipated", "E_balance_error", "px", "py", "contacts"})
-    h.emplace_back(c);
-  return h;
-}
-
-std::vector<CsvValue> timeseries_row(const Simulation& sim, const std::vector<int>& tracked) {
-  std::vector<CsvValue> row{sim.time(), static_cast<long long>(sim.step_count())};
-  row.reserve(2 + 6 * tracked.size() + 11);
-  for (int i : tracked) {
-    const Vec2 c = sim.centroid(i);
-    const Vec6& v = sim.velocity(i);
-    for (double x : {c.x, c.y, v[0], v[1], sim.displacement(i)[2], v[2]}) row.emplace_back(x);
-  }
-  const Energy e = sim.energy();
-  const Vec2 p = sim.momentum();
-  for (double x : {e.kinetic, e.gravity, e.strain, e.contact, e.friction_spring, e.total(), e.dissipated,
-                   e.balance_error(), p.x, p.y})
-    row.emplace_back(x);
-  row.emplace_back(sim.contacts().size());
-  return row;
-}
-
 RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
-  const Scene& scene = file.scene;
-  const std::vector<int> tracked = tracked_blocks(file);
   const fs::path out(opt.out_dir.empty() ? "." : opt.out_dir);
-  // The simulation first: the step count is known once its dt is (with
-  // dt_fraction > 0); a run that would be too long writes nothing.
-  Simulation sim(scene);
-  check_step_count(file, sim.dt(), opt.scene_label);
+  const bool penalty = file.model == ContactModel::kPenalty;
+  Schedule schedule{file.checkpoint};
+  if (opt.checkpoint.every > 0.0) schedule.spec.every = opt.checkpoint.every;
+  if (opt.checkpoint.every_wall > 0.0) schedule.spec.every_wall = opt.checkpoint.every_wall;
+  if (!penalty && (schedule.spec.every > 0.0 || schedule.spec.every_wall > 0.0))
+    throw SceneFileError(opt.scene_label + ": checkpoint: checkpoints hold the penalty model's state; the cdem "
+                                           "model's state cannot be saved yet");
+  if (!penalty && opt.threads > 1)
+    throw SceneFileError(opt.scene_label + ": threads: the cdem model steps on one thread");
+  const int threads = opt.threads > 0 ? opt.threads : file.threads > 0 ? file.threads : 1;
+  const std::string ckpt_path = (out / kCheckpointFileName).string();
+  // The output section with the command line's additions (the flags of
+  // dda run; a resumed run takes those it started with).
+  OutputSpec output = file.output;
+  if (!penalty && output.block_table)
+    throw SceneFileError(opt.scene_label + ": output.block_table: the per-block table of 6-DOF blocks (rotation, "
+                                           "spin, stress) is the penalty model's");
+
+  // The model first: the step count is known once its dt is (with
+  // dt_fraction > 0); a run that would be too long writes nothing. The block
+  // table is of t = 0, before a resumed state replaces it.
+  RunModel m = build_model(file, threads);
+  Stepper& model = *m.stepper;
+  check_step_count(file, model.dt(), opt.scene_label);
+  const nlohmann::ordered_json blocks = block_table(file, m);
+
+  // A resumed run: everything checked, and the model restored, before
+  // anything is written.
+  double wall_before = 0.0;
+  std::string label = opt.scene_label;  // a resumed run keeps the label it started with
+  ByteReader run_state(nullptr, 0, ckpt_path);
+  if (opt.resume) {
+    const Checkpoint& c = *opt.resume;
+    if (!penalty) throw CheckpointError(ckpt_path + ": the cdem model's state cannot be resumed yet");
+    if (c.scene_hash != file.text_hash)
+      throw CheckpointError(ckpt_path + ": written for another scene (" + c.scene_path +
+                            " as it was then); this scene file's text differs; nothing resumed");
+    if (c.model != model_name(file.model))
+      throw CheckpointError(ckpt_path + ": holds a \"" + c.model + "\" model, the scene's is \"" +
+                            model_name(file.model) + "\"");
+    const CheckpointSection* run = c.find(kRunSection);
+    const CheckpointSection* sim = c.find(kPenaltySection);
+    if (!run || !sim) throw CheckpointError(ckpt_path + ": corrupted: a section is missing");
+    try {
+      ByteReader state(sim->bytes.data(), sim->bytes.size(), ckpt_path + ": " + kPenaltySection);
+      m.penalty->simulation().restore_state(state);
+      state.expect_end();
+      run_state = ByteReader(run->bytes.data(), run->bytes.size(), ckpt_path + ": " + kRunSection);
+      if (run_state.i64() != model.step_count()) run_state.fail("the run and the model stopped at different steps");
+      wall_before = run_state.f64();
+      run_state.i32();  // the threads of the run that stopped (any count gives the same bits)
+      const double every = run_state.f64(), every_wall = run_state.f64();
+      schedule.next_index = run_state.i64();
+      label = run_state.text();
+      output.vtk = run_state.boolean();
+      output.vtk_every = run_state.i32();
+      output.block_table = run_state.boolean();
+      if (!(opt.checkpoint.every > 0.0)) schedule.spec.every = every;
+      if (!(opt.checkpoint.every_wall > 0.0)) schedule.spec.every_wall = every_wall;
+      RunOutputs::verify(out.string(), output, m, run_state);
+    } catch (const StateError& e) {
+      throw CheckpointError(std::string(e.what()) + "; nothing resumed");
+    }
+  }
+
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw OutputError("cannot create directory " + out.string() + ": " + ec.message());
-
-  nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
-  for (int i = 0; i < sim.block_count(); ++i) {
-    const bool boundary = i >= sim.scene_block_count();
-    nlohmann::ordered_json b;
-    b["index"] = i;
-    b["kind"] = boundary ? "boundary" : "block";
-    b["name"] = boundary ? "boundaries[" + std::to_string(i - sim.scene_block_count()) + "]"
-                         : scene.blocks[static_cast<std::size_t>(i)].name;
-    b["fixed"] = sim.fixed(i);
-    b["mass"] = boundary || sim.fixed(i) ? 0.0 : sim.mass(i);
-    b["area"] = sim.area(i);
-    b["potential_length"] = sim.potential_length(i);
-    blocks.push_back(b);
-  }
-
-  CsvFile ts((out / "timeseries.csv").string(), timeseries_header(tracked));
-  CsvFile snap((out / "snapshots.csv").string(), {"time", "step", "block", "vertex", "x", "y"});
-  std::optional<CsvFile> table;
-  if (file.output.block_table) table.emplace((out / "blocks.csv").string(), block_table_header());
-  // ParaView series: DIR/vtk/blocks.pvd and contacts.pvd, a frame at each
-  // snapshot time or every output.vtk_every steps (one per step at most).
-  std::optional<VtkSeries> vtk_blocks, vtk_contacts;
-  if (file.output.vtk) {
-    vtk_blocks.emplace((out / "vtk").string(), "blocks");
-    vtk_contacts.emplace((out / "vtk").string(), "contacts");
-  }
-  std::int64_t last_frame_step = -1;
-  auto vtk_frame = [&] {
-    if (!vtk_blocks || sim.step_count() == last_frame_step) return;
-    const VtkMesh blocks_mesh = block_mesh(sim), contacts_mesh = contact_mesh(sim);
-    check_mesh(blocks_mesh, "ParaView blocks frame at t = " + format_number(sim.time()) + " s");
-    check_mesh(contacts_mesh, "ParaView contacts frame at t = " + format_number(sim.time()) + " s");
-    vtk_blocks->add(sim.time(), blocks_mesh);
-    vtk_contacts->add(sim.time(), contacts_mesh);
-    last_frame_step = sim.step_count();
-  };
-
-  const double dt = sim.dt();
-  const std::vector<double>& times = file.output.snapshot_times;
-  std::size_t next_snap = 0;
-  auto snapshots_due = [&] {
-    while (next_snap < times.size() && times[next_snap] <= sim.time() + 0.5 * dt) {
-      write_snapshot(snap, sim);
-      if (file.output.vtk_every == 0) vtk_frame();
-      ++next_snap;
-    }
-  };
-  const double total_steps = std::max(1.0, std::round(scene.duration / dt));
-  const Clock::time_point start = Clock::now();
-  Clock::time_point last_print = start;
+  std::optional<RunOutputs> open_outputs;
+  if (opt.resume) open_outputs.emplace(file, output, m, out.string(), run_state);
+  else open_outputs.emplace(file, output, m, out.string());
+  RunOutputs& outputs = *open_outputs;
 
   RunResult res;
-  auto write_row = [&] {
-    const std::vector<CsvValue> row = timeseries_row(sim, tracked);
-    if (table) {
-      for (const CsvValue& x : row)
-        if (!x.is_integer && !std::isfinite(x.number)) ts.row(row);  // throws NonFiniteValue, nothing written
-      block_table_rows(*table, sim);
-    }
-    ts.row(row);
-    res.last_row_time = sim.time();
+  res.threads = threads;
+  res.resumed_from_step = opt.resume ? model.step_count() : -1;
+  if (opt.resume && opt.progress)
+    *opt.progress << "dda: resuming " << label << " from step " << model.step_count() << " (t = "
+                  << format_number(model.time()) << " s) on " << threads << (threads == 1 ? " thread" : " threads")
+                  << std::endl;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point last_print = start, last_checkpoint = start;
+  const std::string scene_path =
+      !opt.scene_path.empty() ? opt.scene_path : fs::absolute(opt.scene_label, ec).lexically_normal().string();
+  auto write_checkpoint_now = [&] {
+    ByteWriter run;
+    run.i64(model.step_count());
+    run.f64(wall_before + seconds_since(start));
+    run.i32(threads);
+    run.f64(schedule.spec.every);
+    run.f64(schedule.spec.every_wall);
+    run.i64(schedule.next_index);
+    run.text(label);
+    run.boolean(output.vtk);
+    run.i32(output.vtk_every);
+    run.boolean(output.block_table);
+    outputs.save(run);  // flushed to the disk before the checkpoint names them
+    ByteWriter sim;
+    m.penalty->simulation().save_state(sim);
+    Checkpoint c;
+    c.scene_path = scene_path;
+    c.scene_hash = file.text_hash;
+    c.model = model_name(file.model);
+    c.sections = {{kRunSection, run.take()}, {kPenaltySection, sim.take()}};
+    write_checkpoint(out.string(), c);
+    res.checkpoint_path = ckpt_path;
+    ++res.checkpoints;
+    last_checkpoint = Clock::now();
   };
+
+  const double dt = model.dt(), duration = model.duration();
+  auto finished = [&] { return !(model.time() + 0.5 * dt < duration); };
+  const double total_steps = std::max(1.0, std::round(duration / dt));
+  const std::int64_t first_step = model.step_count();
+  std::int64_t group = 1;
   try {
-    write_row();
-    snapshots_due();
-    if (file.output.vtk_every > 0) vtk_frame();
-    while (sim.time() + 0.5 * dt < scene.duration) {
+    if (!opt.resume) outputs.write_due(true, false);
+    while (!finished()) {
       if (opt.interrupt && *opt.interrupt) {
         res.status = RunStatus::kInterrupted;
         break;
       }
-      sim.step();
-      const bool last = !(sim.time() + 0.5 * dt < scene.duration);
-      if (last || sim.step_count() % file.output.every == 0) write_row();
-      snapshots_due();
-      if (file.output.vtk_every > 0 && (last || sim.step_count() % file.output.vtk_every == 0)) vtk_frame();
+      std::int64_t count = 1;
+      if (penalty) {
+        // Up to the next step at which anything is due (time = steps * dt).
+        const std::int64_t s = model.step_count();
+        std::int64_t next = std::min(outputs.next_due_step(s, dt), first_step_reaching(duration, dt, s));
+        if (schedule.spec.every > 0.0)
+          next = std::min(next, first_step_reaching(static_cast<double>(schedule.next_index) * schedule.spec.every, dt, s));
+        count = std::clamp<std::int64_t>(next - s, 1, group);
+      }
+      const Clock::time_point t0 = Clock::now();
+      model.advance(count);
+      const double took = seconds_since(t0);
+      group = took > 0.0 ? std::clamp<std::int64_t>(static_cast<std::int64_t>(kGroupSeconds * static_cast<double>(count) / took), 1, kMaxGroup)
+                         : kMaxGroup;
+      const bool last = finished();
+      outputs.write_due(false, last);
+      if (penalty && !last) {
+        bool due = false;
+        if (schedule.spec.every > 0.0)
+          while (static_cast<double>(schedule.next_index) * schedule.spec.every <= model.time() + 0.5 * dt) {
+            due = true;
+            ++schedule.next_index;
+          }
+        if (schedule.spec.every_wall > 0.0 && seconds_since(last_checkpoint) >= schedule.spec.every_wall) due = true;
+        if (due) write_checkpoint_now();
+      }
       if (opt.progress && !last) {
         const Clock::time_point now = Clock::now();
         if (now - last_print >= std::chrono::seconds(1)) {
           last_print = now;
           const double el = std::chrono::duration<double>(now - start).count();
-          const double steps = static_cast<double>(sim.step_count());
-          const double rate = steps / el;
-          *opt.progress << "dda: " << short_number(100.0 * steps / total_steps) << "%  t = " << short_number(sim.time(), 6)
-                        << " of " << short_number(scene.duration, 6) << " s, step " << sim.step_count() << ", "
-                        << short_number(rate) << " steps/s, about "
+          const double steps = static_cast<double>(model.step_count());
+          const double rate = static_cast<double>(model.step_count() - first_step) / el;
+          *opt.progress << "dda: " << short_number(100.0 * steps / total_steps) << "%  t = "
+                        << short_number(model.time(), 6) << " of " << short_number(duration, 6) << " s, step "
+                        << model.step_count() << ", " << short_number(rate) << " steps/s, about "
                         << short_number(std::max(0.0, (total_steps - steps) / rate), 2) << " s left" << std::endl;
         }
       }
@@ -217,30 +294,26 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   } catch (const NonFiniteValue& e) {
     res.status = RunStatus::kSimulationError;
     res.message = std::string("non-finite output: ") + e.what();
+  } catch (const SceneError& e) {  // the CDEM model finds some limits only at a touch
+    res.status = RunStatus::kSimulationError;
+    res.message = e.what();
   }
-  res.steps = sim.step_count();
-  res.time = sim.time();
-  res.wall_seconds = seconds_since(start);
-  res.timeseries_rows = ts.rows();
-  res.snapshot_rows = snap.rows();
-  res.block_table_rows = table ? table->rows() : 0;
-  res.vtk_frames = vtk_blocks ? vtk_blocks->frames() : 0;
-  // The frames are on disk as they were taken; the collections list them
-  // (also after an interrupt: each frame is complete).
-  if (vtk_blocks) {
-    vtk_blocks->write_collection();
-    vtk_contacts->write_collection();
-  }
+  res.steps = model.step_count();
+  res.time = model.time();
+  res.timeseries_rows = outputs.timeseries_rows();
+  res.snapshot_rows = outputs.snapshot_rows();
+  res.last_row_time = outputs.last_row_time();
+  res.block_table_rows = outputs.block_table_rows();
+  res.vtk_frames = outputs.vtk_frames();
   if (res.status == RunStatus::kInterrupted) {
-    ts.discard();
-    snap.discard();
-    if (table) table->discard();
-    return res;
+    res.message = "interrupted at step " + std::to_string(res.steps) + " (t = " + format_number(res.time) + " s)";
+    if (penalty) write_checkpoint_now();
   }
-  ts.commit();
-  snap.commit();
-  if (table) table->commit();
-  write_file_atomic((out / "run.json").string(), run_json(file, opt, res, dt, blocks));
+  res.wall_seconds = wall_before + seconds_since(start);
+  outputs.commit();
+  // A run that ended has nothing to resume.
+  if (res.status != RunStatus::kInterrupted) fs::remove(ckpt_path, ec);
+  write_file_atomic((out / "run.json").string(), run_json(file, label, res, dt, blocks));
   return res;
 }
 

@@ -227,10 +227,15 @@ VtkSeries::VtkSeries(std::string dir, std::string name) : dir_(std::move(dir)), 
   if (ec) throw OutputError("cannot create directory " + dir_ + ": " + ec.message());
 }
 
-std::string VtkSeries::frame_file(std::size_t frame) const {
+VtkSeries::VtkSeries(std::string dir, std::string name, std::vector<double> times)
+    : VtkSeries(std::move(dir), std::move(name)) {
+  times_ = std::move(times);
+}
+
+std::string VtkSeries::frame_file(const std::string& name, std::size_t frame) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "_%06zu.vtu", frame);
-  return name_ + buf;
+  return name + buf;
 }
 
 std::string VtkSeries::collection_path() const { return (fs::path(dir_) / (name_ + ".pvd")).string(); }

@@ -195,16 +195,50 @@ TEST_CASE("a run stopped by SimulationError keeps the valid rows", "[io][run]") 
   CHECK(run["message"].get<std::string>() == r.message);
 }
 
-TEST_CASE("an interrupted run writes nothing", "[io][run]") {
+TEST_CASE("an interrupted run writes the output so far and a checkpoint", "[io][run]") {
   const std::string dir = fresh_dir("interrupted");
   const dda::io::SceneFile f = squares(1.0, 0.01, 1e7, 1e-4, 0.1, 7);
+  volatile std::sig_atomic_t flag = 1;  // set before the first step
+  dda::io::RunOptions opt;
+  opt.out_dir = dir;
+  opt.interrupt = &flag;
+  const dda::io::RunResult r = dda::io::run_scene(f, opt);
+  CHECK(r.status == dda::io::RunStatus::kInterrupted);
+  CHECK(r.steps == 0);
+  CHECK(r.timeseries_rows == 1);  // the row at t = 0
+  CHECK(r.checkpoint_path == dir + "/checkpoint.dda");
+  CHECK(fs::exists(dir + "/checkpoint.dda"));
+  CHECK(no_tmp_files(dir));
+  std::ifstream in(dir + "/run.json");
+  const json run = json::parse(in);
+  CHECK(run["status"] == "interrupted");
+  CHECK(run["message"] == "interrupted at step 0 (t = 0 s)");
+  CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
+}
+
+TEST_CASE("an interrupted cdem run writes the output so far, without a checkpoint", "[io][run]") {
+  const std::string dir = fresh_dir("interrupted_cdem");
+  const dda::io::SceneFile f = dda::io::load_scene_file(std::string(DDA_SCENES_DIR) + "/two_prisms.json");
   volatile std::sig_atomic_t flag = 1;
   dda::io::RunOptions opt;
   opt.out_dir = dir;
   opt.interrupt = &flag;
   const dda::io::RunResult r = dda::io::run_scene(f, opt);
   CHECK(r.status == dda::io::RunStatus::kInterrupted);
-  CHECK(fs::is_empty(dir));
+  CHECK(r.checkpoint_path.empty());
+  CHECK_FALSE(fs::exists(dir + "/checkpoint.dda"));
+  CHECK(no_tmp_files(dir));
+  std::ifstream in(dir + "/run.json");
+  const json run = json::parse(in);
+  CHECK(run["status"] == "interrupted");
+  CHECK(run["model"] == "cdem");
+  CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
+  // Checkpoints or a resume of the cdem model are refused before anything is written.
+  opt.interrupt = nullptr;
+  opt.out_dir = fresh_dir("cdem_checkpoint");
+  opt.checkpoint.every = 0.1;
+  CHECK_THROWS_WITH(dda::io::run_scene(f, opt), Catch::Contains("the cdem model's state cannot be saved yet"));
+  CHECK_FALSE(fs::exists(opt.out_dir));
 }
 
 TEST_CASE("write_file_atomic and save_scene_file", "[io][csv]") {

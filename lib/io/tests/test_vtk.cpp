@@ -449,7 +449,7 @@ TEST_CASE("dda run --vtk, --vtk-every, --block-table; bad values exit 2", "[io][
     CHECK(help.find(flag) != std::string::npos);
 }
 
-TEST_CASE("an interrupted run keeps its ParaView frames and commits no CSV file", "[io][vtk][run]") {
+TEST_CASE("an interrupted run keeps its ParaView frames and commits the CSV files so far", "[io][vtk][run]") {
   json j = small_scene();
   j["output"]["vtk"] = true;
   j["output"]["block_table"] = true;
@@ -462,7 +462,9 @@ TEST_CASE("an interrupted run keeps its ParaView frames and commits no CSV file"
   CHECK(r.vtk_frames == 1);  // the snapshot at t = 0, taken before the first step
   CHECK(count_of(slurp(opt.out_dir + "/vtk/blocks.pvd"), "<DataSet ") == 1);
   CHECK(fs::exists(opt.out_dir + "/vtk/contacts_000000.vtu"));
-  for (const char* file : {"timeseries.csv", "snapshots.csv", "blocks.csv", "run.json"})
-    CHECK_FALSE(fs::exists(opt.out_dir + "/" + file));
+  // The rows of t = 0, the checkpoint to resume from, run.json saying so.
+  for (const char* file : {"timeseries.csv", "snapshots.csv", "blocks.csv", "run.json", "checkpoint.dda"})
+    CHECK(fs::exists(opt.out_dir + "/" + file));
+  CHECK(json::parse(slurp(opt.out_dir + "/run.json"))["status"] == "interrupted");
   for (const auto& e : fs::recursive_directory_iterator(opt.out_dir)) CHECK(e.path().extension() != ".tmp");
 }

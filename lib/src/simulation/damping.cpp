@@ -92,9 +92,13 @@ void Simulation::settle() {
     if (scene_.damping.settle_sticking) friction_tan_table_ = friction_tan;
     advance_to(settle);
   } catch (const SimulationError& e) {
-    throw SimulationError(std::string("while settling (damping.settle_time = ") + std::to_string(settle) +
-                          " s, before t = 0): " + e.what(),
-                          e.reason);
+    SimulationError settling(std::string("while settling (damping.settle_time = ") + std::to_string(settle) +
+                                 " s, before t = 0): " + e.what(),
+                             e.reason);
+    // Where it stopped, on the settle's own clock (before t = 0).
+    settling.step = e.step, settling.time = e.time, settling.block = e.block;
+    settling.pair_a = e.pair_a, settling.pair_b = e.pair_b;
+    throw settling;
   }
   start_damping(false);
   for (std::size_t i = 0; i < vel_.size(); ++i) vel_[i] = v0[i];

@@ -66,14 +66,23 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
     }
   if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
   s << ": " << what << "; " << dt_ratio_text(*this);
-  throw SimulationError(s.str(), why);
+  SimulationError e(s.str(), why);
+  e.step = steps_;
+  e.time = time_;
+  e.block = block;
+  if (other >= 0) e.pair_a = std::min(block, other), e.pair_b = std::max(block, other);
+  throw e;
 }
 
 [[noreturn]] void Simulation::stop_pair(int a, int b, StopReason why, const std::string& what) const {
   std::ostringstream s;
   s << "step " << steps_ << " (t = " << time_ << " s): pair (" << a << ", " << b << ") = " << block_label(a)
     << " and " << block_label(b) << ": " << what << "; " << dt_ratio_text(*this);
-  throw SimulationError(s.str(), why);
+  SimulationError e(s.str(), why);
+  e.step = steps_;
+  e.time = time_;
+  e.pair_a = std::min(a, b), e.pair_b = std::max(a, b);
+  throw e;
 }
 
 std::string Simulation::block_label(int i) const {

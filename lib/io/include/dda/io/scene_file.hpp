@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "dda/cdem/model.hpp"
 #include "dda/scene.hpp"
 
 namespace dda::io {
@@ -24,6 +25,7 @@ inline constexpr std::size_t kMaxNestingDepth = 16;      // objects/arrays insid
 inline constexpr std::size_t kMaxArrayLength = 100000;   // elements of any array, members of any object
 inline constexpr std::size_t kMaxBlocks = 100000;        // scene blocks, listed plus generated
 inline constexpr std::size_t kMaxPolygonVertices = 256;  // `vertices` of a block, `region` of a generated region
+inline constexpr int kMaxThreads = 1024;               // "threads" and dda run --threads
 // Steps of a run (duration / dt) allowed unless the file's `max_steps` or
 // `dda run --max-steps` says more: a typo in duration or dt (1e11 s instead
 // of 1e1 s) is refused instead of starting a run of years.
@@ -49,6 +51,33 @@ struct GeneratedRegion {
   double dropped_area = 0.0;  // m^2
 };
 
+// The contact model a scene file selects (its top-level "model").
+enum class ContactModel : std::uint8_t {
+  kPenalty,  // "penalty": Paper A's potential-based penalty contact, dda::Simulation (the default)
+  kCdem,     // "cdem": Paper B's two-scale contact on CST-meshed blocks, dda::cdem::Model
+};
+const char* model_name(ContactModel m);
+
+// How one block is meshed for the CDEM model (a block's "mesh").
+struct CdemMesh {
+  int divisions = 0;           // > 0: mesh_convex_polygon with this many divisions; 0: CdemSettings::divisions
+  int cells_x = 0, cells_y = 0;  // > 0: mesh_rectangle with these cells (an axis-aligned rectangle)
+};
+
+// The "cdem" section: the model's options and the blocks' meshes.
+struct CdemSettings {
+  cdem::CdemOptions options;
+  int divisions = 1;             // mesh divisions per block edge, unless a block's mesh says otherwise
+  std::vector<CdemMesh> meshes;  // one per scene block
+};
+
+// When `dda run` writes a checkpoint (the "checkpoint" section, or the
+// --checkpoint-every / --checkpoint-wall flags); 0: not on that clock.
+struct CheckpointSpec {
+  double every = 0.0;       // s of simulated time
+  double every_wall = 0.0;  // s of wall-clock time
+};
+
 struct SceneFile {
   dda::Scene scene;
   OutputSpec output;
@@ -56,7 +85,17 @@ struct SceneFile {
   // Largest step count a run may take: ReadOptions::max_steps if > 0, else the
   // file's `max_steps`, else kDefaultMaxSteps.
   std::int64_t max_steps = kDefaultMaxSteps;
+  ContactModel model = ContactModel::kPenalty;
+  CdemSettings cdem;          // with model kCdem
+  int threads = 0;            // the file's "threads" (0: not given, 1 thread)
+  CheckpointSpec checkpoint;  // the file's "checkpoint" (penalty model)
+  // content_hash of the file's text (checkpoints name the scene by it).
+  std::uint64_t text_hash = 0;
 };
+
+// The CDEM scene of a file with model kCdem: its blocks meshed as the file
+// says, its materials, gravity, dt, duration and the "cdem" options.
+cdem::CdemScene cdem_scene(const SceneFile& file);
 
 struct ReadOptions {
   // > 0: overrides the file's `max_steps` (`dda run --max-steps N`).

@@ -77,6 +77,9 @@ class VtkSeries {
  public:
   // Creates `dir` if missing (OutputError if it cannot).
   VtkSeries(std::string dir, std::string name);
+  // Continues a series whose first times.size() frames are on disk (a
+  // resumed run): the next frame is numbered after them.
+  VtkSeries(std::string dir, std::string name, std::vector<double> times);
   // Writes the next frame (atomically) and records its time. Throws
   // NonFiniteValue (nothing written) or OutputError.
   void add(double time, const VtkMesh& mesh);
@@ -86,7 +89,8 @@ class VtkSeries {
   std::size_t frames() const { return times_.size(); }
   const std::vector<double>& times() const { return times_; }
   std::string collection_path() const;
-  std::string frame_file(std::size_t frame) const;  // the file name (without dir)
+  std::string frame_file(std::size_t frame) const { return frame_file(name_, frame); }  // the file name (without dir)
+  static std::string frame_file(const std::string& name, std::size_t frame);
 
  private:
   std::string dir_, name_;

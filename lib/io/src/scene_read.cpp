@@ -1,450 +1,31 @@
-#include "dda/io/scene_file.hpp"
-
+// Scene files, reading: the sections of the schema (lib/io/SCHEMA.md) read
+// from the parsed document (json_reader.hpp) into a dda::Scene and what a
+// run writes, then validated (the kernel's dda::check_scene, and what only
+// matters for a file: keys that would be silently ignored).
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <initializer_list>
-#include <iterator>
-#include <limits>
 #include <map>
-#include <set>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "dda/io/csv.hpp"
+#include "dda/io/scene_file.hpp"
 #include "dda/joint_sets.hpp"
 #include "dda/simulation.hpp"
+#include "json_reader.hpp"
+#include "scene_cdem.hpp"
 
 namespace dda::io {
 
+using detail::describe_value;
+using detail::index_path;
+using detail::join_path;
+using detail::json;
+using detail::Reader;
+
 namespace {
 
-using nlohmann::json;
-
 constexpr double kPi = 3.14159265358979323846;
-
-// ---------------------------------------------------------------------------
-// Messages
-
-std::string join_path(const std::string& parent, const std::string& key) {
-  return parent.empty() ? key : parent + "." + key;
-}
-
-std::string index_path(const std::string& parent, std::size_t i) { return parent + "[" + std::to_string(i) + "]"; }
-
-std::string single_quoted(const std::string& s) { return "'" + s + "'"; }
-
-// "string \"abc\"", "number 2.5", "array", ... for "expected X, got Y".
-std::string describe_value(const json& v) {
-  std::string s = v.type_name();
-  if (v.is_string() || v.is_number() || v.is_boolean()) {
-    std::string d = v.dump();
-    if (d.size() > 40) d = d.substr(0, 37) + "...";
-    s += " " + d;
-  }
-  return s;
-}
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
-// ---------------------------------------------------------------------------
-// Reading with field paths
-
-// "file:line:col" of `path` in the file (re-reading it), or "file" if the
-// path is not in the file (defined below).
-std::string locate(const std::string& file, const std::string* text, const std::string& path);
-
-class Reader {
- public:
-  explicit Reader(std::string file, const std::string* text = nullptr) : file_(std::move(file)), text_(text) {}
-
-  // "<file>:<line>:<col>: <path>: <why>", the position that of `path` in the
-  // file (found by reading it again, only on this error path).
-  [[noreturn]] void fail(const std::string& path, const std::string& why) const {
-    throw SceneFileError(where(path) + ": " + (path.empty() ? std::string() : path + ": ") + why);
-  }
-
-  std::string where(const std::string& path) const { return locate(file_, text_, path); }
-
-  // Checks v is an object whose keys are all in `allowed`.
-  void object(const json& v, const std::string& path, std::initializer_list<const char*> allowed) const {
-    if (!v.is_object()) fail(path, "expected an object, got " + describe_value(v));
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string& k = it.key();
-      bool ok = false;
-      for (const char* a : allowed) ok = ok || k == a;
-      if (ok) continue;
-      std::string best;
-      std::size_t best_d = std::numeric_limits<std::size_t>::max();
-      for (const char* a : allowed) {
-        const std::size_t d = edit_distance(k, a);
-        if (d < best_d) best_d = d, best = a;
-      }
-      std::string why = "unknown key";
-      if (best_d <= std::max<std::size_t>(1, std::min(k.size(), best.size()) / 3)) {
-        why += " (did you mean " + single_quoted(best) + "?)";
-      } else {
-        why += "; allowed here:";
-        for (const char* a : allowed) why += std::string(" ") + a;
-      }
-      fail(join_path(path, k), why);
-    }
-  }
-
-  static const json* find(const json& obj, const char* key) {
-    const auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
-  }
-
-  const json& need(const json& obj, const std::string& path, const char* key) const {
-    const json* v = find(obj, key);
-    if (!v) fail(join_path(path, key), "missing required key");
-    return *v;
-  }
-
-  double number(const json& v, const std::string& path) const {
-    if (!v.is_number()) fail(path, "expected a number, got " + describe_value(v));
-    return v.get<double>();
-  }
-
-  int integer(const json& v, const std::string& path) const {
-    constexpr long long kMax = std::numeric_limits<int>::max(), kMin = std::numeric_limits<int>::min();
-    if (v.is_number_unsigned()) {
-      if (v.get<unsigned long long>() > static_cast<unsigned long long>(kMax)) fail(path, "integer out of range");
-      return static_cast<int>(v.get<unsigned long long>());
-    }
-    if (v.is_number_integer()) {
-      const long long x = v.get<long long>();
-      if (x < kMin || x > kMax) fail(path, "integer out of range");
-      return static_cast<int>(x);
-    }
-    if (v.is_number_float()) {
-      const double x = v.get<double>();
-      if (x == std::floor(x) && std::fabs(x) <= static_cast<double>(kMax)) return static_cast<int>(x);
-    }
-    fail(path, "expected an integer, got " + describe_value(v));
-  }
-
-  bool boolean(const json& v, const std::string& path) const {
-    if (!v.is_boolean()) fail(path, "expected true or false, got " + describe_value(v));
-    return v.get<bool>();
-  }
-
-  std::string string(const json& v, const std::string& path) const {
-    if (!v.is_string()) fail(path, "expected a string, got " + describe_value(v));
-    return v.get<std::string>();
-  }
-
-  const json& array(const json& v, const std::string& path, const char* what) const {
-    if (!v.is_array()) fail(path, std::string("expected an array") + what + ", got " + describe_value(v));
-    return v;
-  }
-
-  Vec2 vec2(const json& v, const std::string& path) const {
-    if (!v.is_array() || v.size() != 2) fail(path, "expected [x, y] (an array of 2 numbers), got " + describe_value(v) +
-                                                       (v.is_array() ? " of " + std::to_string(v.size()) : ""));
-    return {number(v[0], index_path(path, 0)), number(v[1], index_path(path, 1))};
-  }
-
-  template <typename E>
-  E choice(const json& v, const std::string& path, std::initializer_list<std::pair<const char*, E>> options) const {
-    const std::string s = string(v, path);
-    std::string list;
-    for (const auto& [name, value] : options) {
-      if (s == name) return value;
-      list += std::string(list.empty() ? "" : ", ") + "\"" + name + "\"";
-    }
-    fail(path, "unknown value \"" + s + "\"; expected one of " + list);
-  }
-
-  std::int64_t int64(const json& v, const std::string& path) const {
-    if (v.is_number_unsigned()) {
-      if (v.get<unsigned long long>() > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
-        fail(path, "integer out of range");
-      return static_cast<std::int64_t>(v.get<unsigned long long>());
-    }
-    if (v.is_number_integer()) return v.get<std::int64_t>();
-    if (v.is_number_float()) {
-      const double x = v.get<double>();
-      // 2^63 is exact in a double; the range is [-2^63, 2^63).
-      constexpr double kTwo63 = 9223372036854775808.0;
-      if (x == std::floor(x) && x >= -kTwo63 && x < kTwo63) return static_cast<std::int64_t>(x);
-    }
-    fail(path, "expected an integer, got " + describe_value(v));
-  }
-
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
-  const std::string* text_;
-};
-
-// ---------------------------------------------------------------------------
-// Parsing: JSON syntax, duplicate keys, and where an overflowing number was.
-
-// Where the lexer is: an iterator over the text that records how far it was
-// read, so that an event of the parser callback knows its byte position.
-class CountingIterator {
- public:
-  using iterator_category = std::input_iterator_tag;
-  using value_type = char;
-  using difference_type = std::ptrdiff_t;
-  using pointer = const char*;
-  using reference = const char&;
-  CountingIterator(const char* p, const char** reached) : p_(p), reached_(reached) {}
-  reference operator*() const { return *p_; }
-  CountingIterator& operator++() {
-    *reached_ = ++p_;
-    return *this;
-  }
-  CountingIterator operator++(int) {
-    CountingIterator old = *this;
-    ++*this;
-    return old;
-  }
-  bool operator==(const CountingIterator& o) const { return p_ == o.p_; }
-  bool operator!=(const CountingIterator& o) const { return p_ != o.p_; }
-
- private:
-  const char* p_;
-  const char** reached_;
-};
-
-// 1-based line and column of the 0-based byte offset `pos` in `text`.
-std::pair<std::size_t, std::size_t> line_column0(const std::string& text, std::size_t pos) {
-  pos = std::min(pos, text.size());
-  std::size_t line = 1, line_start = 0;
-  for (std::size_t i = 0; i < pos; ++i)
-    if (text[i] == '\n') ++line, line_start = i + 1;
-  return {line, pos - line_start + 1};
-}
-
-std::string file_line_column(const std::string& file, const std::string& text, std::size_t pos) {
-  const auto [line, col] = line_column0(text, pos);
-  return file + ":" + std::to_string(line) + ":" + std::to_string(col);
-}
-
-// The most elements an array at `key` may have (kMaxArrayLength unless the
-// schema gives the key a tighter limit).
-std::size_t array_limit(const std::string& key) {
-  if (key == "blocks") return kMaxBlocks;
-  if (key == "vertices" || key == "region") return kMaxPolygonVertices;
-  return kMaxArrayLength;
-}
-
-// Follows the parser's events: the field path of the element being read,
-// duplicate keys, and the limits on nesting depth and array/object sizes,
-// all checked as the text is read (before a too-big document is built).
-// With a target path it instead stops (throws Found) where that path starts.
-class PathTracker {
- public:
-  struct Found {
-    std::size_t offset;
-  };
-  // `reached`: how far the lexer has read (CountingIterator).
-  PathTracker(const std::string& text, const char* const* reached, const std::string& file,
-              const std::string* target = nullptr)
-      : text_(text), reached_(reached), file_(file), target_(target) {}
-
-  // The path of the element being parsed now (the last key of the innermost
-  // object, or the next index of the innermost array).
-  std::string current() const {
-    if (stack_.empty()) return "";
-    const Frame& f = stack_.back();
-    return f.array ? index_path(f.path, f.index) : join_path(f.path, f.key);
-  }
-
-  // Byte offset of the last character the lexer read (0-based).
-  std::size_t offset() const {
-    const std::size_t n = static_cast<std::size_t>(*reached_ - text_.data());
-    return n > 0 ? n - 1 : 0;
-  }
-
-  void event(json::parse_event_t ev, const json& parsed) {
-    switch (ev) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start: {
-        if (!stack_.empty()) element_started();
-        if (stack_.size() >= kMaxNestingDepth)
-          fail(current(), "nested deeper than " + std::to_string(kMaxNestingDepth) +
-                              " objects/arrays (the reader's limit; a scene needs at most 5)");
-        Frame f;
-        f.array = ev == json::parse_event_t::array_start;
-        f.path = current();
-        f.limit = f.array ? array_limit(stack_.empty() ? std::string() : stack_.back().key) : kMaxArrayLength;
-        stack_.push_back(std::move(f));
-        break;
-      }
-      case json::parse_event_t::key: {
-        Frame& f = stack_.back();
-        f.key = parsed.get<std::string>();
-        if (target_ && current() == *target_) throw Found{offset()};
-        if (!target_) {
-          if (!f.keys.insert(f.key).second) fail(current(), "duplicate key");
-          if (f.keys.size() > f.limit)
-            fail(f.path, "more than " + std::to_string(f.limit) + " keys (the reader's limit)");
-        }
-        break;
-      }
-      case json::parse_event_t::value:
-        if (!stack_.empty() && stack_.back().array) {
-          element_started();
-          ++stack_.back().index;
-        }
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        stack_.pop_back();
-        if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
-        break;
-    }
-  }
-
- private:
-  struct Frame {
-    bool array = false;
-    std::string path;
-    std::size_t index = 0;
-    std::size_t limit = kMaxArrayLength;
-    std::string key;
-    std::set<std::string> keys;
-  };
-
-  // A new element of the innermost array starts (or ended, for a scalar).
-  void element_started() {
-    const Frame& f = stack_.back();
-    if (!f.array) return;
-    if (target_ && current() == *target_) throw Found{offset()};
-    if (!target_ && f.index >= f.limit)
-      fail(f.path, "more than " + std::to_string(f.limit) + " elements (the reader's limit" +
-                       (f.limit == kMaxPolygonVertices ? " on vertices per polygon" :
-                        f.limit == kMaxBlocks && f.limit != kMaxArrayLength ? " on blocks" : "") + ")");
-  }
-
-  [[noreturn]] void fail(const std::string& path, const std::string& why) const {
-    throw SceneFileError(file_line_column(file_, text_, offset()) + ": " + (path.empty() ? "" : path + ": ") + why);
-  }
-
-  const std::string& text_;
-  const char* const* reached_;
-  const std::string& file_;
-  const std::string* target_;
-  std::vector<Frame> stack_;
-};
-
-// The parser's events as SAX calls: each goes to the tracker (path, limits)
-// first, then, when reading, to nlohmann's DOM builder. (Not json::parse
-// with a callback: its DOM builder searches the enclosing array for a
-// discarded value after every object, quadratic in the array's length.)
-class TrackingSax {
- public:
-  using Dom = nlohmann::detail::json_sax_dom_parser<json>;
-  TrackingSax(PathTracker& tracker, Dom* dom) : t_(tracker), dom_(dom) {}
-  bool null() { return value() && (!dom_ || dom_->null()); }
-  bool boolean(bool v) { return value() && (!dom_ || dom_->boolean(v)); }
-  bool number_integer(json::number_integer_t v) { return value() && (!dom_ || dom_->number_integer(v)); }
-  bool number_unsigned(json::number_unsigned_t v) { return value() && (!dom_ || dom_->number_unsigned(v)); }
-  bool number_float(json::number_float_t v, const std::string& s) {
-    return value() && (!dom_ || dom_->number_float(v, s));
-  }
-  bool string(std::string& v) { return value() && (!dom_ || dom_->string(v)); }
-  bool binary(json::binary_t& v) { return value() && (!dom_ || dom_->binary(v)); }
-  bool start_object(std::size_t n) {
-    return on(json::parse_event_t::object_start) && (!dom_ || dom_->start_object(n));
-  }
-  bool end_object() { return on(json::parse_event_t::object_end) && (!dom_ || dom_->end_object()); }
-  bool start_array(std::size_t n) { return on(json::parse_event_t::array_start) && (!dom_ || dom_->start_array(n)); }
-  bool end_array() { return on(json::parse_event_t::array_end) && (!dom_ || dom_->end_array()); }
-  bool key(std::string& k) {
-    t_.event(json::parse_event_t::key, json(k));
-    return !dom_ || dom_->key(k);
-  }
-  // With a DOM builder: throws the parse error (json::parse_error, or
-  // json::out_of_range for a number beyond the double range).
-  // (A template: the builder throws the exception's own type.)
-  template <typename Exception>
-  bool parse_error(std::size_t pos, const std::string& token, const Exception& ex) {
-    return dom_ ? dom_->parse_error(pos, token, ex) : false;
-  }
-
- private:
-  bool value() { return on(json::parse_event_t::value); }
-  bool on(json::parse_event_t ev) {
-    t_.event(ev, none_);
-    return true;
-  }
-  PathTracker& t_;
-  Dom* dom_;
-  const json none_;
-};
-
-json parse_json(const std::string& text, const Reader& reader) {
-  // The lexer takes a NUL byte for the end of the input, and would accept
-  // whatever follows it: a JSON text has no raw NUL (not even in a string).
-  if (const void* nul = std::memchr(text.data(), '\0', text.size()))
-    throw SceneFileError(
-        file_line_column(reader.file(), text, static_cast<std::size_t>(static_cast<const char*>(nul) - text.data())) +
-        ": a NUL byte (a JSON text has none: a binary or padded file?)");
-  const char* reached = text.data();
-  PathTracker tracker(text, &reached, reader.file());
-  const CountingIterator first(text.data(), &reached), last(text.data() + text.size(), &reached);
-  try {
-    json root;
-    TrackingSax::Dom dom(root, /*allow_exceptions=*/true);
-    TrackingSax sax(tracker, &dom);
-    json::sax_parse(first, last, &sax);
-    return root;
-  } catch (const json::parse_error& e) {
-    // e.what(): "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error while ..."
-    std::string detail = e.what();
-    const std::size_t colon = detail.find(": ");
-    if (colon != std::string::npos) detail = detail.substr(colon + 2);
-    if (detail.rfind("syntax error", 0) == 0) detail = "JSON " + detail;
-    const std::string where = tracker.current();
-    throw SceneFileError(file_line_column(reader.file(), text, e.byte > 0 ? e.byte - 1 : 0) + ": " +
-                         (where.empty() ? "" : "near " + where + ": ") + detail);
-  } catch (const json::out_of_range& e) {
-    // A number beyond the double range ("1e400"): JSON has no infinity/NaN.
-    std::string detail = e.what();
-    const std::size_t b = detail.find("] ");
-    if (b != std::string::npos) detail = detail.substr(b + 2);
-    throw SceneFileError(file_line_column(reader.file(), text, tracker.offset()) + ": " + tracker.current() + ": " +
-                         detail + " (not representable as a finite double)");
-  }
-}
-
-std::string locate(const std::string& file, const std::string* text, const std::string& path) {
-  if (!text || path.empty()) return file;
-  const char* reached = text->data();
-  PathTracker tracker(*text, &reached, file, &path);
-  TrackingSax sax(tracker, nullptr);
-  const CountingIterator first(text->data(), &reached), last(text->data() + text->size(), &reached);
-  try {
-    json::sax_parse(first, last, &sax);
-  } catch (const PathTracker::Found& found) {
-    return file_line_column(file, *text, found.offset);
-  } catch (const std::exception&) {
-  }
-  return file;
-}
 
 // ---------------------------------------------------------------------------
 // Sections
@@ -508,7 +89,7 @@ int material_ref(const Reader& r, const json& x, const std::string& mp, const Na
 
 BlockSpec read_block(const Reader& r, const json& v, const std::string& path, const Names& names) {
   r.object(v, path,
-           {"name", "vertices", "rect", "rotate_deg", "about", "velocity", "spin", "fixed", "material", "group"});
+           {"name", "vertices", "rect", "rotate_deg", "about", "velocity", "spin", "fixed", "material", "group", "mesh"});
   BlockSpec b;
   const json* verts = Reader::find(v, "vertices");
   const json* rect = Reader::find(v, "rect");
@@ -851,6 +432,64 @@ void check_block_names(const Reader& r, const std::vector<BlockSpec>& blocks,
   }
 }
 
+// Keys of one model's that a scene of the other model has no use for: an
+// error naming the model, so that nothing is silently ignored.
+std::string only_penalty(const std::string& what) {
+  return "applies to the penalty model only (" + what + "); this scene's \"model\" is \"cdem\"";
+}
+
+void check_model_keys(const Reader& r, const json& root, bool penalty) {
+  if (penalty) {
+    if (Reader::find(root, "cdem"))
+      r.fail("cdem", "applies to the cdem model only; this scene's \"model\" is \"penalty\" (the default): set "
+                     "\"model\": \"cdem\" to use Paper B's two-scale contact");
+    return;
+  }
+  const std::pair<const char*, const char*> penalty_keys[] = {
+      {"contact", "the potential-based contact; Paper B's contact settings go in \"cdem\""},
+      {"boundaries", "boundary segments; give the ground as a fixed block"},
+      {"strains", "the 6-DOF block's strains; CDEM blocks are meshes of constant-strain triangles"},
+      {"broad_phase", "the pair search of the penalty contact"},
+      {"initial_overlap", "preloaded overlaps of the penalty contact"},
+      {"dt_fraction", "the penalty model's predicted critical step; give dt"},
+      {"guards", "the penalty model's stability guards"},
+      {"rotation_update", "the 6-DOF block's rotation"},
+      {"damping", "Eq. 5c damping of Paper A; Paper B's mass damping is cdem.mass_damping"},
+      {"threads", "the penalty solver's threads; the cdem model steps on one"},
+      {"checkpoint", "checkpoints hold the penalty model's state; the cdem model's state cannot be saved yet"},
+  };
+  for (const auto& [key, what] : penalty_keys)
+    if (Reader::find(root, key)) r.fail(key, only_penalty(what));
+}
+
+void check_block_keys(const Reader& r, const json& block, const std::string& path, bool penalty) {
+  if (penalty) {
+    if (Reader::find(block, "mesh"))
+      r.fail(join_path(path, "mesh"), "applies to the cdem model only (the element mesh of a block); this scene's "
+                                      "\"model\" is \"penalty\" (the default)");
+    return;
+  }
+  if (Reader::find(block, "spin")) r.fail(join_path(path, "spin"), only_penalty("a 6-DOF block's initial spin"));
+  if (Reader::find(block, "group")) r.fail(join_path(path, "group"), only_penalty("friction groups"));
+}
+
+// When dda run writes checkpoints.
+CheckpointSpec read_checkpoint_spec(const Reader& r, const json& v) {
+  r.object(v, "checkpoint", {"every", "every_wall"});
+  CheckpointSpec c;
+  for (const auto& [key, field, unit] :
+       {std::tuple<const char*, double*, const char*>{"every", &c.every, "s of simulated time"},
+        {"every_wall", &c.every_wall, "s of wall-clock time"}})
+    if (const json* x = Reader::find(v, key)) {
+      const std::string p = join_path("checkpoint", key);
+      *field = r.number(*x, p);
+      if (!(*field > 0.0)) r.fail(p, std::string("must be > 0 (") + unit + " between checkpoints; leave it out for none)");
+    }
+  if (!(c.every > 0.0 || c.every_wall > 0.0))
+    r.fail("checkpoint", "give \"every\" (s of simulated time) or \"every_wall\" (s of wall-clock time)");
+  return c;
+}
+
 }  // namespace
 
 void check_step_count(const SceneFile& file, double dt, const std::string& label) {
@@ -870,15 +509,19 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
   if (json_text.size() > kMaxSceneFileBytes)
     throw SceneFileError(file_label + ": " + std::to_string(json_text.size()) + " bytes, more than " +
                          std::to_string(kMaxSceneFileBytes) + " (the reader's limit on scene files)");
-  const json root = parse_json(json_text, r);
+  const json root = detail::parse_json(json_text, r);
   if (!root.is_object()) r.fail("", "the top level must be a JSON object, got " + describe_value(root));
   r.object(root, "",
-           {"name", "description", "materials", "blocks", "generated", "boundaries", "contact", "gravity", "strains",
-            "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "max_steps", "guards", "rotation_update",
-            "damping", "output"});
+           {"name", "description", "model", "materials", "blocks", "generated", "boundaries", "contact", "cdem",
+            "gravity", "strains", "broad_phase", "initial_overlap", "dt", "dt_fraction", "duration", "max_steps",
+            "guards", "rotation_update", "damping", "threads", "checkpoint", "output"});
 
   SceneFile f;
+  f.text_hash = content_hash(json_text.data(), json_text.size());
   Scene& s = f.scene;
+  f.model = detail::read_model(r, Reader::find(root, "model"));
+  const bool penalty = f.model == ContactModel::kPenalty;
+  check_model_keys(r, root, penalty);
   if (const json* x = Reader::find(root, "name")) s.name = r.string(*x, "name");
   if (const json* x = Reader::find(root, "description")) r.string(*x, "description");
 
@@ -895,8 +538,15 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
                "duplicate material name \"" + name + "\" (also materials[" + std::to_string(k) + "].name)");
   }
   const json& blocks = r.array(r.need(root, "", "blocks"), "blocks", " of blocks");
-  for (std::size_t i = 0; i < blocks.size(); ++i)
-    s.blocks.push_back(read_block(r, blocks[i], index_path("blocks", i), names));
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const std::string bp = index_path("blocks", i);
+    s.blocks.push_back(read_block(r, blocks[i], bp, names));
+    check_block_keys(r, blocks[i], bp, penalty);
+    if (const json* m = Reader::find(blocks[i], "mesh")) {
+      f.cdem.meshes.resize(s.blocks.size());
+      f.cdem.meshes.back() = detail::read_block_mesh(r, *m, join_path(bp, "mesh"), s.blocks.back());
+    }
+  }
   std::vector<std::string> generated_paths;
   if (const json* x = Reader::find(root, "generated")) {
     // One generator object, or an array of them.
@@ -906,9 +556,12 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
       r.array(*x, "generated", " of generated regions (or one object)");
       for (std::size_t i = 0; i < x->size(); ++i) generated_paths.push_back(index_path("generated", i));
     }
-    for (std::size_t i = 0; i < generated_paths.size(); ++i)
-      f.generated.push_back(
-          read_generated(r, x->is_object() ? *x : (*x)[i], generated_paths[i], names, s.blocks));
+    for (std::size_t i = 0; i < generated_paths.size(); ++i) {
+      const json& g = x->is_object() ? *x : (*x)[i];
+      if (!penalty && g.is_object() && Reader::find(g, "group"))
+        r.fail(join_path(generated_paths[i], "group"), only_penalty("friction groups"));
+      f.generated.push_back(read_generated(r, g, generated_paths[i], names, s.blocks));
+    }
   }
   if (s.blocks.size() > kMaxBlocks)
     r.fail(f.generated.empty() ? "blocks" : "generated",
@@ -920,7 +573,14 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
     for (std::size_t i = 0; i < x->size(); ++i)
       s.boundaries.push_back(read_boundary(r, (*x)[i], index_path("boundaries", i)));
   }
-  s.contact = read_contact(r, r.need(root, "", "contact"), "contact");
+  if (penalty) s.contact = read_contact(r, r.need(root, "", "contact"), "contact");
+  {
+    // Blocks without a "mesh" (and generated ones) take cdem.divisions.
+    CdemSettings cdem = detail::read_cdem(r, Reader::find(root, "cdem"));
+    cdem.meshes = std::move(f.cdem.meshes);
+    cdem.meshes.resize(s.blocks.size());
+    f.cdem = std::move(cdem);
+  }
   if (const json* x = Reader::find(root, "gravity")) s.gravity = r.vec2(*x, "gravity");
   if (const json* x = Reader::find(root, "strains")) s.strains = r.boolean(*x, "strains");
   if (const json* x = Reader::find(root, "broad_phase"))
@@ -953,6 +613,12 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
     s.rotation_update = r.choice<RotationUpdate>(
         *x, "rotation_update", {{"paper_linear", RotationUpdate::kPaperLinear}, {"exact", RotationUpdate::kExact}});
   if (const json* x = Reader::find(root, "damping")) s.damping = read_damping(r, *x, "damping");
+  if (const json* x = Reader::find(root, "threads")) {
+    f.threads = r.integer(*x, "threads");
+    if (f.threads < 1 || f.threads > kMaxThreads)
+      r.fail("threads", "must lie in [1, " + std::to_string(kMaxThreads) + "] (the solver's threads; 1 by default)");
+  }
+  if (const json* x = Reader::find(root, "checkpoint")) f.checkpoint = read_checkpoint_spec(r, *x);
 
   // The kernel's semantic checks (polygons, ranges, overlaps at t = 0).
   try {
@@ -976,144 +642,15 @@ SceneFile parse_scene(const std::string& json_text, const std::string& file_labe
       r.fail("contact.friction_update", "has no effect with contact.kt = 0 (kt > 0 switches friction on)");
   }
   f.output = read_output(r, Reader::find(root, "output"), s);
+  if (!penalty && f.output.block_table)
+    r.fail("output.block_table", only_penalty("the per-block table of 6-DOF blocks: rotation, spin, stress"));
+  if (!penalty) detail::check_cdem(r, f);  // meshes, options, dt against the mesh's critical step
   return f;
 }
 
+
 SceneFile load_scene_file(const std::string& path, const ReadOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw SceneFileError(path + ": is a directory, not a scene file");
-  const std::string too_big =
-      path + ": more than " + std::to_string(kMaxSceneFileBytes) + " bytes (the reader's limit on scene files)";
-  // The size first (a regular file), then at most one byte more than the
-  // limit is read (a pipe or device has no size).
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (!ec && size > kMaxSceneFileBytes) throw SceneFileError(too_big);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneFileError(path + ": cannot open: " + std::strerror(errno));
-  constexpr std::size_t kChunk = std::size_t{64} << 10;  // bytes per read
-  std::string text;
-  if (!ec) text.reserve(static_cast<std::size_t>(size));
-  std::vector<char> chunk(kChunk);
-  while (in) {
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSceneFileBytes) throw SceneFileError(too_big);
-  }
-  if (in.bad()) throw SceneFileError(path + ": read error");
-  return parse_scene(text, path, options);
+  return parse_scene(detail::read_text_file(path), path, options);
 }
-
-namespace {
-
-using ojson = nlohmann::ordered_json;
-
-ojson vec2_json(Vec2 v) { return ojson::array({v.x, v.y}); }
-
-const char* name_of(SmallEdgeRays m) {
-  switch (m) {
-    case SmallEdgeRays::kVirtualAndVertex: return "virtual_and_vertex";
-    case SmallEdgeRays::kVirtualReplacesVertex: return "virtual_replaces_vertex";
-  }
-  return "virtual_and_vertex";
-}
-
-const char* name_of(FrictionUpdate u) {
-  switch (u) {
-    case FrictionUpdate::kPaper: return "paper";
-    case FrictionUpdate::kReturnMapping: return "return_mapping";
-  }
-  return "paper";
-}
-
-const char* name_of(HRule h) {
-  switch (h) {
-    case HRule::kMinMaxEdge: return "min_max_edge";
-    case HRule::kMeanEdge: return "mean_edge";
-    case HRule::kGiven: return "given";
-    case HRule::kInscribedRadius: return "inscribed_radius";
-  }
-  return "min_max_edge";
-}
-
-}  // namespace
-
-std::string write_scene(const SceneFile& file) {
-  const Scene& s = file.scene;
-  ojson root = ojson::object();
-  if (!s.name.empty()) root["name"] = s.name;
-  ojson mats = ojson::array();
-  for (const Material& m : s.materials)
-    mats.push_back({{"density", m.density}, {"young", m.young}, {"poisson", m.poisson}});
-  root["materials"] = mats;
-  ojson blocks = ojson::array();
-  for (const BlockSpec& b : s.blocks) {
-    ojson jb = ojson::object();
-    if (!b.name.empty()) jb["name"] = b.name;
-    ojson verts = ojson::array();
-    for (const Vec2& p : b.vertices) verts.push_back(vec2_json(p));
-    jb["vertices"] = verts;
-    jb["velocity"] = vec2_json(b.velocity);
-    jb["spin"] = b.spin;
-    jb["fixed"] = b.fixed;
-    jb["material"] = b.material;
-    jb["group"] = b.group;
-    blocks.push_back(jb);
-  }
-  root["blocks"] = blocks;
-  ojson bounds = ojson::array();
-  for (const BoundarySegment& g : s.boundaries)
-    bounds.push_back({{"a", vec2_json(g.a)}, {"b", vec2_json(g.b)}, {"depth", g.depth}, {"group", g.group}});
-  root["boundaries"] = bounds;
-  const ContactParams& c = s.contact;
-  ojson contact = {{"kn", c.kn},
-                  {"kt", c.kt},
-                  {"friction_deg", c.friction_deg},
-                  {"h_rule", name_of(c.h_rule)},
-                  {"integration", c.integration == Integration::kExactEnvelope ? "exact_envelope" : "paper_bisector"},
-                  {"small_edge_fraction", c.small_edge_fraction},
-                  {"small_edge_rays", name_of(c.small_edge_rays)},
-                  {"friction_update", name_of(c.friction_update)}};
-  ojson rules = ojson::array();
-  for (const FrictionRule& fr : c.friction_rules)
-    rules.push_back({{"groups", {fr.group_a, fr.group_b}}, {"friction_deg", fr.friction_deg}});
-  contact["friction_rules"] = rules;
-  if (c.h_rule == HRule::kGiven) contact["h"] = c.h;
-  root["contact"] = contact;
-  root["gravity"] = vec2_json(s.gravity);
-  root["strains"] = s.strains;
-  root["broad_phase"] = s.broad_phase == BroadPhase::kSweep ? "sweep" : "none";
-  root["initial_overlap"] = s.initial_overlap;
-  // With dt_fraction > 0 the reader refuses a "dt" (it would be ignored).
-  if (s.dt_fraction > 0.0) {
-    root["dt_fraction"] = s.dt_fraction;
-  } else {
-    root["dt"] = s.dt;
-    root["dt_fraction"] = s.dt_fraction;
-  }
-  root["duration"] = s.duration;
-  if (file.max_steps != kDefaultMaxSteps) root["max_steps"] = file.max_steps;
-  root["guards"] = {{"max_step_motion", s.guards.max_step_motion},
-                    {"max_balance_error", s.guards.max_balance_error},
-                    {"max_energy_growth", s.guards.max_energy_growth},
-                    {"energy_check_every", s.guards.energy_check_every},
-                    {"max_penetration", s.guards.max_penetration},
-                    {"max_approach_energy", s.guards.max_approach_energy}};
-  root["rotation_update"] = s.rotation_update == RotationUpdate::kExact ? "exact" : "paper_linear";
-  root["damping"] = {{"mass", s.damping.mass},
-                     {"stiffness", s.damping.stiffness},
-                     {"settle_time", s.damping.settle_time},
-                     {"settle_sticking", s.damping.settle_sticking},
-                     {"settle_slip_time", s.damping.settle_slip_time}};
-  root["output"] = {{"every", file.output.every},
-                    {"snapshots", file.output.snapshot_times},
-                    {"tracked_blocks", file.output.tracked_blocks},
-                    {"vtk", file.output.vtk},
-                    {"block_table", file.output.block_table}};
-  if (file.output.vtk_every > 0) root["output"]["vtk_every"] = file.output.vtk_every;
-  return root.dump(2) + "\n";
-}
-
-void save_scene_file(const std::string& path, const SceneFile& file) { write_file_atomic(path, write_scene(file)); }
 
 }  // namespace dda::io

@@ -1,0 +1,22 @@
+"""DDA of convex polygonal blocks with the potential-based contact of Paper A, from Python.
+
+    import dda
+    sim = dda.Simulation("repro/scenes/two_squares.json")
+    sim.run(until=0.5)
+    print(sim.time, sim.centroids[:2], sim.energy().total)
+
+Scene          a scene from a file, JSON text or a dict, or built in Python
+Simulation     a scene stepped from Python; state as numpy arrays
+kernel         the contact kernel (overlap, intersection polygon, potential, normal force)
+sweep          independent runs over parameters, on local processes or a Dask cluster
+SceneError, SimulationError   the library's errors, with their fields
+"""
+from ._core import Contacts, Energy, timeseries_header, format_number
+from ._errors import SceneError, SimulationError
+from ._scene import JointSet, Scene, load_scene
+from ._simulation import Simulation
+from . import kernel
+from ._sweep import SweepTable, sweep, seed_of
+
+__all__ = ["Scene", "JointSet", "load_scene", "Simulation", "Energy", "Contacts", "SceneError", "SimulationError",
+           "kernel", "sweep", "SweepTable", "seed_of", "timeseries_header", "format_number"]
