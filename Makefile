@@ -21,7 +21,7 @@ PREFIX     ?= /usr/local
 DEB_PKGS := g++ cmake make libeigen3-dev catch2 librapidcheck-dev libcgal-dev \
             libbenchmark-dev libbox2d-dev nlohmann-json3-dev python3-numpy python3-matplotlib python3-pil \
             python3-vtk9 python3-dev pybind11-dev python3-pybind11 python3-pytest python3-hypothesis \
-            python3-shapely python3-distributed
+            python3-shapely python3-distributed valgrind
 
 BIN := $(BUILD)/bin
 
@@ -123,7 +123,11 @@ fuzz: build
 	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
 	$(BIN)/io_scene_fuzz --cases $(SCENE_FUZZ_CASES) --cli-runs $(SCENE_FUZZ_CLI_RUNS) --seed random
 
-# Geometry kernel per polygon pair (Google Benchmark) and our pair cost
+# First the instruction counts (callgrind, lib/bench/instructions.py: the
+# Sect. 6.1 collapse's first 0.2 s, the guards' share of it, and the full
+# normal contact per overlapping pair against Box2D 2.4's manifold, each
+# beside the same count on commit 48051c9; ~2 min), then the wall times:
+# the geometry kernel per polygon pair (Google Benchmark) and our pair cost
 # against Box2D 2.4's, then the Sect. 6.1 collapse (case 1) with 1 and 2
 # threads and as two independent 1-thread runs at once (the host's ceiling):
 # its contact-heavy start (600 warm-up steps, then 5000 timed, 3 rounds, the
@@ -137,6 +141,7 @@ BENCH_MAX_BLOCKS     ?= 10000
 BENCH_COLLAPSE_STEPS ?= 74400
 bench: build
 	@start=$$(date +%s); \
+	$(PY) lib/bench/instructions.py $(BIN) && \
 	$(BIN)/bench_geometry && \
 	$(BIN)/bench_pair_cost && \
 	$(BIN)/bench_collapse --steps 5000 && \

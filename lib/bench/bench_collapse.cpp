@@ -26,7 +26,10 @@
 // round's, so that a minute of a busy host does not decide the verdict.
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
-// blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each); a table of blocks, pairs per step, us per step, ns per block-step
+// blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
+// --max-blocks 1000000: on to 3 x 10^5 and 10^6, about an hour on an idle
+// 2-core machine with the default warm-up, ~2 GB each for the 1- and
+// 2-thread simulations at 10^6 blocks); a table of blocks, pairs per step, us per step, ns per block-step
 // and ns per candidate pair with 1 and 2 threads, and the fitted exponent p of
 // cost ~ blocks^p. --csv FILE also writes the table as CSV. Shapes:
 //   wide   (default) the collapse's 50 m height, width grown: every block sees
@@ -51,6 +54,16 @@
 //          sweep broad phase the collapse uses (sort, skin, Verlet list).
 // Each variant is its own trajectory (friction and strains change the
 // motion), so the cost per touching pair is printed beside the cost per step.
+//
+// --window SECONDS [--no-guards]: the collapse from t = 0 for SECONDS of
+// simulated time on 1 thread, nothing else (no warm-up, no timing, no
+// output but one line: steps, touching pairs at the end and a fingerprint
+// of the final state), for an instruction counter (lib/bench/instructions.py
+// runs it under callgrind). --no-guards switches off the guards that can be
+// switched off (the energy checks, the penetration and approach-energy
+// measures; the step-motion bound is made infinite, but its measure comes
+// with the vertex update and stays): the same trajectory (the fingerprint
+// says so), and the two counts' difference is what those guards cost.
 #include <algorithm>
 #include <atomic>
 #include <cfloat>
@@ -88,12 +101,15 @@ constexpr int kThreadCounts[] = {1, 2};         // the machine's cores; results 
 constexpr int kDefaultRounds = 3;               // the median of 3 is robust to one disturbed round
 
 // Scaling runs.
-constexpr int kTargetBlocks[] = {100, 300, 1000, 3000, 10000, 30000, 100000};  // ~10^2 .. 10^5, half-decade steps
-constexpr int kDefaultMaxBlocks = 10000;  // the rows above it (minutes each) run with --max-blocks 100000
+constexpr int kTargetBlocks[] = {100,   300,   1000,   3000,  10000,
+                                  30000, 100000, 300000, 1000000};  // ~10^2 .. 10^6, half-decade steps
+constexpr int kDefaultMaxBlocks = 10000;  // the rows above it (minutes to an hour each) run with a larger --max-blocks
 constexpr double kBlockStepBudget = 2e6;  // blocks x steps timed per scene: ~seconds at ~us per block-step
 constexpr int kMinScalingSteps = 200;     // enough steps for a mean even on the biggest scene
 constexpr int kMaxScalingSteps = 1000;    // small scenes: cap so the table stays quick
 constexpr double kRunoutLength = 180.0;   // m: the collapse's floor reaches 180 m beyond its 20 m column
+
+constexpr double kMaxWindow = 7.5;  // s: the paper's whole collapse run
 
 using Clock = std::chrono::steady_clock;
 
@@ -108,11 +124,14 @@ struct Options {
   Shape shape = Shape::kWide;
   int max_blocks = kDefaultMaxBlocks;
   std::string csv;
+  double window = 0.0;  // s of simulated time (--window); 0: not this mode
+  bool no_guards = false;
 };
 
 [[noreturn]] void usage(const char* argv0) {
   std::cerr << "usage: " << argv0
             << " [--steps N] [--warmup N] [--rounds N] [--scaling [--shape wide|column] [--max-blocks N] [--csv FILE]] [--skips]\n"
+            << "       [--window SECONDS [--no-guards]]\n"
             << "  --steps: timed steps of the collapse (the scaling runs take " << kBlockStepBudget
             << " / blocks steps, " << kMinScalingSteps << " to " << kMaxScalingSteps << ")\n";
   std::exit(2);
@@ -139,6 +158,12 @@ Options parse(int argc, char** argv) {
     else if (a == "--csv" && has_value) o.csv = argv[++i];
     else if (a == "--scaling") o.scaling = true;
     else if (a == "--skips") o.skips = true;
+    else if (a == "--no-guards") o.no_guards = true;
+    else if (a == "--window" && has_value) {
+      char* end = nullptr;
+      o.window = std::strtod(argv[++i], &end);
+      if (end == argv[i] || *end != '\0' || !(o.window > 0.0) || o.window > kMaxWindow) usage(argv[0]);
+    }
     else if (a == "--shape" && has_value) {
       const std::string s = argv[++i];
       if (s == "wide") o.shape = Shape::kWide;
@@ -677,9 +702,49 @@ int run_skips(const Options& o) {
 
 }  // namespace
 
+// ---------------------------------------------------------------------------
+// The instruction-count window.
+// ---------------------------------------------------------------------------
+
+// FNV-1a over every block's vertices and velocity DOFs: equal for two runs
+// whose states are equal bit for bit.
+std::uint64_t state_fingerprint(const dda::Simulation& sim) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const void* p, std::size_t n) {
+    const unsigned char* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  };
+  for (int i = 0; i < sim.block_count(); ++i) {
+    const dda::PolygonView p = sim.polygon_view(i);
+    mix(p.v, sizeof(dda::Vec2) * static_cast<std::size_t>(p.count));
+    mix(sim.velocity(i).data(), sizeof(double) * 6);
+  }
+  return h;
+}
+
+int run_window(const Options& o) {
+  dda::Scene s = dda::paper::collapse(kJointFrictionDeg).scene;
+  if (o.no_guards) {
+    s.guards.max_step_motion = DBL_MAX;
+    s.guards.max_balance_error = 0.0;
+    s.guards.max_energy_growth = DBL_MAX;  // must be positive; not checked with energy_check_every = 0
+    s.guards.energy_check_every = 0;
+    s.guards.max_penetration = 0.0;
+    s.guards.max_approach_energy = 0.0;
+  }
+  dda::Simulation sim(s);
+  sim.set_threads(1);
+  sim.advance_to(o.window);
+  std::printf("window %.3g s: %lld steps, %zu touching pairs at the end, guards %s, state fingerprint %016llx\n",
+              o.window, static_cast<long long>(sim.step_count()), sim.contacts().size(), o.no_guards ? "off" : "on",
+              static_cast<unsigned long long>(state_fingerprint(sim)));
+  return 0;
+}
+
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   try {
+    if (o.window > 0.0) return run_window(o);
     if (o.skips) return run_skips(o);
     return o.scaling ? run_scaling(o) : run_collapse(o);
   } catch (const std::exception& e) {
