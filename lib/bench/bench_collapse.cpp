@@ -27,9 +27,9 @@
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
-// --max-blocks 1000000: on to 3 x 10^5 and 10^6, about an hour on an idle
-// 2-core machine with the default warm-up, ~2 GB each for the 1- and
-// 2-thread simulations at 10^6 blocks); a table of blocks, pairs per step, us per step, ns per block-step
+// --max-blocks 1000000: on to 3 x 10^5 and 10^6, far longer, and at the
+// ~2.4 kB of heap per block measured at 10^5 blocks some 2.4 GB per
+// simulation at 10^6); a table of blocks, pairs per step, us per step, ns per block-step
 // and ns per candidate pair with 1 and 2 threads, and the fitted exponent p of
 // cost ~ blocks^p. --csv FILE also writes the table as CSV. Shapes:
 //   wide   (default) the collapse's 50 m height, width grown: every block sees
@@ -321,7 +321,7 @@ struct ThreadRuns {
   // steps per touching pair at the end (the contacts' state and buffers).
   double bytes_per_block = 0.0, growth_per_touching = 0.0;
   // Of it, the block geometry: the pooled vertices and normals and their
-  // offsets per block (Simulation::geometry_bytes_per_block; issue 25 item 3).
+  // offsets per block (Simulation::geometry_bytes_per_block).
   std::size_t geometry_per_block = 0;
 };
 
