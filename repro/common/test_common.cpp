@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>  // getpid
+
 #include "repro/common/common.hpp"
 #include "repro/common/options.hpp"
 
