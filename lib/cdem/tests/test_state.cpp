@@ -249,3 +249,57 @@ TEST_CASE("a truncated, inconsistent or other scene's state is refused, the mode
   bad.submodels.live.front().elems.front().n[1] = -1;
   refused(b, written(a.setup(), bad), "a sub-element's corner -1 is out of range");
 }
+
+namespace {
+
+// Steps `scene` until `ready` holds (within its duration), saves, restores
+// into a model built from the scene, runs both `more` steps and compares
+// every node's bits.
+template <class Ready>
+void check_round_trip(const CdemScene& scene, Ready ready, int more) {
+  Model a(scene);
+  while (!ready(a) && a.time() < scene.duration) a.step();
+  REQUIRE(ready(a));
+  Model b(scene);
+  restore(b, saved(a));
+  for (int k = 0; k < more; ++k) {
+    a.step();
+    b.step();
+  }
+  CHECK(differing_nodes(a, b) == 0);
+  CHECK(saved(a) == saved(b));
+}
+
+}  // namespace
+
+TEST_CASE("the penalty baseline's springs and a sliding clone are restored too", "[cdem][state]") {
+  SECTION("node-to-edge penalty contact, springs active") {
+    CdemOptions o;
+    o.contact = ContactMode::kNodeToEdgePenalty;
+    o.subdivision = false;
+    CdemScene s = two_squares(4, o);
+    s.duration = 0.6;
+    check_round_trip(s, [](const Model& m) { return m.penalty_contacts().size() >= 2; }, 400);
+  }
+  SECTION("Coulomb touch impact on an oblique face: the clone slides") {
+    for (SubdivisionMode mode : {SubdivisionMode::kSubModel, SubdivisionMode::kInPlace}) {
+      INFO((mode == SubdivisionMode::kSubModel ? "sub-model" : "in-place"));
+      CdemOptions o = options_of(mode);
+      o.touch_impact = TouchImpact::kCoulomb;
+      o.strength.friction_deg = 10.0;
+      CdemScene s = two_squares(2, o);
+      // A strikes B at 60 degrees from the face normal.
+      for (CdemBlock& b : s.blocks)
+        if (b.velocity.x != 0.0) b.velocity = {b.velocity.x, 1.7 * b.velocity.x};
+      s.duration = 1.0;
+      check_round_trip(
+          s,
+          [](const Model& m) {
+            for (const Clone& c : m.state().clones)
+              if (c.sliding) return true;
+            return false;
+          },
+          2000);
+    }
+  }
+}
