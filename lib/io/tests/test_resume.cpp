@@ -125,6 +125,21 @@ int stopped_run(const std::string& dir, const std::string& scene, int signal, st
 
 std::int64_t json_steps(const std::string& dir) { return json::parse(slurp(dir + "/run.json"))["steps"].get<std::int64_t>(); }
 
+// A run stopped in `dir` said where it stopped and how to go on, and its
+// run.json says "interrupted" before the end of the uninterrupted run in
+// `ref`: the step it stopped at.
+std::int64_t check_interrupted(const std::string& dir, const std::string& ref) {
+  const std::string msg = slurp(dir + ".log");
+  INFO(msg);
+  CHECK(msg.find("dda: interrupted at step ") != std::string::npos);
+  CHECK(msg.find("continue with: dda run --resume " + dir) != std::string::npos);
+  const json stopped = json::parse(slurp(dir + "/run.json"));
+  CHECK(stopped["status"] == "interrupted");
+  const std::int64_t at = stopped["steps"].get<std::int64_t>();
+  CHECK(at < json_steps(ref));
+  return at;
+}
+
 }  // namespace
 
 TEST_CASE("a run interrupted by SIGINT at a random step and resumed ends byte-identical", "[io][resume]") {
@@ -132,16 +147,8 @@ TEST_CASE("a run interrupted by SIGINT at a random step and resumed ends byte-id
   const std::string dir = scratch("resume_sigint");
   const std::string scene = column_scene();
   REQUIRE(stopped_run(dir, scene, SIGINT) == 130);
-  const std::string msg = slurp(dir + ".log");
-  INFO(msg);
   // Where it stopped, what it wrote, how to go on.
-  CHECK(msg.find("dda: interrupted at step ") != std::string::npos);
-  CHECK(msg.find("continue with: dda run --resume " + dir) != std::string::npos);
-  const json stopped = json::parse(slurp(dir + "/run.json"));
-  CHECK(stopped["status"] == "interrupted");
-  const std::int64_t at = stopped["steps"].get<std::int64_t>();
-  CHECK(at > 0);
-  CHECK(at < json_steps(ref));
+  CHECK(check_interrupted(dir, ref) > 0);
   CHECK(fs::exists(dir + "/checkpoint.dda"));
   CHECK(fs::exists(dir + "/timeseries.csv"));  // the output so far
   CHECK(fs::exists(dir + "/blocks.csv"));
@@ -304,15 +311,8 @@ TEST_CASE("a cdem run interrupted by SIGINT at a random step and resumed ends by
                         dir + "/timeseries.csv.tmp", SIGINT, delay);
   }
   REQUIRE(rc == 130);
-  const std::string msg = slurp(dir + ".log");
-  INFO(msg);
-  CHECK(msg.find("dda: interrupted at step ") != std::string::npos);
-  CHECK(msg.find("continue with: dda run --resume " + dir) != std::string::npos);
-  const json stopped = json::parse(slurp(dir + "/run.json"));
-  CHECK(stopped["status"] == "interrupted");
-  CHECK(stopped["model"] == "cdem");
-  const std::int64_t at = stopped["steps"].get<std::int64_t>();
-  CHECK(at < json_steps(ref));
+  const std::int64_t at = check_interrupted(dir, ref);
+  CHECK(json::parse(slurp(dir + "/run.json"))["model"] == "cdem");
   REQUIRE(fs::exists(dir + "/checkpoint.dda"));
   CHECK(fs::exists(dir + "/vtk/elements.pvd"));
   REQUIRE(run_cli({"run", "--resume", dir}, dir + "_resume.log") == 0);
