@@ -31,7 +31,9 @@
 #include <vector>
 
 #include "dda/cdem/model.hpp"
+#include "dda/cdem/mesh.hpp"
 #include "dda/state_bytes.hpp"
+#include "model_ops.hpp"
 
 namespace dda::cdem {
 
@@ -588,6 +590,8 @@ void check(ByteReader& r, const ModelSetup& su, const ModelState& st) {
     if (e.level != 0 && e.level != 1) r.fail("an element's level " + std::to_string(e.level) + " is neither 0 nor 1");
   }
   for (const Lattice& l : mesh.lattices) {
+    if (l.k < 1) ids.r.fail("a lattice's k " + std::to_string(l.k) + " is below 1");
+    ids.size(l.nodes.size(), static_cast<std::size_t>(lattice_count(l.k)), "a lattice's node list");
     ids.in(l.elem, ne, "a lattice's element");
     ids.all(l.nodes, n, "a lattice's node");
     ids.all(l.children, ne, "a lattice's element");
@@ -607,6 +611,7 @@ void check(ByteReader& r, const ModelSetup& su, const ModelState& st) {
     }
   ids.size(mesh.coarse_bedge_elem.size(), mesh.coarse_bedges.size(), "the coarse boundary's elements");
   ids.all(mesh.coarse_bedge_elem, ne, "a coarse boundary edge's element");
+  ids.size(mesh.block_bedges.size(), nb, "the blocks' boundary edge lists");
   for (const std::vector<int>& b : mesh.block_bedges) ids.all(b, mesh.bedges.size(), "a block's boundary edge");
   ids.all(mesh.bnodes, n, "a boundary node");
   for (const auto* list : {&mesh.coarse_elems, &mesh.fine_elems, &mesh.coarse_eval, &mesh.patch_eval})
@@ -780,11 +785,16 @@ ModelState read_state(ByteReader& r, const ModelSetup& su) {
   MeshState& mesh = st.mesh;
   get(r, mesh.elems);
   get(r, mesh.lattices);
+  // The edges and the touch counts in increasing key order (one state, one stream).
   const std::size_t edges = r.count(8);
+  std::uint64_t last_key = 0;
   for (std::size_t k = 0; k < edges; ++k) {
     const std::uint64_t key = r.u64();
-    if (!mesh.edges.emplace(key, MeshEdge{}).second) r.fail("an edge is listed twice");
-    get(r, mesh.edges[key]);
+    if (k > 0 && !(key > last_key)) r.fail("the edges are not in increasing key order");
+    last_key = key;
+    MeshEdge& e = mesh.edges[key];
+    get(r, e);
+    if (e.lo < 0 || e.hi < 0 || !(e.lo < e.hi) || edge_key(e.lo, e.hi) != key) r.fail("an edge's nodes do not match its key");
   }
   get(r, mesh.coarse_bedges);
   get(r, mesh.coarse_bedge_elem);
@@ -796,9 +806,12 @@ ModelState read_state(ByteReader& r, const ModelSetup& su) {
     get(r, *v);
   get(r, st.clones);
   const std::size_t touched = r.count(8);
+  int last_node = 0;
   for (std::size_t k = 0; k < touched; ++k) {
     const int node = r.i32();
-    if (!st.step_touch_count.emplace(node, r.i32()).second) r.fail("a node's touch count is listed twice");
+    if (k > 0 && !(node > last_node)) r.fail("the touch counts are not in increasing node order");
+    last_node = node;
+    st.step_touch_count.emplace(node, r.i32());
   }
   get(r, st.patches.k);
   get(r, st.patches.substeps);
