@@ -1,12 +1,48 @@
 """A simulation of a scene (Paper A's DDA blocks with the potential contact)."""
+import copy
+
 from . import _core
 from ._errors import SceneError
-from ._scene import load_scene
+from ._scene import Scene, load_scene
 
 __all__ = ["Simulation"]
 
 
-class Simulation(_core.Simulation):
+def _unpickle(cls, document, threads, state):
+    """A pickled simulation back: its scene from the document, its state restored."""
+    sim = cls.__new__(cls)
+    sim._build(Scene._from_document(*document), None, threads, document)
+    sim._restore_state(state)
+    return sim
+
+
+class _Copyable:
+    """copy.copy, copy.deepcopy and pickle of a simulation: a new simulation
+    of the same scene given the full state of this one (_save_state, the
+    library's save_state: the checkpoint's bytes). It continues with the
+    same bits as this one would."""
+
+    def _copy(self, scene):
+        state = self._save_state()  # first: RuntimeError while another thread steps
+        new = type(self).__new__(type(self))
+        new._build(scene, self.scene_file, self.threads, self._document)
+        new._restore_state(state)
+        return new
+
+    def __copy__(self):
+        """A simulation with this one's state and the same dda.Scene object."""
+        return self._copy(self.scene)
+
+    def __deepcopy__(self, memo):
+        """A simulation with this one's state and a copy of its dda.Scene."""
+        return self._copy(copy.deepcopy(self.scene, memo))
+
+    def __reduce__(self):
+        # The scene document as the simulation was made of it, the state bytes, the threads.
+        return _unpickle, (type(self), self._document, self.threads, self._save_state())
+
+
+class Simulation(_Copyable, _core.Simulation):
     """Explicit DDA of a scene, stepped from Python.
 
         sim = dda.Simulation(scene, threads=1)
@@ -22,6 +58,13 @@ class Simulation(_core.Simulation):
     that stops the run raises dda.SimulationError (reason, step, time,
     block, pair).
 
+    copy.copy(sim), copy.deepcopy(sim) and pickle give a simulation with
+    the full state of this one (blocks, contact and friction history, the
+    guards' and the energy budget's accumulators, the clock): it continues
+    with the same bits. A pickle holds the scene document, the state bytes
+    and the thread count. copy.copy shares the dda.Scene object,
+    copy.deepcopy copies it.
+
     State (one row per polygon: the scene's blocks, then one per boundary
     segment). These properties return COPIES, the caller's to keep:
       centroids (n, 2), velocities (n, 2), spins (n,), rotations (n,),
@@ -36,12 +79,18 @@ class Simulation(_core.Simulation):
 
     def __init__(self, scene, threads=1):
         scene = load_scene(scene)
-        scene_file = scene.scene_file
+        self._build(scene, scene.scene_file, threads, scene._document())
+
+    def _build(self, scene, scene_file, threads, document):
+        """Builds the C++ simulation of scene_file (None: the scene's); document: what a pickle keeps."""
         try:
-            super().__init__(scene_file, threads, scene._source)
+            if scene_file is None:
+                scene_file = scene.scene_file
+            _core.Simulation.__init__(self, scene_file, threads, scene._source)
         except _core.RawSceneError as e:
             raise SceneError.from_library(str(e), scene._source, positions=False) from None
         self.scene = scene
+        self._document = document
 
     def run(self, until=None, every=1, callback=None):
         """Steps until time + dt/2 >= until (default: the scene's duration),
