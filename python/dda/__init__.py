@@ -14,9 +14,9 @@ SceneError, SimulationError   the library's errors, with their fields
 from ._core import Contacts, Energy, timeseries_header, format_number
 from ._errors import SceneError, SimulationError
 from ._scene import JointSet, Scene, load_scene
-from ._simulation import Simulation
+from ._simulation import CdemSimulation, Simulation
 from . import kernel
 from ._sweep import SweepTable, sweep, seed_of
 
-__all__ = ["Scene", "JointSet", "load_scene", "Simulation", "Energy", "Contacts", "SceneError", "SimulationError",
+__all__ = ["Scene", "JointSet", "load_scene", "Simulation", "CdemSimulation", "Energy", "Contacts", "SceneError", "SimulationError",
            "kernel", "sweep", "SweepTable", "seed_of", "timeseries_header", "format_number"]

@@ -402,9 +402,11 @@ void bind_simulation(py::module_& m) {
           }, py::arg("tracked"),
           "The row `dda run` writes to timeseries.csv for these scene blocks (see timeseries_header).");
 
-  m.def("timeseries_header", [](const std::vector<int>& tracked) { return io::timeseries_header(tracked); },
-        py::arg("tracked"),
-        "Column names of `dda run`'s timeseries.csv for these scene blocks.");
+  m.def("timeseries_header",
+        [](const std::vector<int>& tracked, bool rotation) { return io::timeseries_header(tracked, rotation); },
+        py::arg("tracked"), py::arg("rotation") = true,
+        "Column names of `dda run`'s timeseries.csv for these scene blocks; rotation=False: without\n"
+        "each block's rot and spin (Paper B's model, dda.CdemSimulation).");
   m.def("format_number", &io::format_number, "Shortest decimal text that reads back to the same double.");
 
   m.def(

@@ -66,14 +66,20 @@ class PyStepped {
       ~Done() { b.store(false, std::memory_order_release); }
     } done{busy_};
     py::gil_scoped_release release;
-    if (until == kNoEnd) {
-      stepper_->advance(count);
-      return count;
+    try {
+      if (until == kNoEnd) {
+        stepper_->advance(count);
+        return count;
+      }
+      const double half = 0.5 * stepper_->dt();
+      std::int64_t k = 0;
+      for (; k < count && stepper_->time() + half < until; ++k) stepper_->step();
+      return k;
+    } catch (const SceneError& e) {
+      // A limit of the scene found only in a step (the CDEM model's at a
+      // touch): the run stops there, as `dda run` reports it.
+      throw SimulationError(e.what());
     }
-    const double half = 0.5 * stepper_->dt();
-    std::int64_t k = 0;
-    for (; k < count && stepper_->time() + half < until; ++k) stepper_->step();
-    return k;
   }
 
   // Up to `total` steps, and none once time() + dt/2 >= until, in chunks of
