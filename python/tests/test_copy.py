@@ -2,7 +2,9 @@
 copy.deepcopy and pickle mid-run continue with the same bits as the
 original; the comparison sees one step of difference; a state that does not
 fit is refused; a copy while another thread steps is refused."""
+import concurrent.futures
 import copy
+import multiprocessing
 import pickle
 import threading
 import time
@@ -11,6 +13,7 @@ import numpy as np
 import pytest
 
 import dda
+from copy_cases import step_and_send_back
 
 
 def toppling_stack(n=5, friction_deg=25.0):
@@ -81,6 +84,17 @@ def test_a_copy_continues_with_the_same_bits(mid_run, how):
     # They are two simulations: stepping one leaves the other.
     twin.step()
     assert original.step_count == 5000
+
+
+def test_a_pickle_continues_in_another_process(mid_run):
+    # What a sweep fanning out from one prepared state does: the pickle goes
+    # to a spawned process, steps there, and comes back with the same bits.
+    original = copy.copy(mid_run)
+    with concurrent.futures.ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
+        there = pool.submit(step_and_send_back, original, 1500).result(timeout=300)
+    original.step(1500)
+    assert there.step_count == original.step_count == 4500
+    assert differing(original, there) == []
 
 
 def test_the_comparison_sees_one_step(mid_run):
