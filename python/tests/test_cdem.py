@@ -3,8 +3,12 @@
 account, momentum, the touch of the two prisms, guard stops."""
 import copy
 import json
+import os
 import pickle
+import signal
 import subprocess
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -155,6 +159,33 @@ def test_run_stops_where_dda_run_stops_and_calls_back(scenes_dir):
     sim.step(3)
     sim.step()
     assert sim.step_count == 25
+
+
+def test_ctrl_c_stops_a_long_run_and_leaves_the_simulation_usable(scenes_dir):
+    sim = dda.Simulation(prisms(scenes_dir))
+    sent = []
+
+    def interrupt():
+        sent.append(time.perf_counter())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(0.3, interrupt)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            sim.run(until=1e5)  # 2e8 steps
+        caught = time.perf_counter()
+    finally:
+        timer.cancel()
+    print(f"Ctrl-C to KeyboardInterrupt: {(caught - sent[0]) * 1e3:.1f} ms after {sim.step_count} steps")
+    assert 0 < sim.time < 1e3 and caught - sent[0] < 2.0
+    # Usable, in the state of a run that was never interrupted.
+    n = sim.step_count
+    sim.step(7)
+    ref = dda.Simulation(prisms(scenes_dir))
+    ref.step(n + 7)
+    assert np.array_equal(ref.node_positions, sim.node_positions)
+    assert np.array_equal(ref.node_velocities, sim.node_velocities)
 
 
 def test_a_guard_stop_is_a_simulation_error(scenes_dir):
