@@ -154,19 +154,7 @@ void bind_cdem(py::module_& m) {
   py::class_<PyCdem> c(m, "CdemSimulation");
   c.def(py::init<std::shared_ptr<io::SceneFile>, int, const std::string&>(), py::arg("scene_file"),
         py::arg("threads") = 1, py::arg("label") = "<scene>")
-      // --- stepping ---
-      .def(
-          "step",
-          [](PyCdem& s, std::int64_t n) {
-            if (n == 1) {
-              s.advance_released(1);
-              return;
-            }
-            if (n < 0) throw py::value_error("step: n must be >= 0");
-            s.run_steps(py::none(), n, PyStepped::kNoEnd, 1, py::none());
-          },
-          py::arg("n") = 1,
-          "Advances n steps (GIL released; Ctrl-C stops a long call between steps with KeyboardInterrupt).")
+      // --- stepping (and step(n): bind_stepping) ---
       .def(
           "_run",
           [](py::object self, double until, std::int64_t every, py::object callback) {
@@ -185,10 +173,6 @@ void bind_cdem(py::module_& m) {
                              "Critical step of the coarse mesh, 2 / omega_max of M^-1 K, s.")
       .def_property_readonly("element_critical_dt", [](const PyCdem& s) { return s.read().element_critical_dt(); },
                              "The element bound min_e 2 / omega_max(e), s.")
-      .def_property_readonly("scene_file", &PyCdem::file_ptr)
-      // --- the full state (copy and pickle: dda/_simulation.py) ---
-      .def("_save_state", &PyCdem::save_state)
-      .def("_restore_state", &PyCdem::restore_state, py::arg("state"))
       // --- blocks ---
       .def_property_readonly("block_count", [](const PyCdem& s) { return s.read().block_count(); })
       .def_property_readonly(
@@ -421,22 +405,8 @@ void bind_cdem(py::module_& m) {
             a.mutable_at(0) = p.x, a.mutable_at(1) = p.y;
             return a;
           },
-          "(2,) momentum of the moving blocks, kg m/s per m.")
-      .def(
-          "timeseries_row",
-          [](const PyCdem& s, const std::vector<int>& tracked) {
-            const Stepper& st = s.stepper();
-            for (int i : tracked)
-              if (i < 0 || i >= st.block_count()) throw py::index_error("tracked block out of range");
-            py::list row;
-            for (const io::CsvValue& v : io::timeseries_row(st, tracked)) {
-              if (v.is_integer) row.append(py::int_(v.integer));
-              else row.append(py::float_(v.number));
-            }
-            return row;
-          },
-          py::arg("tracked"),
-          "The row `dda run` writes to timeseries.csv (see timeseries_header(tracked, rotation=False)).");
+          "(2,) momentum of the moving blocks, kg m/s per m.");
+  bind_stepping(c);
 }
 
 }  // namespace dda::py_bindings

@@ -231,19 +231,7 @@ void bind_simulation(py::module_& m) {
   py::class_<PySimulation> c(m, "Simulation");
   c.def(py::init<std::shared_ptr<io::SceneFile>, int, const std::string&>(), py::arg("scene_file"),
         py::arg("threads") = 1, py::arg("label") = "<scene>")
-      // --- stepping ---
-      .def(
-          "step",
-          [](PySimulation& s, std::int64_t n) {
-            if (n == 1) {
-              s.advance_released(1);  // the short path: no clock, no chunks
-              return;
-            }
-            if (n < 0) throw py::value_error("step: n must be >= 0");
-            s.run_steps(py::none(), n, PyStepped::kNoEnd, 1, py::none());
-          },
-          py::arg("n") = 1,
-          "Advances n steps (GIL released; Ctrl-C stops a long call between steps with KeyboardInterrupt).")
+      // --- stepping (and step(n): bind_stepping) ---
       .def(
           "_run",
           [](py::object self, double until, std::int64_t every, py::object callback) {
@@ -266,12 +254,6 @@ void bind_simulation(py::module_& m) {
                              [](const PySimulation& s) { return s.read().predicted_critical_step(); })
       .def("critical_time_step", [](const PySimulation& s) { return s.read().critical_time_step(); },
            "2 / omega_max bound with the current contacts, s.")
-      .def_property_readonly("scene_file", &PySimulation::file_ptr)
-      // --- the full state (copy and pickle: dda/_simulation.py) ---
-      .def("_save_state", &PySimulation::save_state,
-           "The full state as bytes (Simulation::save_state): what a copy or a pickle holds.")
-      .def("_restore_state", &PySimulation::restore_state, py::arg("state"),
-           "Restores _save_state's bytes into a simulation of the same scene (ValueError if they do not fit).")
       // --- sizes ---
       .def_property_readonly("block_count", [](const PySimulation& s) { return s.read().block_count(); },
                              "Polygons: the scene's blocks, then one per boundary segment.")
@@ -387,20 +369,8 @@ void bind_simulation(py::module_& m) {
            [](const py::object& self) {
              return state_view<3>(self, [](const Simulation& s, int i) { return &s.stress(i)[0]; });
            },
-           "(n, 3) stresses as a READ-ONLY VIEW (see velocity_dofs_view).")
-      // --- dda run's time-series row ---
-      .def("timeseries_row", [](const PySimulation& s, const std::vector<int>& tracked) {
-            const Simulation& sim = s.read();
-            for (int i : tracked)
-              if (i < 0 || i >= sim.scene_block_count()) throw py::index_error("tracked block out of range");
-            py::list row;
-            for (const io::CsvValue& v : io::timeseries_row(s.stepper(), tracked)) {
-              if (v.is_integer) row.append(py::int_(v.integer));
-              else row.append(py::float_(v.number));
-            }
-            return row;
-          }, py::arg("tracked"),
-          "The row `dda run` writes to timeseries.csv for these scene blocks (see timeseries_header).");
+           "(n, 3) stresses as a READ-ONLY VIEW (see velocity_dofs_view).");
+  bind_stepping(c);
 
   m.def("timeseries_header",
         [](const std::vector<int>& tracked, bool rotation) { return io::timeseries_header(tracked, rotation); },

@@ -26,6 +26,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "dda/io/run.hpp"
 #include "dda/io/scene_file.hpp"
 #include "dda/state_bytes.hpp"
 #include "dda/stepper.hpp"
@@ -143,5 +144,43 @@ class PyStepped {
   std::unique_ptr<Stepper> stepper_;  // set by the derived class's constructor
   std::atomic<bool> busy_{false};
 };
+
+// The methods both simulation classes bind alike: step(n), the time-series
+// row of `dda run`, the scene file, the state bytes of copy and pickle.
+template <class T>
+void bind_stepping(py::class_<T>& c) {
+  c.def(
+       "step",
+       [](T& s, std::int64_t n) {
+         if (n == 1) {
+           s.advance_released(1);  // the short path: no clock, no chunks
+           return;
+         }
+         if (n < 0) throw py::value_error("step: n must be >= 0");
+         s.run_steps(py::none(), n, PyStepped::kNoEnd, 1, py::none());
+       },
+       py::arg("n") = 1,
+       "Advances n steps (GIL released; Ctrl-C stops a long call between steps with KeyboardInterrupt).")
+      .def(
+          "timeseries_row",
+          [](const T& s, const std::vector<int>& tracked) {
+            const Stepper& st = s.stepper();
+            for (int i : tracked)
+              if (i < 0 || i >= st.block_count()) throw py::index_error("tracked block out of range");
+            py::list row;
+            for (const io::CsvValue& v : io::timeseries_row(st, tracked)) {
+              if (v.is_integer) row.append(py::int_(v.integer));
+              else row.append(py::float_(v.number));
+            }
+            return row;
+          },
+          py::arg("tracked"),
+          "The row `dda run` writes to timeseries.csv for these scene blocks (see timeseries_header).")
+      .def_property_readonly("scene_file", &T::file_ptr)
+      // The full state (copy and pickle: dda/_simulation.py).
+      .def("_save_state", &T::save_state, "The full state as bytes: what a copy or a pickle holds.")
+      .def("_restore_state", &T::restore_state, py::arg("state"),
+           "Restores _save_state's bytes into a simulation of the same scene (ValueError if they do not fit).");
+}
 
 }  // namespace dda::py_bindings

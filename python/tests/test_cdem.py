@@ -3,17 +3,14 @@
 account, momentum, the touch of the two prisms, guard stops."""
 import copy
 import json
-import os
 import pickle
-import signal
 import subprocess
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import dda
+from stepping_helpers import interrupted_run
 
 
 def python_run_csv(scene_path):
@@ -163,22 +160,8 @@ def test_run_stops_where_dda_run_stops_and_calls_back(scenes_dir):
 
 def test_ctrl_c_stops_a_long_run_and_leaves_the_simulation_usable(scenes_dir):
     sim = dda.Simulation(prisms(scenes_dir))
-    sent = []
-
-    def interrupt():
-        sent.append(time.perf_counter())
-        os.kill(os.getpid(), signal.SIGINT)
-
-    timer = threading.Timer(0.3, interrupt)
-    timer.start()
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            sim.run(until=1e5)  # 2e8 steps
-        caught = time.perf_counter()
-    finally:
-        timer.cancel()
-    print(f"Ctrl-C to KeyboardInterrupt: {(caught - sent[0]) * 1e3:.1f} ms after {sim.step_count} steps")
-    assert 0 < sim.time < 1e3 and caught - sent[0] < 2.0
+    latency = interrupted_run(sim, 1e5)  # 2e8 steps
+    assert 0 < sim.time < 1e3 and latency < 2.0
     # Usable, in the state of a run that was never interrupted.
     n = sim.step_count
     sim.step(7)

@@ -6,14 +6,13 @@ import concurrent.futures
 import copy
 import multiprocessing
 import pickle
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import dda
 from copy_cases import step_and_send_back
+from stepping_helpers import refused_while_stepping
 
 
 def toppling_stack(n=5, friction_deg=25.0):
@@ -133,31 +132,8 @@ def test_a_state_that_does_not_fit_is_refused(mid_run):
 
 def test_a_copy_while_another_thread_steps_is_refused():
     sim = dda.Simulation(toppling_stack(n=2))
-    started, stop = threading.Event(), threading.Event()
-
-    def callback(s):
-        started.set()
-        if stop.is_set():
-            raise StopIteration
-
-    t = threading.Thread(target=lambda: pytest.raises(StopIteration, sim.run, until=1e3, every=100,
-                                                      callback=callback))
-    t.start()
-    started.wait(10)
-    refused = {"copy": 0, "deepcopy": 0, "pickle": 0}
-    for _ in range(4000):
-        for how, call in (("copy", copy.copy), ("deepcopy", copy.deepcopy), ("pickle", pickle.dumps)):
-            try:
-                call(sim)
-            except RuntimeError as e:
-                assert "stepping in another thread" in str(e)
-                refused[how] += 1
-        if min(refused.values()) >= 2:
-            break
-        time.sleep(0.0002)
-    stop.set()
-    t.join(10)
-    assert not t.is_alive()
+    refused = refused_while_stepping(sim, {"copy": copy.copy, "deepcopy": copy.deepcopy, "pickle": pickle.dumps},
+                                     enough=2)
     assert min(refused.values()) >= 2, refused
     twin = copy.copy(sim)  # once it stopped, a copy is made
     assert differing(sim, twin) == []

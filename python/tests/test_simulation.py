@@ -1,15 +1,12 @@
 """Simulations stepped from Python: the same bits as `dda run`, state copies
 and read-only views, guard stops, contacts, Ctrl-C, the GIL."""
-import os
-import signal
 import subprocess
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import dda
+from stepping_helpers import interrupted_run, refused_while_stepping
 
 
 def python_run_csv(scene_path, threads=1):
@@ -209,22 +206,7 @@ def test_a_guard_stop_is_a_simulation_error_with_its_fields():
 def test_ctrl_c_stops_a_long_run_and_leaves_the_simulation_usable():
     sim = dda.Simulation(two_squares(gap=0.3))
     until = 1e5  # a billion steps: about an hour
-    sent = []
-
-    def interrupt():
-        sent.append(time.perf_counter())
-        os.kill(os.getpid(), signal.SIGINT)
-
-    timer = threading.Timer(0.3, interrupt)
-    timer.start()
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            sim.run(until=until)
-        caught = time.perf_counter()
-    finally:
-        timer.cancel()
-    latency = caught - sent[0]
-    print(f"Ctrl-C to KeyboardInterrupt: {latency * 1e3:.1f} ms after {sim.step_count} steps")
+    latency = interrupted_run(sim, until)
     assert 0 < sim.time < 0.01 * until
     # A sanity bound far above the chunk's 2 ms (speed is measured by
     # python/bench/bench_step_overhead.py, not here): the run did stop.
@@ -257,31 +239,8 @@ def test_the_gil_is_released_while_stepping():
     # stepping thread does not hold the GIL (and the call is refused rather
     # than reading a state in motion).
     sim = dda.Simulation(two_squares(gap=0.3))
-    started, stop = threading.Event(), threading.Event()
-
-    def callback(s):
-        started.set()
-        if stop.is_set():
-            raise StopIteration
-
-    t = threading.Thread(target=lambda: pytest.raises(StopIteration, sim.run, until=1e3, every=100,
-                                                      callback=callback))
-    t.start()
-    started.wait(10)
-    refused = 0
-    for _ in range(2000):
-        try:
-            sim.centroids
-        except RuntimeError as e:
-            assert "stepping in another thread" in str(e)
-            refused += 1
-        if refused >= 3:
-            break
-        time.sleep(0.0005)
-    stop.set()
-    t.join(10)
-    assert not t.is_alive()
-    assert refused >= 3
+    refused = refused_while_stepping(sim, {"centroids": lambda s: s.centroids})
+    assert refused["centroids"] >= 3
     sim.step()  # usable afterwards
 
 
