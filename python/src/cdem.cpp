@@ -207,15 +207,6 @@ void bind_cdem(py::module_& m) {
                                   [&](std::size_t b) { return md.block_mass(static_cast<int>(b)); });
           },
           "(n,) block masses, kg/m (copy).")
-      .def_property_readonly("outline_count", [](const PyCdem& s) { return s.read().block_count(); })
-      .def(
-          "outline",
-          [](const PyCdem& s, int b) {
-            const Model& md = s.read();
-            if (b < 0 || b >= md.block_count()) throw py::index_error("block index out of range");
-            return vertices_array(md.block_outline(b));
-          },
-          py::arg("block"), "(m, 2) block's outline vertices now, counter-clockwise (copy).")
       // --- nodes and elements ---
       .def_property_readonly("node_count", [](const PyCdem& s) { return s.read().node_count(); })
       .def_property_readonly(

@@ -176,6 +176,17 @@ void bind_stepping(py::class_<T>& c) {
           },
           py::arg("tracked"),
           "The row `dda run` writes to timeseries.csv for these scene blocks (see timeseries_header).")
+      .def_property_readonly("outline_count", [](const T& s) { return s.stepper().outline_count(); },
+                             "Outlines of `dda run`'s snapshots: the scene's blocks, then (penalty model) the\n"
+                             "boundary polygons.")
+      .def(
+          "outline",
+          [](const T& s, int i) {
+            const Stepper& st = s.stepper();
+            if (i < 0 || i >= st.outline_count()) throw py::index_error("outline index out of range");
+            return vertices_array(st.outline(i));
+          },
+          py::arg("i"), "(m, 2) outline i's vertices now, counter-clockwise (copy): a row of `dda run`'s snapshots.")
       .def_property_readonly("scene_file", &T::file_ptr)
       // The full state (copy and pickle: dda/_simulation.py).
       .def("_save_state", &T::save_state, "The full state as bytes: what a copy or a pickle holds.")

@@ -10,41 +10,7 @@ import numpy as np
 import pytest
 
 import dda
-from stepping_helpers import interrupted_run
-
-
-def python_run_csv(scene_path):
-    """timeseries.csv and snapshots.csv as `dda run` writes them for a cdem
-    scene, from a Python run: its loop (lib/io/src/run.cpp) with run()."""
-    scene = dda.Scene.from_file(scene_path)
-    f = scene.scene_file
-    sim = dda.Simulation(scene)
-    tracked = f.tracked_blocks
-    ts = [",".join(dda.timeseries_header(tracked, rotation=False))]
-    snap = ["time,step,block,vertex,x,y"]
-    fmt = dda.format_number
-    times, next_snap = f.snapshot_times, [0]
-
-    def row(s):
-        ts.append(",".join(str(v) if isinstance(v, int) else fmt(v) for v in s.timeseries_row(tracked)))
-
-    def snapshots(s):
-        while next_snap[0] < len(times) and times[next_snap[0]] <= s.time + 0.5 * s.dt:
-            for b in range(s.outline_count):
-                for k, (x, y) in enumerate(s.outline(b)):
-                    snap.append(f"{fmt(s.time)},{s.step_count},{b},{k},{fmt(x)},{fmt(y)}")
-            next_snap[0] += 1
-
-    row(sim)
-    snapshots(sim)
-
-    def each_step(s):
-        if s.step_count % f.output_every == 0 or not (s.time + 0.5 * s.dt < f.duration):
-            row(s)
-        snapshots(s)
-
-    sim.run(every=1, callback=each_step)
-    return "\n".join(ts) + "\n", "\n".join(snap) + "\n", sim
+from stepping_helpers import interrupted_run, python_run_csv
 
 
 def prisms(scenes_dir, **change):

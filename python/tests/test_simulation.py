@@ -6,44 +6,7 @@ import numpy as np
 import pytest
 
 import dda
-from stepping_helpers import interrupted_run, refused_while_stepping
-
-
-def python_run_csv(scene_path, threads=1):
-    """timeseries.csv and snapshots.csv as `dda run` writes them, from a
-    Python run: its loop (lib/io/src/run.cpp) with dda.Simulation.run."""
-    scene = dda.Scene.from_file(scene_path)
-    f = scene.scene_file
-    sim = dda.Simulation(scene, threads=threads)
-    tracked = f.tracked_blocks
-    ts = [",".join(dda.timeseries_header(tracked))]
-    snap = ["time,step,block,vertex,x,y"]
-    fmt = dda.format_number
-    times, next_snap = f.snapshot_times, [0]
-
-    def row(s):
-        ts.append(",".join(str(v) if isinstance(v, int) else fmt(v) for v in s.timeseries_row(tracked)))
-
-    def snapshots(s):
-        while next_snap[0] < len(times) and times[next_snap[0]] <= s.time + 0.5 * s.dt:
-            v, o = s.vertices, s.vertex_offsets
-            for b in range(s.block_count):
-                for k in range(o[b + 1] - o[b]):
-                    x, y = v[o[b] + k]
-                    snap.append(f"{fmt(s.time)},{s.step_count},{b},{k},{fmt(x)},{fmt(y)}")
-            next_snap[0] += 1
-
-    row(sim)
-    snapshots(sim)
-    last = [None]
-
-    def each_step(s):
-        if s.step_count % f.output_every == 0 or not (s.time + 0.5 * s.dt < f.duration):
-            row(s)
-        snapshots(s)
-
-    sim.run(every=1, callback=each_step)
-    return "\n".join(ts) + "\n", "\n".join(snap) + "\n", sim
+from stepping_helpers import interrupted_run, python_run_csv, refused_while_stepping
 
 
 @pytest.mark.parametrize("name,threads", [("drop_on_ground.json", 1), ("incline.json", 2)])
@@ -120,8 +83,10 @@ def test_state_arrays_have_one_row_per_polygon(scenes_dir):
     assert sim.fixed[nb:].all() and (sim.masses[nb:] == 0).all()
     o = sim.vertex_offsets
     assert o.shape == (n + 1,) and sim.vertices.shape == (o[-1], 2)
+    assert sim.outline_count == n
     for i in range(n):
         assert np.array_equal(sim.polygon(i), sim.vertices[o[i]:o[i + 1]])
+        assert np.array_equal(sim.outline(i), sim.polygon(i))  # what dda run's snapshots write
     v0, o0 = sim.scene.block_vertices()
     assert np.array_equal(v0, sim.vertices[:o[nb]]) and np.array_equal(o0, o[:nb + 1])
 
