@@ -142,8 +142,10 @@ class CdemSimulation(_Stepped, _core.CdemSimulation):
     run(until, every, callback), time, step_count, dt, the GIL, Ctrl-C and
     other threads as dda.Simulation; a guard or a contact that cannot be
     resolved raises dda.SimulationError (ContactError's node and depth as
-    attributes node, depth). Copying and pickling are refused (TypeError)
-    while Paper B's model cannot save its state.
+    attributes node, depth). copy.copy, copy.deepcopy and pickle hold the
+    full state (nodes, mesh, clones, sub-models or patches, the energy
+    ledger, the touch log, the clock: Model::save_state) and continue with
+    the same bits, as for dda.Simulation.
 
     State, COPIES:
       per block: positions (n, 2) mass-weighted mean node position,

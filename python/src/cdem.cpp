@@ -52,13 +52,10 @@ class PyCdem final : public PyStepped {
   }
 
  private:
-  void save(ByteWriter&) const override {
-    throw py::type_error(
-        "a dda.CdemSimulation cannot be copied or pickled: Paper B's model cannot save its state in this build");
-  }
-  void restore(ByteReader&) override {
-    throw py::type_error("a dda.CdemSimulation cannot restore a saved state in this build");
-  }
+  // The full state (Model::save_state): nodes, mesh, clones, sub-models,
+  // the energy ledger, the contact log, the clock.
+  void save(ByteWriter& out) const override { model_->save_state(out); }
+  void restore(ByteReader& in) override { model_->restore_state(in); }
 
   Model* model_ = nullptr;  // stepper_'s model
 };

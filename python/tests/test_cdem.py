@@ -1,6 +1,7 @@
 """Paper B's model from Python (dda.CdemSimulation): the same bits as
 `dda run`, the mesh read-outs against the scene's geometry, the energy
-account, momentum, the touch of the two prisms, guard stops."""
+account, momentum, the touch of the two prisms, guard stops, Ctrl-C, and
+copies and pickles in contact that continue with the same bits."""
 import copy
 import json
 import pickle
@@ -159,8 +160,85 @@ def test_scene_errors_and_threads(scenes_dir):
     assert type(dda.CdemSimulation(prisms(scenes_dir))) is dda.CdemSimulation
 
 
-def test_a_cdem_simulation_cannot_be_copied_yet(scenes_dir):
+def cdem_state_bytes(sim):
+    """Every state read-out of a dda.CdemSimulation, as raw bytes by name."""
+    out = {name: np.ascontiguousarray(getattr(sim, name)).tobytes()
+           for name in ("positions", "velocities", "displacements", "masses", "node_positions", "node_velocities",
+                        "node_masses", "node_blocks", "node_kinds", "momentum")}
+    out["elements"] = sim.elements().tobytes()
+    out["element_stresses"] = sim.element_stresses().tobytes()
+    for table in ("clones", "touches", "separations", "slips", "submodels"):
+        for k, v in getattr(sim, table)().items():
+            out[f"{table}.{k}"] = np.asarray(v).tobytes()
+    out["energy"] = np.array(list(sim.energy().as_dict().values())).tobytes()
+    out["energy_account"] = np.array(list(sim.energy_account().values())).tobytes()
+    out["clock"] = np.array([sim.time, sim.step_count, sim.contact_count, sim.live_submodels]).tobytes()
+    return out
+
+
+def cdem_differing(a, b):
+    sa, sb = cdem_state_bytes(a), cdem_state_bytes(b)
+    return sorted(k for k in sa if sa[k] != sb[k])
+
+
+def prisms_variant(scenes_dir, variant):
+    """The two prisms with Sect. 5 as written (the file), refined in place,
+    with a Coulomb impact at an angle, or the node-to-edge penalty baseline."""
+    d = prisms(scenes_dir)
+    if variant == "in_place":
+        d["cdem"]["subdivision_mode"] = "in_place"
+    elif variant == "coulomb":
+        d["cdem"]["touch_impact"] = "coulomb"
+        d["cdem"]["strength"] = {"friction_deg": 10}
+        d["blocks"][0]["velocity"] = [3.0, 1.5]
+    elif variant == "penalty_baseline":
+        d["cdem"] = {"contact": "node_to_edge_penalty", "divisions": 2}
+    return d
+
+
+@pytest.mark.parametrize("variant", ["submodel", "in_place", "coulomb", "penalty_baseline"])
+@pytest.mark.parametrize("how", ["copy", "deepcopy", "pickle"])
+def test_a_copy_in_contact_continues_with_the_same_bits(scenes_dir, variant, how):
+    original = dda.Simulation(prisms_variant(scenes_dir, variant))
+    original.run(until=0.3338)  # in contact: the clone and the refined elements are state
+    assert original.contact_count >= 1
+    if variant in ("submodel", "coulomb"):
+        assert original.live_submodels == 1
+    if variant == "in_place":
+        assert (original.node_kinds == "fine").any()
+    if how == "copy":
+        twin = copy.copy(original)
+    elif how == "deepcopy":
+        twin = copy.deepcopy(original)
+    else:
+        twin = pickle.loads(pickle.dumps(original))
+    assert type(twin) is dda.CdemSimulation and twin.scene == original.scene
+    assert cdem_differing(original, twin) == []
+    original.run(until=0.45)
+    twin.run(until=0.45)
+    assert twin.step_count == original.step_count == 900
+    assert cdem_differing(original, twin) == []
+    assert original.timeseries_row([0, 1]) == twin.timeseries_row([0, 1])
+
+
+def test_the_cdem_comparison_sees_one_step(scenes_dir):
+    # Negative control: the same comparison finds a copy one step ahead.
     sim = dda.Simulation(prisms(scenes_dir))
-    for call in (copy.copy, copy.deepcopy, pickle.dumps):
-        with pytest.raises(TypeError, match="cannot be copied or pickled"):
-            call(sim)
+    sim.run(until=0.3338)
+    a, b = copy.copy(sim), copy.copy(sim)
+    b.step()
+    assert {"node_positions", "node_velocities", "energy_account", "clock"} <= set(cdem_differing(a, b))
+    a.step()
+    assert cdem_differing(a, b) == []
+
+
+def test_a_cdem_state_that_does_not_fit_is_refused(scenes_dir):
+    sim = dda.Simulation(prisms(scenes_dir))
+    sim.run(until=0.3338)
+    state = sim._save_state()
+    with pytest.raises(ValueError, match="truncated"):
+        dda.Simulation(prisms(scenes_dir))._restore_state(state[:len(state) // 2])
+    finer = prisms(scenes_dir)
+    finer["cdem"]["divisions"] = 3
+    with pytest.raises(ValueError, match="another scene"):
+        dda.Simulation(finer)._restore_state(state)
