@@ -296,7 +296,7 @@ struct ThreadRuns {
   // steps per touching pair at the end (the contacts' state and buffers).
   double bytes_per_block = 0.0, growth_per_touching = 0.0;
   // Of it, the block geometry: the pooled vertices and normals and their
-  // offsets per block (Simulation::geometry_bytes_per_block; issue 25 item 3).
+  // offsets per block (Simulation::geometry_bytes_per_block).
   std::size_t geometry_per_block = 0;
 };
 

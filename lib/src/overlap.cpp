@@ -407,7 +407,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
     in_label = out_label;
     std::swap(out_ring, spare_ring);
   }
-  // Bevels at the contact's sharp corners (issue 26). Every vertex left is
+  // Bevels at the contact's sharp corners. Every vertex left is
   // within tol of every edge line of the contact (a vertex within tol of a
   // line is kept where it is, and crossing points are convex combinations of
   // such vertices), but near a corner of interior angle theta the points
@@ -473,7 +473,7 @@ struct OverlapAndClip {
     std::uint32_t lines = 0;
     const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness);
     if (state != OverlapState::kOverlapping) return state;
-    // One verdict from one computation (issue 26): the separating-axis test
+    // One verdict from one computation: the separating-axis test
     // says the interiors overlap by more than tol along every axis, yet the
     // clipper may leave fewer than 3 vertices (a sliver thinner than tol,
     // e.g. a needle's tip deep in a block far from the origin, whose

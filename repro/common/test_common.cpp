@@ -1,7 +1,6 @@
 // Unit tests of the driver helpers: atomic CSV, non-finite refusal, claims
 // quoting, --out parsing, command-line checks.
-#define CATCH_CONFIG_MAIN
-#include <catch2/catch.hpp>
+#include <catch2/catch.hpp>  // main(): Catch2::Catch2WithMain (CMakeLists.txt)
 
 #include <cmath>
 #include <filesystem>

@@ -35,7 +35,7 @@ enum class OverlapState { kSeparate, kTouching, kOverlapping };
 // A and B overlap iff a0 lies inside E(A,B) (Table 2) by more than tol AND
 // the intersection polygon (A the contact, B the target) is not empty: one
 // verdict from one computation, the same as overlap_and_intersection's, so
-// kOverlapping always comes with an IP of >= 3 vertices (issue 26: a sharp
+// kOverlapping always comes with an IP of >= 3 vertices (a sharp
 // wedge deep in a block at offset 1e9 overlaps by far more than tol along
 // every axis, yet the exact intersection is a sliver thinner than tol).
 // a0 on E's boundary (within tol) is touching: boundaries meet, interiors
@@ -57,7 +57,7 @@ inline bool overlaps(const PolygonView& a, const PolygonView& b) {
 // tol at most (a 30-degree corner), or 4.1 tol with the round-off of the
 // distances (a few eps C, < tol / 16) added to tol; 4.5 with margin. Holds
 // at any angle and offset (checked against CGAL's exact kernel by
-// property_tests, issue 26).
+// property_tests).
 inline constexpr double kIpVertexReach = 4.5;
 // Bound on the IP's area error, in units of (n + m) tol D (dimensionless;
 // see intersection_polygon): the boundary moves by at most tol per vertex
