@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import dda
+from sweep_cases import first_touch, prisms_at
 from stepping_helpers import interrupted_run, python_run_csv
 
 
@@ -242,3 +243,12 @@ def test_a_cdem_state_that_does_not_fit_is_refused(scenes_dir):
     finer["cdem"]["divisions"] = 3
     with pytest.raises(ValueError, match="another scene"):
         dda.Simulation(finer)._restore_state(state)
+
+
+def test_a_sweep_runs_paper_b_model(scenes_dir):
+    # Local worker processes run the cdem scene: the 1 m gap closes at 1 / speed.
+    params = [{"speed": 2.0}, {"speed": 4.0}, {"speed": 3000.0}]
+    t = dda.sweep(prisms_at, params, first_touch, until=0.6, workers=2)
+    assert [r["error"] for r in t[:2]] == [None, None]
+    assert [r["touch_time"] for r in t[:2]] == pytest.approx([0.5, 0.25], rel=1e-12)
+    assert t[2]["error"].startswith("SimulationError (area_collapsed)")
