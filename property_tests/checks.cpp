@@ -93,7 +93,7 @@ std::string check_overlap(const Points& a, const Points& b, std::string* contact
   if (std::isnan(t.sigma)) return "exact reference: area > 0 and 'origin inside B - A' disagree";
   const double band = tol::kVerdictBand * tol;
   const dda::OverlapState ab = dda::overlap_state(pa, pb), ba = dda::overlap_state(pb, pa);
-  // One verdict from one computation (issue 26): kOverlapping iff the
+  // One verdict from one computation: kOverlapping iff the
   // intersection polygon is not empty, in either order.
   for (int order = 0; order < 2; ++order) {
     const Polygon& c = order == 0 ? pa : pb;

@@ -12,7 +12,7 @@
 //                      touching for an exact overlap whose intersection
 //                      shrunk by kSandwich tol is empty (a sliver); and
 //                      kOverlapping iff overlap_and_intersection's IP is
-//                      not empty, in both orders (issue 26).
+//                      not empty, in both orders.
 //  check_entrance      entrance_block(A,B,a0) vs the exact conv{b_j - a_i + a0}
 //                      (Hausdorff), its edge lines support it, its normals are
 //                      unit and outward, and every edge obeys the pair rule.
@@ -22,7 +22,7 @@
 //                      no edge <= tol; exact sandwich P_in(t) within IP within
 //                      P_out(t); the two orders within Hausdorff H(P_out, P_in);
 //                      every vertex within dda::kIpVertexReach tol of both
-//                      inputs (Euclidean, issue 26); area within
+//                      inputs (Euclidean); area within
 //                      dda::kIpAreaBound (n + m) tol D (overlap.hpp).
 //                      validate_polygon is deliberately not required of an IP:
 //                      its block thresholds (edges >= 1e-9 of the diameter,

@@ -171,8 +171,8 @@ double draw_angle() {
 }
 
 // An offset coordinate for a polygon of size `size`: 0, of its size, up to
-// 1e6 absolute (the families before issue 26; capped at 1e9 times the size
-// for tiny blocks), or "far": 1e6 .. 1e9 times its size (issue 26: offsets
+// 1e6 absolute (the first families; capped at 1e9 times the size
+// for tiny blocks), or "far": 1e6 .. 1e9 times its size (offsets
 // up to 1e9 relative to the block size).
 double draw_offset_coordinate(double size) {
   const double sign = draw_chance(1, 2) ? 1.0 : -1.0;
@@ -184,7 +184,7 @@ double draw_offset_coordinate(double size) {
   }
 }
 
-// A scale: 1, 0.1 .. 10, or (issue 26) tiny (1e-6 .. 1e-4) or huge
+// A scale: 1, 0.1 .. 10, or tiny (1e-6 .. 1e-4) or huge
 // (1e4 .. 1e6) blocks.
 double draw_scale(std::string& family) {
   switch (draw_index(0, 6)) {
@@ -223,7 +223,7 @@ Points apply_similarity(const Similarity& s, const Points& p) {
 // A gap along a contact normal: 0 (exact contact) or +-1e-16 .. 1e-2 of size.
 // A gap along a contact normal: 0 (exact contact), +-1e-16 .. 1e-2 of size,
 // or a deep penetration of 1e-2 .. 0.5 of size (a needle's tip deep in the
-// other block: issue 26's wedge against a square).
+// other block: the wedge against a square).
 double draw_gap(double size, std::string& family) {
   switch (draw_index(0, 6)) {
     case 0: case 1: case 2: family += " gap=0"; return 0.0;
@@ -347,7 +347,7 @@ PairCase edge_edge(Points a, std::string family) {
   return {a, b, "edge-edge " + family};
 }
 
-// Edges crossing at a small angle (issue 26): B's edge laid along A's edge
+// Edges crossing at a small angle: B's edge laid along A's edge
 // i (B outside it), then turned by +-1e-6 .. 2e-2 rad about a point of that
 // edge (or of the edge moved by a gap, for near-parallel edges that cross
 // or just miss): a sliver of overlap on one side of the crossing.
@@ -371,7 +371,7 @@ PairCase crossing(Points a, std::string family) {
   return {a, moved(similar(placed, 1.0, angle, pivot), g * u), "crossing " + family};
 }
 
-// A shared vertex with collinear edges (issue 26): B's edge k starts at A's
+// A shared vertex with collinear edges: B's edge k starts at A's
 // vertex i (bit for bit) and runs along A's edge i, in the same sense (both
 // interiors on the same side: an overlap along a collinear edge) or, turned
 // by pi, along the extension of A's edge i - 1 ... edge i (B beside A).

@@ -9,7 +9,7 @@
 //    thin        rectangle / parallelogram of aspect ratio 1 .. 1e6 (edges down to 1e-6 of the size)
 //    cornercut   a polygon with one or two corners cut by an edge of 1e-6 .. 1e-2 of its size
 //    grid        convex hull of points of a coarse dyadic grid (exact collinearities between polygons)
-//    needle      a triangle or kite with a sharp corner of 1e-6 .. 0.3 rad (issue 26)
+//    needle      a triangle or kite with a sharp corner of 1e-6 .. 0.3 rad
 //  then a similarity: scale 1, 0.1 .. 10, tiny (1e-6 .. 1e-4) or huge (1e4 ..
 //  1e6) (or 2^-4 .. 2^4), rotation 0, down to 1e-12 rad, or any, and a
 //  translation of 0, of the size, up to 1e6, or far: 1e6 .. 1e9 times the size.
@@ -19,7 +19,7 @@
 //  copy shifted by 1e-16 .. 1 of its size; vertex on vertex; vertex on edge;
 //  edge on edge (the same two vertices, or a partial collinear edge); one
 //  polygon scaled inside the other (about an interior point or a shared
-//  vertex, factor 1e-3 .. 1 +- 1e-15); two grid hulls; (issue 26) crossing:
+//  vertex, factor 1e-3 .. 1 +- 1e-15); two grid hulls; crossing:
 //  an edge of B along an edge of A turned by +-1e-6 .. 2e-2 rad about a point
 //  of it, at gap 0 or +-1e-16 .. 1e-3 (near-parallel edges that cross or just
 //  miss); shared-vertex: B's edge starting at A's vertex bit for bit, along

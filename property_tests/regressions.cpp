@@ -31,8 +31,8 @@ TEST_CASE("regression: inscribed_circle of a sliver at offset 1e6 is not 0", "[r
 }
 
 // Found by property "overlap verdict vs exact contact" once its check
-// required kOverlapping to come with an intersection polygon (issue 26;
-// seed 20240611, 10,000 cases, after 109): two thin rectangles (aspect
+// required kOverlapping to come with an intersection polygon (seed
+// 20240611, 10,000 cases, after 109): two thin rectangles (aspect
 // 1e-3..1e-6) one inside the other at y = 4e7. The separating-axis test
 // found an overlap deeper than tol along every axis, while the clipper's
 // sliver (thinner than tol) was cleaned to nothing: "overlapping" with no
@@ -55,7 +55,7 @@ TEST_CASE("regression: overlapping never comes with an empty intersection polygo
 }
 
 // Found by property "IP area, convexity, sandwich and CP/TP symmetry vs
-// exact" once it checked Euclidean distances (issue 26; seed 20240611,
+// exact" once it checked Euclidean distances (seed 20240611,
 // after 271): a sliver triangle (huge, ~2e4 m) along the edge of another.
 // A vertex of IP(TP, CP) lay 12.5 tol from TP, the contact there: within
 // tol of both edge lines at TP's sharp corner, tol / sin(theta / 2) from
@@ -76,7 +76,7 @@ TEST_CASE("regression: IP vertices stay within kIpVertexReach tol of a sharp con
 }
 
 // Found by property "exit distance and inscribed circle" with the tiny-block
-// family (issue 26; seed 20240611, after 660): a rectangle 1e-6 m long and
+// family (seed 20240611, after 660): a rectangle 1e-6 m long and
 // 1e-12 m wide at x = 8192, where the coordinate spacing is 1.8e-12 m. Every
 // triple's centre lies 5e-13 m from a short edge, rounds onto it, and has
 // exit distance 0: the radius came back 0 at (0, 0). Fixed in

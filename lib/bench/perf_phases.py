@@ -6,7 +6,7 @@ function, from `perf record -e cpu-clock`) on standard input or from a file,
 and sums the functions into the step's phases (lib/src/simulation/step.cpp
 lists them in order). Functions the compiler inlined count for their caller:
 the pair loop's own line holds the bookkeeping it inlines. Used by
-`make profile` (issue 25: profile first, write down where the time goes per
+`make profile` (profile first, write down where the time goes per
 phase before and after a change).
 
 Usage: perf report ... | perf_phases.py [--title TEXT]

@@ -43,7 +43,7 @@ const char* const kUsage =
     "                            steps on one thread.\n"
     "      --checkpoint-every T  write DIR/checkpoint.dda every T s of simulated time\n"
     "      --checkpoint-wall S   ... and/or every S s of wall-clock time (both\n"
-    "                            override the scene's \"checkpoint\"; penalty model)\n"
+    "                            override the scene's \"checkpoint\"; either model)\n"
     "      --vtk                 also a ParaView series: DIR/vtk/blocks.pvd (penalty\n"
     "                            model: blocks as polygons with velocity, spin,\n"
     "                            stress, ...) or DIR/vtk/elements.pvd (cdem model:\n"
@@ -60,7 +60,7 @@ const char* const kUsage =
     "                            scene's output section, --vtk-every overrides its\n"
     "                            vtk_every.\n"
     "      On SIGINT or SIGTERM the run finishes its current step, writes a\n"
-    "      checkpoint (penalty model) and the output so far, and exits 130.\n"
+    "      checkpoint and the output so far, and exits 130.\n"
     "  dda run --resume DIR [SCENE.json] [--threads N] [--checkpoint-every T]\n"
     "          [--checkpoint-wall S] [--quiet] [--max-steps N]\n"
     "      Continue the run whose checkpoint DIR holds, to the end: the outputs\n"
@@ -320,9 +320,6 @@ int cmd_run(const std::vector<std::string>& args) {
                        a.scene_path + " is a cdem scene)");
   if (file.model == dda::io::ContactModel::kCdem && a.threads > 1)
     return usage_error("run: --threads: the cdem model (" + a.scene_path + ") steps on one thread");
-  if (file.model == dda::io::ContactModel::kCdem && (a.checkpoint.every > 0.0 || a.checkpoint.every_wall > 0.0))
-    return usage_error("run: --checkpoint-every/--checkpoint-wall: checkpoints hold the penalty model's state; the "
-                       "cdem model's (" + a.scene_path + ") cannot be saved yet");
 
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -364,7 +361,7 @@ int cmd_run(const std::vector<std::string>& args) {
           std::cerr << " and the checkpoint " << r.checkpoint_path << "; continue with: dda run --resume " << out_dir
                     << "\n";
         else
-          std::cerr << "; no checkpoint (the cdem model's state cannot be saved yet)\n";
+          std::cerr << "; no checkpoint\n";
         return kInterrupted;
     }
   } catch (const dda::io::CheckpointError& e) {

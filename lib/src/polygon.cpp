@@ -131,7 +131,7 @@ PolygonCheck validate_polygon(const Vec2* p, int count) {
   // (a convex polygon listed backwards: reversing it fixes it). Turns both
   // ways are non-convex whatever the total turning: a bow tie (edges that
   // cross) turns right, right, left, left... and totals 0, and a concave
-  // polygon in clockwise order is no better when reversed (issue 26: a bow
+  // polygon in clockwise order is no better when reversed (a bow
   // tie was labelled clockwise).
   if (first_left < 0 && first_right >= 0 && first_straight < 0) {
     if (turning < -2.0 * kPi - kWindingSlack) return {PolygonFault::kNonConvex, 0};  // winds twice, clockwise

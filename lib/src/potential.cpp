@@ -72,7 +72,7 @@ InscribedCircle inscribed_circle(PolygonView poly) {
   // coordinate spacing at its offset, or the optimum is a plateau whose
   // ends are not representable: a rectangle 1e-12 m wide at x = 8192
   // (spacing 1.8e-12 m) has its tangent circles' centres 5e-13 m from the
-  // short edges. Issue 26: this returned r = 0 at (0, 0), a point far from
+  // short edges. This returned r = 0 at (0, 0), a point far from
   // the polygon. Now the vertex mean (a point of the polygon: on the
   // plateau's middle line for the rectangle), with its exit distance when
   // positive, else r = 0 there (the error callers test).

@@ -67,7 +67,7 @@ double distance_to(const Polygon& p, Vec2 q) {
 }
 }  // namespace
 
-// Issue 26: a needle (corner of theta = 1e-4 rad) as the contact, its tip
+// A needle (corner of theta = 1e-4 rad) as the contact, its tip
 // inside a diamond whose corner lies d = 0.4 tol / sin(theta / 2) (~8000
 // tol) beyond the tip on the needle's axis: within 0.4 tol of both of the
 // needle's edge lines, so the clipper kept that corner as an IP vertex,
@@ -98,7 +98,7 @@ TEST_CASE("IP vertices stay near a needle's tip (bevel)", "[overlap]") {
   CHECK(area(ip) == Approx(0.5 * 2 * h).epsilon(1e-6));  // the whole needle is inside the diamond
 }
 
-// Issue 26: a needle (1e-6 rad) with its tip 0.5 deep in a square, both at
+// A needle (1e-6 rad) with its tip 0.5 deep in a square, both at
 // an offset of 1e9. Along every axis the overlap is far deeper than tol
 // (1.4e-5), but the exact intersection is a sliver at most 5e-7 wide: the
 // clipper leaves no polygon. The verdict was kOverlapping with an empty IP;

@@ -173,7 +173,7 @@ TEST_CASE("the one-pass geometry matches normals, moments, bounds and edges one 
   }
 }
 
-// Issue 26: a self-intersecting quadrilateral turns both ways with a total
+// A self-intersecting quadrilateral turns both ways with a total
 // turning of 0; when the right turns outweighed (three right, one left) it
 // was labelled clockwise, which reversing cannot fix. (Of 100,000 random
 // crossed quadrilaterals in [-1, 1]^2, 26,082 were "clockwise" before the
@@ -194,7 +194,7 @@ TEST_CASE("a bow tie is non-convex, not clockwise", "[polygon]") {
   CHECK(fault_of({{0, 2}, {2, 2}, {2, 0}, {1, 0.5}, {0, 0}}) == PolygonFault::kNonConvex);
 }
 
-// Issue 26: coordinates of 1e308 were "duplicate vertex (zero-length edge)"
+// Coordinates of 1e308 were "duplicate vertex (zero-length edge)"
 // (the edge lengths overflow to infinity); they have their own reason.
 TEST_CASE("coordinates whose area moments overflow are kOverflow", "[polygon]") {
   CHECK(fault_of({{0, 0}, {1e308, 0}, {0, 1e308}}) == PolygonFault::kOverflow);
@@ -210,7 +210,7 @@ TEST_CASE("coordinates whose area moments overflow are kOverflow", "[polygon]") 
   CHECK(m.area > 0.0);
 }
 
-// Issue 26: the header said 'diameter' where the code uses the bounding
+// The header said 'diameter' where the code uses the bounding
 // box's larger side; they now agree (the box side).
 TEST_CASE("geometric_tolerance scales with the bounding box side", "[polygon]") {
   // A right triangle with legs 1: diameter sqrt(2), box side 1.
@@ -220,7 +220,7 @@ TEST_CASE("geometric_tolerance scales with the bounding box side", "[polygon]") 
   CHECK(geometric_tolerance(p) != kRoundoffUlps * DBL_EPSILON * (1.0 + diameter(p)));
 }
 
-// Issue 26: blocks are limited to kMaxBlockVertices = 16. A block cut from a
+// Blocks are limited to kMaxBlockVertices = 16. A block cut from a
 // convex region of r edges by k joint sets has at most r + 2 k edges; no
 // generated scene comes near the limit, and a piece that would exceed it is
 // refused by generate_blocks. The error for a scene file's block says why.

@@ -104,7 +104,7 @@ TEST_CASE("each bisector ray is where its two edge lines are equally far, from d
   CHECK(virtual_rays == 6);  // three small edges, each in both modes
 }
 
-// Issue 26: a triangle a few units of the coordinate spacing wide (at 1e6 the
+// A triangle a few units of the coordinate spacing wide (at 1e6 the
 // spacing is 1.16e-10 m) has no centre with a positive exit distance: every
 // candidate rounds onto the grid. inscribed_circle returned r = 0 at (0, 0),
 // 1.4e6 m away; now r = 0 at a point of the polygon (the error callers test).

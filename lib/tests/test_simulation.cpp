@@ -427,7 +427,7 @@ TEST_CASE("friction update: continuous sliding is the same with either rule (Sec
 }
 
 
-// Issue 25 item 3: the simulation pools its blocks' geometry by vertex
+// The simulation pools its blocks' geometry by vertex
 // count and its kernels read it through PolygonView. The pool's view and a
 // view of a Polygon value with the same vertices and normals give the same
 // bits, and polygon(i) hands back the scene's block after 0 steps.

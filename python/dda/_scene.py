@@ -94,6 +94,19 @@ class Scene:
         return s
 
     @classmethod
+    def _from_document(cls, text, source, max_steps):
+        """The scene of _document(): its JSON text, the source that labels its
+        messages and the step limit it was read with (validated)."""
+        s = cls.__new__(cls)
+        s._doc, s._source, s._read_max_steps, s._file = json.loads(text), source, int(max_steps), None
+        s.check()
+        return s
+
+    def _document(self):
+        """(JSON text, source, max_steps): what _from_document makes the same scene of (a simulation keeps it for pickling)."""
+        return self.to_json(), self._source, self._read_max_steps
+
+    @classmethod
     def from_dict(cls, d, max_steps=None):
         """Validates a scene given as a dict of the file's keys (messages start with "<scene>")."""
         s = cls.__new__(cls)

@@ -45,6 +45,7 @@ void register_errors(py::module_& m);
 
 void bind_scene(py::module_& m);
 void bind_simulation(py::module_& m);
+void bind_cdem(py::module_& m);
 void bind_kernel(py::module_& m);
 
 }  // namespace dda::py_bindings

@@ -2,10 +2,12 @@
 // simulation and contact kernel bound with pybind11. The package dda
 // (python/dda/) re-exports it with the pure-Python parts (scene building,
 // errors, sweeps). Thin: every computation is the C++ library's.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "bindings.hpp"
+#include "dda/cdem/records.hpp"
 #include "dda/io/scene_file.hpp"
 #include "dda/simulation.hpp"
 
@@ -85,6 +87,19 @@ void register_errors(py::module_& m) {
       raw(e.what());
     } catch (const SceneError& e) {
       raw(e.what());
+    } catch (const cdem::ContactError& e) {
+      // Paper B's model: a contact it cannot resolve (node, its block, the other block).
+      const py::object cls = py::module_::import("dda._errors").attr("SimulationError");
+      const py::object pair = e.block >= 0 && e.other_block >= 0
+                                  ? py::object(py::make_tuple(std::min(e.block, e.other_block),
+                                                              std::max(e.block, e.other_block)))
+                                  : py::object(py::none());
+      const py::object block = e.block >= 0 ? py::object(py::int_(e.block)) : py::object(py::none());
+      const py::object err = cls(e.what(), py::arg("reason") = reason_name(e.reason), py::arg("step") = e.step,
+                                 py::arg("time") = e.time, py::arg("block") = block, py::arg("pair") = pair);
+      err.attr("node") = e.node;
+      err.attr("depth") = e.depth;
+      PyErr_SetObject(cls.ptr(), err.ptr());
     } catch (const SimulationError& e) {
       // dda.SimulationError(message, reason=, step=, time=, block=, pair=).
       const py::object cls = py::module_::import("dda._errors").attr("SimulationError");
@@ -110,6 +125,7 @@ PYBIND11_MODULE(_core, m) {
   b::register_errors(m);
   b::bind_scene(m);
   b::bind_simulation(m);
+  b::bind_cdem(m);
   py::module_ kernel = m.def_submodule("kernel", "The contact kernel of Paper A on numpy polygons.");
   b::bind_kernel(kernel);
 }

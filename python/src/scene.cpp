@@ -35,6 +35,8 @@ void bind_scene(py::module_& m) {
   c.def("write_json", [](const SceneFile& f) { return io::write_scene(f); },
         "The scene as JSON text with every block's vertices written out (io::write_scene).")
       .def_property_readonly("name", [](const SceneFile& f) { return f.scene.name; })
+      .def_property_readonly("model", [](const SceneFile& f) { return std::string(io::model_name(f.model)); },
+                             "The contact model: \"penalty\" (Paper A) or \"cdem\" (Paper B).")
       .def_property_readonly("block_count", [](const SceneFile& f) { return f.scene.blocks.size(); },
                              "Blocks of the scene, listed then generated (boundaries not counted).")
       .def_property_readonly("boundary_count", [](const SceneFile& f) { return f.scene.boundaries.size(); })

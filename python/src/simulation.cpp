@@ -1,19 +1,9 @@
-// _core.Simulation: dda::Simulation stepped from Python, its state as numpy
-// arrays. dda.Simulation (dda/_simulation.py) derives from it.
-//
-// Stepping releases the GIL. A long step(n) or run() goes in chunks of
-// whole steps sized to take about kSignalCheckSeconds of wall time each;
-// between chunks it takes the GIL back to check for signals (Ctrl-C raises
-// KeyboardInterrupt there, after a whole step: the simulation stays
-// usable) and to call the callback. The chunks do not change the result:
-// n steps give the same bits whether run as one advance or as many.
-//
-// While a step runs without the GIL, another Python thread's call on the
-// same simulation raises RuntimeError instead of reading a state in motion.
+// _core.Simulation: Paper A's model (dda::Simulation) stepped from Python,
+// its state as numpy arrays. dda.Simulation (dda/_simulation.py) derives
+// from it. Stepping, the GIL and other threads: stepping.hpp.
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,19 +14,13 @@
 #include "dda/io/scene_file.hpp"
 #include "dda/simulation.hpp"
 #include "dda/stepper.hpp"
+#include "stepping.hpp"
 
 namespace dda::py_bindings {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Wall time between two signal checks in a long run, s: Ctrl-C is seen
-// within this plus one step (well inside the 0.1 s a user waits; a check costs a
-// GIL round trip, ~1 us, so 2 ms keeps it below 0.1 % of the run).
-constexpr double kSignalCheckSeconds = 0.002;
-// Largest chunk, steps (a cap on the adaptive size; any value gives the same bits).
-constexpr std::int64_t kMaxChunk = std::int64_t{1} << 20;
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -56,14 +40,18 @@ std::int64_t steps_until(const Simulation& s, double until) {
   return k - now;
 }
 
-class PySimulation {
+class PySimulation final : public PyStepped {
  public:
-  PySimulation(std::shared_ptr<io::SceneFile> file, int threads, const std::string& label) : file_(std::move(file)) {
+  PySimulation(std::shared_ptr<io::SceneFile> file, int threads, const std::string& label) : PyStepped(std::move(file)) {
     if (threads < 1) throw py::value_error("threads: must be >= 1");
+    if (file_->model != io::ContactModel::kPenalty)
+      throw py::value_error(label + ": model: \"" + io::model_name(file_->model) +
+                            "\": Paper B's model runs in dda.CdemSimulation (dda.Simulation makes one for such a scene)");
     {
       py::gil_scoped_release release;  // a settle (damping.settle_time) may take long
-      stepper_ = std::make_unique<dda::SimulationStepper>(Simulation(file_->scene));
-      sim_ = &stepper_->simulation();
+      auto s = std::make_unique<SimulationStepper>(Simulation(file_->scene));
+      sim_ = &s->simulation();
+      stepper_ = std::move(s);
     }
     // As `dda run`: with dt_fraction > 0 the step count is known only now.
     io::check_step_count(*file_, sim_->dt(), label);
@@ -72,61 +60,21 @@ class PySimulation {
 
   // The simulation for reading (RuntimeError while another thread steps it).
   const Simulation& read() const {
-    if (busy_.load(std::memory_order_acquire)) throw std::runtime_error(kBusy);
+    check_idle();
     return *sim_;
   }
   Simulation& write() {
-    if (busy_.load(std::memory_order_acquire)) throw std::runtime_error(kBusy);
+    check_idle();
     return *sim_;
-  }
-  const dda::Stepper& stepper() const {
-    (void)read();
-    return *stepper_;
-  }
-  const io::SceneFile& file() const { return *file_; }
-  std::shared_ptr<io::SceneFile> file_ptr() const { return file_; }
-
-  // `count` steps without the GIL (the caller holds it).
-  void advance_released(std::int64_t count) {
-    if (busy_.exchange(true, std::memory_order_acq_rel)) throw std::runtime_error(kBusy);
-    struct Done {
-      std::atomic<bool>& b;
-      ~Done() { b.store(false, std::memory_order_release); }
-    } done{busy_};
-    py::gil_scoped_release release;
-    sim_->advance(count);
-  }
-
-  // `total` steps in chunks of about kSignalCheckSeconds: signals checked
-  // between chunks; callback(self) after each step whose count is a
-  // multiple of `every` and after the last one.
-  std::int64_t run_steps(const py::object& self, std::int64_t total, std::int64_t every, const py::object& callback) {
-    std::int64_t done = 0, chunk = 1;
-    const bool call = !callback.is_none();
-    while (done < total) {
-      std::int64_t m = std::min(chunk, total - done);
-      if (call) m = std::min(m, every - sim_->step_count() % every);
-      const Clock::time_point t0 = Clock::now();
-      advance_released(m);
-      const double el = seconds(Clock::now() - t0);
-      done += m;
-      if (call && (sim_->step_count() % every == 0 || done == total)) callback(self);
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-      // The next chunk: about kSignalCheckSeconds at this chunk's pace.
-      const double per_step = el / static_cast<double>(m);
-      const double want = per_step > 0.0 ? kSignalCheckSeconds / per_step : static_cast<double>(kMaxChunk);
-      chunk = std::max<std::int64_t>(1, std::min<std::int64_t>({kMaxChunk, 2 * m, static_cast<std::int64_t>(want)}));
-    }
-    return done;
   }
 
  private:
-  static constexpr const char* kBusy = "the simulation is stepping in another thread";
-  std::shared_ptr<io::SceneFile> file_;
-  // The simulation behind the stepping interface that `dda run`'s outputs read.
-  std::unique_ptr<dda::SimulationStepper> stepper_;
+  // The full state (Simulation::save_state): blocks, near pairs with their
+  // contact and friction history, the guards' and budget's accumulators, the clock.
+  void save(ByteWriter& out) const override { sim_->save_state(out); }
+  void restore(ByteReader& in) override { sim_->restore_state(in); }
+
   Simulation* sim_ = nullptr;  // stepper_'s simulation
-  std::atomic<bool> busy_{false};
 };
 
 // The live state as a read-only (n, cols) view: `first` points at block 0's
@@ -283,22 +231,13 @@ void bind_simulation(py::module_& m) {
   py::class_<PySimulation> c(m, "Simulation");
   c.def(py::init<std::shared_ptr<io::SceneFile>, int, const std::string&>(), py::arg("scene_file"),
         py::arg("threads") = 1, py::arg("label") = "<scene>")
-      // --- stepping ---
-      .def(
-          "step",
-          [](PySimulation& s, std::int64_t n) {
-            if (n == 1) return s.advance_released(1);  // the short path: no clock, no chunks
-            if (n < 0) throw py::value_error("step: n must be >= 0");
-            s.run_steps(py::none(), n, 1, py::none());
-          },
-          py::arg("n") = 1,
-          "Advances n steps (GIL released; Ctrl-C stops a long call between steps with KeyboardInterrupt).")
+      // --- stepping (and step(n): bind_stepping) ---
       .def(
           "_run",
           [](py::object self, double until, std::int64_t every, py::object callback) {
             PySimulation& s = self.cast<PySimulation&>();
             if (every < 1) throw py::value_error("every: must be >= 1");
-            return s.run_steps(self, steps_until(s.read(), until), every, callback);
+            return s.run_steps(self, steps_until(s.read(), until), PyStepped::kNoEnd, every, callback);
           },
           py::arg("until"), py::arg("every"), py::arg("callback"))
       .def_property_readonly("time", [](const PySimulation& s) { return s.read().time(); }, "Simulated time, s.")
@@ -315,7 +254,6 @@ void bind_simulation(py::module_& m) {
                              [](const PySimulation& s) { return s.read().predicted_critical_step(); })
       .def("critical_time_step", [](const PySimulation& s) { return s.read().critical_time_step(); },
            "2 / omega_max bound with the current contacts, s.")
-      .def_property_readonly("scene_file", &PySimulation::file_ptr)
       // --- sizes ---
       .def_property_readonly("block_count", [](const PySimulation& s) { return s.read().block_count(); },
                              "Polygons: the scene's blocks, then one per boundary segment.")
@@ -431,24 +369,14 @@ void bind_simulation(py::module_& m) {
            [](const py::object& self) {
              return state_view<3>(self, [](const Simulation& s, int i) { return &s.stress(i)[0]; });
            },
-           "(n, 3) stresses as a READ-ONLY VIEW (see velocity_dofs_view).")
-      // --- dda run's time-series row ---
-      .def("timeseries_row", [](const PySimulation& s, const std::vector<int>& tracked) {
-            const Simulation& sim = s.read();
-            for (int i : tracked)
-              if (i < 0 || i >= sim.scene_block_count()) throw py::index_error("tracked block out of range");
-            py::list row;
-            for (const io::CsvValue& v : io::timeseries_row(s.stepper(), tracked)) {
-              if (v.is_integer) row.append(py::int_(v.integer));
-              else row.append(py::float_(v.number));
-            }
-            return row;
-          }, py::arg("tracked"),
-          "The row `dda run` writes to timeseries.csv for these scene blocks (see timeseries_header).");
+           "(n, 3) stresses as a READ-ONLY VIEW (see velocity_dofs_view).");
+  bind_stepping(c);
 
-  m.def("timeseries_header", [](const std::vector<int>& tracked) { return io::timeseries_header(tracked); },
-        py::arg("tracked"),
-        "Column names of `dda run`'s timeseries.csv for these scene blocks.");
+  m.def("timeseries_header",
+        [](const std::vector<int>& tracked, bool rotation) { return io::timeseries_header(tracked, rotation); },
+        py::arg("tracked"), py::arg("rotation") = true,
+        "Column names of `dda run`'s timeseries.csv for these scene blocks; rotation=False: without\n"
+        "each block's rot and spin (Paper B's model, dda.CdemSimulation).");
   m.def("format_number", &io::format_number, "Shortest decimal text that reads back to the same double.");
 
   m.def(

@@ -28,3 +28,20 @@ def slide(sim, p):
     if p.get("bad_measure"):
         raise KeyError("no such output")
     return {"slide": float(sim.displacements[0, 0]), "vx": float(sim.velocities[0, 0])}
+
+
+def prisms_at(p, rng):
+    """The two prisms of Paper B (repro/scenes/two_prisms.json, the cdem
+    model) with block i at p["speed"] m/s."""
+    import json
+    import pathlib
+    scenes = pathlib.Path(os.environ.get("DDA_SCENES_DIR", pathlib.Path(__file__).resolve().parents[2] / "repro" /
+                                         "scenes"))
+    d = json.loads((scenes / "two_prisms.json").read_text())
+    d["blocks"][0]["velocity"] = [p["speed"], 0.0]
+    return d
+
+
+def first_touch(sim, p):
+    t = sim.touches()["time"]
+    return {"touch_time": float(t[0]) if len(t) else None, "px": float(sim.momentum[0])}

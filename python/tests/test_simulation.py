@@ -1,52 +1,12 @@
 """Simulations stepped from Python: the same bits as `dda run`, state copies
 and read-only views, guard stops, contacts, Ctrl-C, the GIL."""
-import os
-import signal
 import subprocess
-import threading
-import time
 
 import numpy as np
 import pytest
 
 import dda
-
-
-def python_run_csv(scene_path, threads=1):
-    """timeseries.csv and snapshots.csv as `dda run` writes them, from a
-    Python run: its loop (lib/io/src/run.cpp) with dda.Simulation.run."""
-    scene = dda.Scene.from_file(scene_path)
-    f = scene.scene_file
-    sim = dda.Simulation(scene, threads=threads)
-    tracked = f.tracked_blocks
-    ts = [",".join(dda.timeseries_header(tracked))]
-    snap = ["time,step,block,vertex,x,y"]
-    fmt = dda.format_number
-    times, next_snap = f.snapshot_times, [0]
-
-    def row(s):
-        ts.append(",".join(str(v) if isinstance(v, int) else fmt(v) for v in s.timeseries_row(tracked)))
-
-    def snapshots(s):
-        while next_snap[0] < len(times) and times[next_snap[0]] <= s.time + 0.5 * s.dt:
-            v, o = s.vertices, s.vertex_offsets
-            for b in range(s.block_count):
-                for k in range(o[b + 1] - o[b]):
-                    x, y = v[o[b] + k]
-                    snap.append(f"{fmt(s.time)},{s.step_count},{b},{k},{fmt(x)},{fmt(y)}")
-            next_snap[0] += 1
-
-    row(sim)
-    snapshots(sim)
-    last = [None]
-
-    def each_step(s):
-        if s.step_count % f.output_every == 0 or not (s.time + 0.5 * s.dt < f.duration):
-            row(s)
-        snapshots(s)
-
-    sim.run(every=1, callback=each_step)
-    return "\n".join(ts) + "\n", "\n".join(snap) + "\n", sim
+from stepping_helpers import interrupted_run, python_run_csv, refused_while_stepping
 
 
 @pytest.mark.parametrize("name,threads", [("drop_on_ground.json", 1), ("incline.json", 2)])
@@ -123,8 +83,10 @@ def test_state_arrays_have_one_row_per_polygon(scenes_dir):
     assert sim.fixed[nb:].all() and (sim.masses[nb:] == 0).all()
     o = sim.vertex_offsets
     assert o.shape == (n + 1,) and sim.vertices.shape == (o[-1], 2)
+    assert sim.outline_count == n
     for i in range(n):
         assert np.array_equal(sim.polygon(i), sim.vertices[o[i]:o[i + 1]])
+        assert np.array_equal(sim.outline(i), sim.polygon(i))  # what dda run's snapshots write
     v0, o0 = sim.scene.block_vertices()
     assert np.array_equal(v0, sim.vertices[:o[nb]]) and np.array_equal(o0, o[:nb + 1])
 
@@ -209,22 +171,7 @@ def test_a_guard_stop_is_a_simulation_error_with_its_fields():
 def test_ctrl_c_stops_a_long_run_and_leaves_the_simulation_usable():
     sim = dda.Simulation(two_squares(gap=0.3))
     until = 1e5  # a billion steps: about an hour
-    sent = []
-
-    def interrupt():
-        sent.append(time.perf_counter())
-        os.kill(os.getpid(), signal.SIGINT)
-
-    timer = threading.Timer(0.3, interrupt)
-    timer.start()
-    try:
-        with pytest.raises(KeyboardInterrupt):
-            sim.run(until=until)
-        caught = time.perf_counter()
-    finally:
-        timer.cancel()
-    latency = caught - sent[0]
-    print(f"Ctrl-C to KeyboardInterrupt: {latency * 1e3:.1f} ms after {sim.step_count} steps")
+    latency = interrupted_run(sim, until)
     assert 0 < sim.time < 0.01 * until
     # A sanity bound far above the chunk's 2 ms (speed is measured by
     # python/bench/bench_step_overhead.py, not here): the run did stop.
@@ -257,31 +204,8 @@ def test_the_gil_is_released_while_stepping():
     # stepping thread does not hold the GIL (and the call is refused rather
     # than reading a state in motion).
     sim = dda.Simulation(two_squares(gap=0.3))
-    started, stop = threading.Event(), threading.Event()
-
-    def callback(s):
-        started.set()
-        if stop.is_set():
-            raise StopIteration
-
-    t = threading.Thread(target=lambda: pytest.raises(StopIteration, sim.run, until=1e3, every=100,
-                                                      callback=callback))
-    t.start()
-    started.wait(10)
-    refused = 0
-    for _ in range(2000):
-        try:
-            sim.centroids
-        except RuntimeError as e:
-            assert "stepping in another thread" in str(e)
-            refused += 1
-        if refused >= 3:
-            break
-        time.sleep(0.0005)
-    stop.set()
-    t.join(10)
-    assert not t.is_alive()
-    assert refused >= 3
+    refused = refused_while_stepping(sim, {"centroids": lambda s: s.centroids})
+    assert refused["centroids"] >= 3
     sim.step()  # usable afterwards
 
 

@@ -1,7 +1,6 @@
 // Unit tests of the driver helpers: atomic CSV, non-finite refusal, claims
 // quoting, --out parsing, command-line checks.
-#define CATCH_CONFIG_MAIN
-#include <catch2/catch.hpp>
+#include <catch2/catch.hpp>  // main(): Catch2::Catch2WithMain (CMakeLists.txt)
 
 #include <cmath>
 #include <filesystem>
@@ -9,6 +8,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>  // getpid
 
 #include "repro/common/common.hpp"
 #include "repro/common/options.hpp"

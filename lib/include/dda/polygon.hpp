@@ -24,7 +24,7 @@ inline constexpr int kMaxBlockVertices = kMaxVertices / 2;
 // Largest |coordinate| a block may have, m: the second area moments (the
 // mass matrix's, Paper A Eq. 5a) grow as size^4 and must stay finite:
 // (2e75)^4 = 1.6e301 < DBL_MAX. Above it validate_polygon says kOverflow
-// (issue 26: coordinates of 1e308 were reported as a duplicate vertex).
+// (coordinates of 1e308 were reported as a duplicate vertex).
 inline constexpr double kMaxCoordinate = 1e75;
 
 // Round-off budget for geometric predicates, in units of machine epsilon times
@@ -58,8 +58,8 @@ struct Polygon {
 };
 
 // A convex polygon stored elsewhere: its count, CCW vertices v[0..count)
-// and outward unit normals n[0..count), with Polygon's accessors. Why
-// (issue 25 item 3): a Simulation keeps its blocks' geometry in one pool
+// and outward unit normals n[0..count), with Polygon's accessors. Why:
+// a Simulation keeps its blocks' geometry in one pool
 // sized by vertex count (most blocks have 3-8 vertices; a Polygon value has
 // room for kMaxVertices = 32), and the kernels take these forms, of a pooled
 // block or of a Polygon value alike. Small: pass them by value. They own

@@ -1,4 +1,4 @@
-// Mutation fuzzer of scene files (issue 26). Seeds: the valid scenes of
+// Mutation fuzzer of scene files. Seeds: the valid scenes of
 // repro/scenes and the io tests' bad files. Each case applies 1-3 random
 // mutations to a seed (byte edits, insertions, deletions, truncation,
 // token-level edits of the JSON document: deleted keys/elements, swapped

@@ -27,6 +27,7 @@ using detail::RunOutputs;
 
 const char* const kRunSection = "run";
 const char* const kPenaltySection = "penalty.simulation";
+const char* const kCdemSection = "cdem.model";
 
 // The penalty model runs its steps in groups (one thread team per group,
 // Simulation::advance) that end where an output, a checkpoint or the end is
@@ -130,9 +131,6 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   Schedule schedule{file.checkpoint};
   if (opt.checkpoint.every > 0.0) schedule.spec.every = opt.checkpoint.every;
   if (opt.checkpoint.every_wall > 0.0) schedule.spec.every_wall = opt.checkpoint.every_wall;
-  if (!penalty && (schedule.spec.every > 0.0 || schedule.spec.every_wall > 0.0))
-    throw SceneFileError(opt.scene_label + ": checkpoint: checkpoints hold the penalty model's state; the cdem "
-                                           "model's state cannot be saved yet");
   if (!penalty && opt.threads > 1)
     throw SceneFileError(opt.scene_label + ": threads: the cdem model steps on one thread");
   const int threads = opt.threads > 0 ? opt.threads : file.threads > 0 ? file.threads : 1;
@@ -159,7 +157,6 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   ByteReader run_state(nullptr, 0, ckpt_path);
   if (opt.resume) {
     const Checkpoint& c = *opt.resume;
-    if (!penalty) throw CheckpointError(ckpt_path + ": the cdem model's state cannot be resumed yet");
     if (c.scene_hash != file.text_hash)
       throw CheckpointError(ckpt_path + ": written for another scene (" + c.scene_path +
                             " as it was then); this scene file's text differs; nothing resumed");
@@ -167,11 +164,15 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
       throw CheckpointError(ckpt_path + ": holds a \"" + c.model + "\" model, the scene's is \"" +
                             model_name(file.model) + "\"");
     const CheckpointSection* run = c.find(kRunSection);
-    const CheckpointSection* sim = c.find(kPenaltySection);
+    const char* const model_section = penalty ? kPenaltySection : kCdemSection;
+    const CheckpointSection* sim = c.find(model_section);
     if (!run || !sim) throw CheckpointError(ckpt_path + ": corrupted: a section is missing");
     try {
-      ByteReader state(sim->bytes.data(), sim->bytes.size(), ckpt_path + ": " + kPenaltySection);
-      m.penalty->simulation().restore_state(state);
+      ByteReader state(sim->bytes.data(), sim->bytes.size(), ckpt_path + ": " + model_section);
+      if (penalty)
+        m.penalty->simulation().restore_state(state);
+      else
+        m.cdem->model().restore_state(state);
       state.expect_end();
       run_state = ByteReader(run->bytes.data(), run->bytes.size(), ckpt_path + ": " + kRunSection);
       if (run_state.i64() != model.step_count()) run_state.fail("the run and the model stopped at different steps");
@@ -223,13 +224,16 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
     run.i32(output.vtk_every);
     run.boolean(output.block_table);
     outputs.save(run);  // flushed to the disk before the checkpoint names them
-    ByteWriter sim;
-    m.penalty->simulation().save_state(sim);
+    ByteWriter state;
+    if (penalty)
+      m.penalty->simulation().save_state(state);
+    else
+      m.cdem->model().save_state(state);
     Checkpoint c;
     c.scene_path = scene_path;
     c.scene_hash = file.text_hash;
     c.model = model_name(file.model);
-    c.sections = {{kRunSection, run.take()}, {kPenaltySection, sim.take()}};
+    c.sections = {{kRunSection, run.take()}, {penalty ? kPenaltySection : kCdemSection, state.take()}};
     write_checkpoint(out.string(), c);
     res.checkpoint_path = ckpt_path;
     ++res.checkpoints;
@@ -264,7 +268,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
                          : kMaxGroup;
       const bool last = finished();
       outputs.write_due(false, last);
-      if (penalty && !last) {
+      if (!last) {
         bool due = false;
         if (schedule.spec.every > 0.0)
           while (static_cast<double>(schedule.next_index) * schedule.spec.every <= model.time() + 0.5 * dt) {
@@ -307,7 +311,7 @@ RunResult run_scene(const SceneFile& file, const RunOptions& opt) {
   res.vtk_frames = outputs.vtk_frames();
   if (res.status == RunStatus::kInterrupted) {
     res.message = "interrupted at step " + std::to_string(res.steps) + " (t = " + format_number(res.time) + " s)";
-    if (penalty) write_checkpoint_now();
+    write_checkpoint_now();
   }
   res.wall_seconds = wall_before + seconds_since(start);
   outputs.commit();

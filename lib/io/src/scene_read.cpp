@@ -456,7 +456,6 @@ void check_model_keys(const Reader& r, const json& root, bool penalty) {
       {"rotation_update", "the 6-DOF block's rotation"},
       {"damping", "Eq. 5c damping of Paper A; Paper B's mass damping is cdem.mass_damping"},
       {"threads", "the penalty solver's threads; the cdem model steps on one"},
-      {"checkpoint", "checkpoints hold the penalty model's state; the cdem model's state cannot be saved yet"},
   };
   for (const auto& [key, what] : penalty_keys)
     if (Reader::find(root, key)) r.fail(key, only_penalty(what));

@@ -159,12 +159,12 @@ std::string write_scene(const SceneFile& file) {
                        {"settle_sticking", s.damping.settle_sticking},
                        {"settle_slip_time", s.damping.settle_slip_time}};
     if (file.threads > 0) root["threads"] = file.threads;
-    if (file.checkpoint.every > 0.0 || file.checkpoint.every_wall > 0.0) {
-      ojson c = ojson::object();
-      if (file.checkpoint.every > 0.0) c["every"] = file.checkpoint.every;
-      if (file.checkpoint.every_wall > 0.0) c["every_wall"] = file.checkpoint.every_wall;
-      root["checkpoint"] = c;
-    }
+  }
+  if (file.checkpoint.every > 0.0 || file.checkpoint.every_wall > 0.0) {
+    ojson c = ojson::object();
+    if (file.checkpoint.every > 0.0) c["every"] = file.checkpoint.every;
+    if (file.checkpoint.every_wall > 0.0) c["every_wall"] = file.checkpoint.every_wall;
+    root["checkpoint"] = c;
   }
   root["output"] = {{"every", file.output.every},
                     {"snapshots", file.output.snapshot_times},

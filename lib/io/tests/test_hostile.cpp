@@ -1,4 +1,4 @@
-// Hostile scene files (issue 26): bytes after the document, duplicate names,
+// Hostile scene files: bytes after the document, duplicate names,
 // size limits checked while reading, the step-count limit, coordinates whose
 // area overflows, and line:column in messages. Each case failed before the
 // reader checked it (accepted, misreported, or took unbounded time/memory).

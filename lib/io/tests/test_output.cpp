@@ -216,7 +216,7 @@ TEST_CASE("an interrupted run writes the output so far and a checkpoint", "[io][
   CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
 }
 
-TEST_CASE("an interrupted cdem run writes the output so far, without a checkpoint", "[io][run]") {
+TEST_CASE("an interrupted cdem run writes the output so far and a checkpoint", "[io][run]") {
   const std::string dir = fresh_dir("interrupted_cdem");
   const dda::io::SceneFile f = dda::io::load_scene_file(std::string(DDA_SCENES_DIR) + "/two_prisms.json");
   volatile std::sig_atomic_t flag = 1;
@@ -225,20 +225,20 @@ TEST_CASE("an interrupted cdem run writes the output so far, without a checkpoin
   opt.interrupt = &flag;
   const dda::io::RunResult r = dda::io::run_scene(f, opt);
   CHECK(r.status == dda::io::RunStatus::kInterrupted);
-  CHECK(r.checkpoint_path.empty());
-  CHECK_FALSE(fs::exists(dir + "/checkpoint.dda"));
+  CHECK(r.checkpoint_path == dir + "/checkpoint.dda");
+  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
   CHECK(no_tmp_files(dir));
   std::ifstream in(dir + "/run.json");
   const json run = json::parse(in);
   CHECK(run["status"] == "interrupted");
   CHECK(run["model"] == "cdem");
   CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
-  // Checkpoints or a resume of the cdem model are refused before anything is written.
-  opt.interrupt = nullptr;
-  opt.out_dir = fresh_dir("cdem_checkpoint");
-  opt.checkpoint.every = 0.1;
-  CHECK_THROWS_WITH(dda::io::run_scene(f, opt), Catch::Contains("the cdem model's state cannot be saved yet"));
-  CHECK_FALSE(fs::exists(opt.out_dir));
+  // The checkpoint holds the cdem model's section beside the run's.
+  const dda::io::Checkpoint c = dda::io::read_checkpoint(dir);
+  CHECK(c.model == "cdem");
+  CHECK(c.find("run") != nullptr);
+  CHECK(c.find("cdem.model") != nullptr);
+  CHECK(c.find("penalty.simulation") == nullptr);
 }
 
 TEST_CASE("write_file_atomic and save_scene_file", "[io][csv]") {

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.hpp"
+#include "dda/io/checkpoint.hpp"
 
 using namespace dda::io::test;
 using nlohmann::json;
@@ -124,6 +125,21 @@ int stopped_run(const std::string& dir, const std::string& scene, int signal, st
 
 std::int64_t json_steps(const std::string& dir) { return json::parse(slurp(dir + "/run.json"))["steps"].get<std::int64_t>(); }
 
+// A run stopped in `dir` said where it stopped and how to go on, and its
+// run.json says "interrupted" before the end of the uninterrupted run in
+// `ref`: the step it stopped at.
+std::int64_t check_interrupted(const std::string& dir, const std::string& ref) {
+  const std::string msg = slurp(dir + ".log");
+  INFO(msg);
+  CHECK(msg.find("dda: interrupted at step ") != std::string::npos);
+  CHECK(msg.find("continue with: dda run --resume " + dir) != std::string::npos);
+  const json stopped = json::parse(slurp(dir + "/run.json"));
+  CHECK(stopped["status"] == "interrupted");
+  const std::int64_t at = stopped["steps"].get<std::int64_t>();
+  CHECK(at < json_steps(ref));
+  return at;
+}
+
 }  // namespace
 
 TEST_CASE("a run interrupted by SIGINT at a random step and resumed ends byte-identical", "[io][resume]") {
@@ -131,16 +147,8 @@ TEST_CASE("a run interrupted by SIGINT at a random step and resumed ends byte-id
   const std::string dir = scratch("resume_sigint");
   const std::string scene = column_scene();
   REQUIRE(stopped_run(dir, scene, SIGINT) == 130);
-  const std::string msg = slurp(dir + ".log");
-  INFO(msg);
   // Where it stopped, what it wrote, how to go on.
-  CHECK(msg.find("dda: interrupted at step ") != std::string::npos);
-  CHECK(msg.find("continue with: dda run --resume " + dir) != std::string::npos);
-  const json stopped = json::parse(slurp(dir + "/run.json"));
-  CHECK(stopped["status"] == "interrupted");
-  const std::int64_t at = stopped["steps"].get<std::int64_t>();
-  CHECK(at > 0);
-  CHECK(at < json_steps(ref));
+  CHECK(check_interrupted(dir, ref) > 0);
   CHECK(fs::exists(dir + "/checkpoint.dda"));
   CHECK(fs::exists(dir + "/timeseries.csv"));  // the output so far
   CHECK(fs::exists(dir + "/blocks.csv"));
@@ -243,4 +251,123 @@ TEST_CASE("--resume: a directory that does not exist or holds no checkpoint", "[
   CHECK(run_cli({"run", "--resume", dir}, dir + ".log") == 2);
   CHECK(slurp(dir + ".log").find("holds no checkpoint (checkpoint.dda)") != std::string::npos);
   CHECK(fs::is_empty(dir));
+}
+
+// --- Paper B's model (the cdem two-prisms scene) ---------------------------
+
+namespace {
+
+// Paper B's two prisms (repro/scenes/two_prisms.json): the touch at 1/3 s,
+// the clone and its sub-model live until about 0.3405 s; every output,
+// with its ParaView series.
+std::string prisms_scene() { return std::string(DDA_SCENES_DIR) + "/two_prisms.json"; }
+
+// The uninterrupted run of the prisms, once for every test here.
+const std::string& prisms_reference(double* seconds = nullptr) {
+  static std::string dir;
+  static double wall = 0.0;
+  if (dir.empty()) {
+    const std::string d = scratch("resume_prisms_reference");
+    REQUIRE(run_cli({"run", prisms_scene(), "--out", d, "--quiet", "--vtk"}, d + ".log") == 0);
+    wall = json::parse(slurp(d + "/run.json"))["wall_seconds"].get<double>();
+    dir = d;
+  }
+  if (seconds) *seconds = wall;
+  return dir;
+}
+
+// Starts `dda <args>`, waits until `file` exists and `delay` s more, then
+// sends `signal`; its exit code (0: it ended first).
+int signalled_when(const std::vector<std::string>& args, const std::string& log, const std::string& file, int signal,
+                   double delay = 0.0) {
+  const pid_t pid = start_cli(args, log);
+  for (;;) {
+    if (fs::exists(file)) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+      ::kill(pid, signal);
+      break;
+    }
+    int status = 0;
+    if (::waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  return wait_cli(pid);
+}
+
+}  // namespace
+
+TEST_CASE("a cdem run interrupted by SIGINT at a random step and resumed ends byte-identical", "[io][resume][cdem]") {
+  double wall = 0.0;
+  const std::string& ref = prisms_reference(&wall);
+  const std::string dir = scratch("resume_prisms_sigint");
+  // The signal a random part of the run's wall time after its output files
+  // are open (its handler is installed by then).
+  std::uniform_real_distribution<double> when(0.05, 0.9);
+  double delay = when(rng()) * wall;
+  int rc = 0;
+  for (int attempt = 0; attempt < 6 && rc == 0; ++attempt, delay *= 0.5) {
+    fs::remove_all(dir);
+    rc = signalled_when({"run", prisms_scene(), "--out", dir, "--quiet", "--vtk"}, dir + ".log",
+                        dir + "/timeseries.csv.tmp", SIGINT, delay);
+  }
+  REQUIRE(rc == 130);
+  const std::int64_t at = check_interrupted(dir, ref);
+  CHECK(json::parse(slurp(dir + "/run.json"))["model"] == "cdem");
+  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
+  CHECK(fs::exists(dir + "/vtk/elements.pvd"));
+  REQUIRE(run_cli({"run", "--resume", dir}, dir + "_resume.log") == 0);
+  INFO(slurp(dir + "_resume.log"));
+  CHECK(slurp(dir + "_resume.log").find("from step " + std::to_string(at) + " ") != std::string::npos);
+  check_same_outputs(ref, dir);
+}
+
+TEST_CASE("a cdem run killed after its checkpoint in the collision resumes from it, byte-identical",
+          "[io][resume][cdem]") {
+  // A checkpoint at 0.3345 s of simulated time (step 669): the clone tied,
+  // the sub-model of the colliding elements live. SIGKILL as soon as it is
+  // on the disk: nothing flushed or committed after it.
+  const std::string& ref = prisms_reference();
+  const std::string dir = scratch("resume_prisms_sigkill");
+  int rc = 0;
+  for (int attempt = 0; attempt < 4 && rc != 128 + SIGKILL; ++attempt) {
+    fs::remove_all(dir);
+    rc = signalled_when({"run", prisms_scene(), "--out", dir, "--quiet", "--vtk", "--checkpoint-every", "0.3345"},
+                        dir + ".log", dir + "/checkpoint.dda", SIGKILL);
+  }
+  REQUIRE(rc == 128 + SIGKILL);
+  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
+  CHECK_FALSE(fs::exists(dir + "/run.json"));
+  const dda::io::Checkpoint c = dda::io::read_checkpoint(dir);
+  CHECK(c.model == "cdem");
+  REQUIRE(c.find("cdem.model") != nullptr);
+  const std::string log = dir + "_resume.log";
+  REQUIRE(run_cli({"run", "--resume", dir}, log) == 0);
+  INFO(slurp(log));
+  CHECK(slurp(log).find("from step 669 (t = 0.3345") != std::string::npos);
+  check_same_outputs(ref, dir);
+}
+
+TEST_CASE("a cdem checkpoint resumed with another scene file is refused, nothing overwritten", "[io][resume][cdem]") {
+  const std::string dir = scratch("resume_prisms_refused");
+  // Interrupted before its first step: a checkpoint at step 0.
+  int rc = 0;
+  for (int attempt = 0; attempt < 4 && rc != 130; ++attempt) {
+    fs::remove_all(dir);
+    rc = signalled_when({"run", prisms_scene(), "--out", dir, "--quiet"}, dir + ".log", dir + "/timeseries.csv.tmp",
+                        SIGTERM);
+  }
+  REQUIRE(rc == 130);
+  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
+  const auto before = files_of(dir);
+  // The same scene with the other subdivision mode: the text differs.
+  const std::string other = dir + "_in_place.json";
+  {
+    std::string text = slurp(prisms_scene());
+    const std::string from = "\"subdivision_mode\": \"submodel\"";
+    text.replace(text.find(from), from.size(), "\"subdivision_mode\": \"in_place\"");
+    std::ofstream(other) << text;
+  }
+  CHECK(run_cli({"run", "--resume", dir, other, "--quiet"}, dir + "_other.log") == 2);
+  CHECK(slurp(dir + "_other.log").find("written for another scene") != std::string::npos);
+  CHECK(files_of(dir) == before);
 }

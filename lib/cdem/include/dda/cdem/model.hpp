@@ -107,6 +107,11 @@
 #include "dda/cdem/records.hpp"
 #include "dda/vec2.hpp"
 
+namespace dda {
+class ByteWriter;
+class ByteReader;
+}  // namespace dda
+
 namespace dda::cdem {
 
 class Model {
@@ -175,9 +180,23 @@ class Model {
   const ModelState& state() const { return state_; }
   const ModelSetup& setup() const { return setup_; }
 
+  // Saves the full state by its bits (dda/state_bytes.hpp; state.cpp), and
+  // restores it into a model built from the same scene: it then runs on to
+  // the same bits as the model that saved it. restore_state throws
+  // dda::StateError, the model unchanged, for a stream that is truncated,
+  // inconsistent, of another layout or of another scene (blocks, meshes,
+  // materials, gravity, dt or options; the name and duration may differ).
+  void save_state(ByteWriter& out) const;
+  void restore_state(ByteReader& in);
+
  private:
   ModelSetup setup_;
   ModelState state_;
 };
+
+// The stream of Model::save_state for a state and the set-up it runs with,
+// and back (the state read whole and its ids checked; StateError).
+void write_state(ByteWriter& out, const ModelSetup& setup, const ModelState& state);
+ModelState read_state(ByteReader& in, const ModelSetup& setup);
 
 }  // namespace dda::cdem

@@ -14,10 +14,9 @@
 //   model             text: the scene's "model" ("penalty", "cdem")
 //   sections          u32 count, then per section its name (text) and its
 //                     bytes (text): "run" (the run loop: step, output
-//                     files' lengths and hashes, schedule) and one per
-//                     model state ("penalty.simulation": Simulation::
-//                     save_state). Paper B's model adds its own section
-//                     ("cdem.model") beside the run's, without a new format.
+//                     files' lengths and hashes, schedule) and the model's
+//                     state: "penalty.simulation" (Simulation::save_state)
+//                     or "cdem.model" (cdem::Model::save_state).
 // Written through "<file>.tmp": flushed to the disk, then renamed over the
 // previous checkpoint, which stays valid until the new one is complete.
 #pragma once

@@ -6,7 +6,7 @@
 //   <out>/vtk/            (output.vtk) ParaView series: penalty model blocks.pvd,
 //                         cdem model elements.pvd; both contacts.pvd
 //   <out>/run.json        status, counts, wall time, block names and masses
-//   <out>/checkpoint.dda  while a run can be resumed (penalty model; checkpoint.hpp)
+//   <out>/checkpoint.dda  while a run can be resumed (either model; checkpoint.hpp)
 // Columns are documented in lib/io/SCHEMA.md. Every file is written through
 // "<file>.tmp" and renamed into place: the CSV files and run.json when the
 // run ends, completed, stopped by dda::SimulationError (or a non-finite
@@ -35,7 +35,7 @@ struct RunOptions {
   std::string scene_label;           // recorded in run.json
   std::ostream* progress = nullptr;  // progress lines (at most ~1 per second after the first second); null: none
   // Polled after every step (or group of steps); non-zero: the run stops
-  // there, writes a checkpoint (penalty model) and the output so far.
+  // there, writes a checkpoint and the output so far.
   const volatile std::sig_atomic_t* interrupt = nullptr;
   int threads = 0;             // > 0: the penalty solver's threads (overrides the file's "threads"; default 1)
   CheckpointSpec checkpoint;   // a field > 0 overrides the file's "checkpoint"
@@ -75,8 +75,7 @@ std::vector<int> tracked_blocks(const SceneFile& file);
 
 // Throws OutputError if the output cannot be written; SceneFileError (before
 // anything is written) if the run would take more than file.max_steps steps
-// (check_step_count with the model's dt) or asks for checkpoints of a model
-// that has none; CheckpointError (before anything is written) if
+// (check_step_count with the model's dt); CheckpointError (before anything is written) if
 // options.resume does not fit this scene or out_dir's outputs.
 RunResult run_scene(const SceneFile& file, const RunOptions& options);
 

@@ -88,7 +88,7 @@ struct SceneFile {
   ContactModel model = ContactModel::kPenalty;
   CdemSettings cdem;          // with model kCdem
   int threads = 0;            // the file's "threads" (0: not given, 1 thread)
-  CheckpointSpec checkpoint;  // the file's "checkpoint" (penalty model)
+  CheckpointSpec checkpoint;  // the file's "checkpoint" (either model)
   // content_hash of the file's text (checkpoints name the scene by it).
   std::uint64_t text_hash = 0;
 };

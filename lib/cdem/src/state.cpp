@@ -1,0 +1,855 @@
+// Saving and restoring the CDEM model's full state (checkpoints of dda run,
+// pickling in the Python module): every field of ModelState
+// (dda/cdem/model_state.hpp), doubles by their bits, in the order the
+// header lists them, with the dda/state_bytes.hpp encoding. Nothing is
+// left out, not even the fields that are empty or rewritten before they
+// are read (the scratch of one step): the stream holds the state as it is,
+// so that a restored model is the saved one. The hash-map parts (the edge
+// map, the touches per node of the current step) are written in the order
+// of their keys, so that one state always gives the same bytes.
+//
+// ModelSetup is not saved: the restoring model is built from the same scene
+// and derives it again. The stream's opening record checks that it is that
+// scene's: the block and material counts, dt, the number of coarse
+// elements, and a hash (64-bit FNV-1a) of everything that shapes a step:
+// the scene's materials, blocks (outline, divisions or own mesh, initial
+// velocity, fixed flag, material), gravity, dt and options, and the set-up
+// derived from them (elastic and compliance matrices, wave speeds, critical
+// steps, the penalty's kn). The scene's name and duration are not in it: a
+// restored model may be run on past the duration it was saved with.
+//
+// A restore reads the whole stream into a new state and checks every index
+// against the sizes it read (node, element, lattice, edge, block, material,
+// sub-model and record ids; enum values; per-node arrays of one length)
+// before it replaces the model's state: a stream that is truncated,
+// inconsistent or of another scene throws StateError and leaves the model
+// as it was.
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dda/cdem/model.hpp"
+#include "dda/cdem/mesh.hpp"
+#include "dda/state_bytes.hpp"
+#include "model_ops.hpp"
+
+namespace dda::cdem {
+
+namespace {
+
+// The stream's layout; a change of what is saved changes it.
+constexpr std::uint32_t kStateLayout = 1;
+
+// --- writing -------------------------------------------------------------
+
+// The parts' overloads, declared before the list templates that call them.
+void put(ByteWriter& w, const BlockState& b);
+void put(ByteWriter& w, const Element& e);
+void put(ByteWriter& w, const Lattice& l);
+void put(ByteWriter& w, const MeshEdge& e);
+void put(ByteWriter& w, const BoundaryEdge& e);
+void put(ByteWriter& w, const Clone& c);
+void put(ByteWriter& w, const SubElement& e);
+void put(ByteWriter& w, const SubModel& s);
+void put(ByteWriter& w, const SubModelRequest& q);
+void put(ByteWriter& w, const SubModelRecord& r);
+void put(ByteWriter& w, const PenaltyContact& p);
+void put(ByteWriter& w, const Snapshot::Tri& t);
+void put(ByteWriter& w, const Snapshot& s);
+void put(ByteWriter& w, const TouchRecord& t);
+void put(ByteWriter& w, const SeparationRecord& s);
+void get(ByteReader& r, BlockState& b);
+void get(ByteReader& r, Element& e);
+void get(ByteReader& r, Lattice& l);
+void get(ByteReader& r, MeshEdge& e);
+void get(ByteReader& r, BoundaryEdge& e);
+void get(ByteReader& r, Clone& c);
+void get(ByteReader& r, SubElement& e);
+void get(ByteReader& r, SubModel& s);
+void get(ByteReader& r, SubModelRequest& q);
+void get(ByteReader& r, SubModelRecord& x);
+void get(ByteReader& r, PenaltyContact& p);
+void get(ByteReader& r, Snapshot::Tri& t);
+void get(ByteReader& r, Snapshot& s);
+void get(ByteReader& r, TouchRecord& t);
+void get(ByteReader& r, SeparationRecord& s);
+
+void put(ByteWriter& w, double x) { w.f64(x); }
+void put(ByteWriter& w, int x) { w.i32(x); }
+void put(ByteWriter& w, std::int64_t x) { w.i64(x); }
+void put(ByteWriter& w, bool x) { w.boolean(x); }
+void put(ByteWriter& w, Vec2 v) { w.vec2(v); }
+void put(ByteWriter& w, const Vec3& v) {
+  for (int k = 0; k < 3; ++k) w.f64(v[k]);
+}
+void put(ByteWriter& w, const Mat3& m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) w.f64(m(i, j));
+}
+template <class T, std::size_t N>
+void put(ByteWriter& w, const std::array<T, N>& a) {
+  for (const T& x : a) put(w, x);
+}
+template <class T>
+void put(ByteWriter& w, const std::vector<T>& v) {
+  w.u64(v.size());
+  for (const T& x : v) put(w, x);
+}
+// std::vector<char> (SubModel::prescribed) and enums: as bytes.
+void put_bytes(ByteWriter& w, const std::vector<char>& v) {
+  w.u64(v.size());
+  for (char c : v) w.u8(static_cast<std::uint8_t>(c));
+}
+template <class E>
+void put_enum(ByteWriter& w, E e) {
+  w.u8(static_cast<std::uint8_t>(e));
+}
+
+void put(ByteWriter& w, const BlockState& b) {
+  put(w, b.nodes);
+  put(w, b.outline);
+  put(w, b.material);
+  put(w, b.fixed);
+  put(w, b.initial_mean);
+}
+void put(ByteWriter& w, const Element& e) {
+  put(w, e.n);
+  put(w, e.block);
+  put(w, e.level);
+  put(w, e.parent);
+  put(w, e.lattice);
+  put(w, e.active);
+  put(w, e.stress);
+  put(w, e.last);
+  put(w, e.mass);
+}
+void put(ByteWriter& w, const Lattice& l) {
+  put(w, l.elem);
+  put(w, l.k);
+  put(w, l.nodes);
+  put(w, l.children);
+}
+void put(ByteWriter& w, const MeshEdge& e) {
+  put(w, e.lo);
+  put(w, e.hi);
+  put(w, e.elems);
+  put(w, e.nodes);
+}
+void put(ByteWriter& w, const BoundaryEdge& e) {
+  put(w, e.a);
+  put(w, e.b);
+  put(w, e.block);
+  put(w, e.fine);
+}
+void put(ByteWriter& w, const Clone& c) {
+  put(w, c.main);
+  put(w, c.t);
+  put(w, c.w);
+  put(w, c.ea);
+  put(w, c.eb);
+  put(w, c.area);
+  put(w, c.fine);
+  put(w, c.sliding);
+  put(w, c.lambda);
+}
+void put(ByteWriter& w, const SubElement& e) {
+  put(w, e.n);
+  put(w, e.parent);
+  put(w, e.stress);
+  put(w, e.last);
+  put(w, e.mass);
+}
+void put(ByteWriter& w, const SubModel& s) {
+  put(w, s.record);
+  put(w, s.k);
+  put(w, s.substeps);
+  put(w, s.parents);
+  put(w, s.x);
+  put(w, s.v);
+  put(w, s.f);
+  put(w, s.m);
+  put(w, s.inv_m);
+  put(w, s.block);
+  put(w, s.drive);
+  put(w, s.drive_w);
+  put_bytes(w, s.prescribed);
+  put(w, s.home);
+  put(w, s.home_ab);
+  put(w, s.home_c);
+  put(w, s.elems);
+  put(w, s.coarse);
+  put(w, s.coarse_x0);
+  put(w, s.coarse_force);
+  put(w, s.bc);
+}
+void put(ByteWriter& w, const SubModelRequest& q) {
+  put(w, q.main_node);
+  put(w, q.ea);
+  put(w, q.eb);
+  put(w, q.point);
+  put(w, q.dt2);
+}
+void put(ByteWriter& w, const SubModelRecord& r) {
+  put(w, r.created);
+  put(w, r.deleted);
+  put(w, r.main_node);
+  put(w, r.main_block);
+  put(w, r.target_block);
+  put(w, r.elements);
+  put(w, r.k);
+  put(w, r.sub_nodes);
+  put(w, r.free_nodes);
+  put(w, r.substeps);
+  put(w, r.sub_critical_dt);
+  put(w, r.substeps_taken);
+  put(w, r.radius);
+  put(w, r.kinetic_dropped);
+  put(w, r.strain_change);
+}
+void put(ByteWriter& w, const PenaltyContact& p) {
+  put(w, p.node);
+  put(w, p.a);
+  put(w, p.b);
+  put(w, p.xi);
+  put(w, p.depth);
+  put(w, p.normal);
+}
+void put(ByteWriter& w, const Snapshot::Tri& t) {
+  put(w, t.x);
+  put(w, t.velocity);
+  put(w, t.block);
+  put(w, t.fine);
+  put(w, t.node);
+  put(w, t.v);
+  put(w, t.stress);
+}
+void put(ByteWriter& w, const Snapshot& s) {
+  put(w, s.time);
+  put(w, s.tris);
+  put(w, s.clone_points);
+}
+void put(ByteWriter& w, const TouchRecord& t) {
+  put(w, t.time);
+  put(w, t.step_start);
+  put(w, t.step_end);
+  put(w, t.dt1);
+  put(w, t.dt2);
+  put(w, t.fine);
+  put(w, t.main_node);
+  put(w, t.main_block);
+  put(w, t.target_block);
+  put(w, t.node_to_node);
+  put(w, t.point);
+  put(w, t.mass_main);
+  put(w, t.mass_target);
+  put(w, t.v_main);
+  put(w, t.v_target);
+  put(w, t.v_clone);
+  put(w, t.energy_loss_eq5);
+  put(w, t.energy_loss_eq5_group);
+  put(w, t.energy_loss);
+  put(w, t.impulse_normal);
+  put(w, t.impulse_tangential);
+  put(w, t.coulomb_capped);
+  put(w, t.subdivision);
+  put(w, t.radius);
+  put(w, t.refined_elements);
+  put(w, t.snapshot);
+}
+void put(ByteWriter& w, const SeparationRecord& s) {
+  put(w, s.time);
+  put(w, s.main_node);
+  put(w, s.main_block);
+  put(w, s.target_block);
+  put_enum(w, s.criterion);
+  put(w, s.normal_force);
+  put(w, s.shear_force);
+  put(w, s.limit);
+  put(w, s.contact_area);
+  put(w, s.fine);
+}
+
+// --- reading -------------------------------------------------------------
+
+void get(ByteReader& r, double& x) { x = r.f64(); }
+void get(ByteReader& r, int& x) { x = r.i32(); }
+void get(ByteReader& r, std::int64_t& x) { x = r.i64(); }
+void get(ByteReader& r, bool& x) { x = r.boolean(); }
+void get(ByteReader& r, Vec2& v) { v = r.vec2(); }
+void get(ByteReader& r, Vec3& v) {
+  for (int k = 0; k < 3; ++k) v[k] = r.f64();
+}
+template <class T, std::size_t N>
+void get(ByteReader& r, std::array<T, N>& a) {
+  for (T& x : a) get(r, x);
+}
+// Each element takes at least one byte: a corrupt length is refused before
+// it allocates (ByteReader::count).
+template <class T>
+void get(ByteReader& r, std::vector<T>& v) {
+  const std::size_t n = r.count(1);
+  v.clear();
+  v.resize(n);
+  for (T& x : v) get(r, x);
+}
+void get_bytes(ByteReader& r, std::vector<char>& v) {
+  const std::size_t n = r.count(1);
+  v.resize(n);
+  for (char& c : v) {
+    const std::uint8_t b = r.u8();
+    if (b > 1) r.fail("a sub-node's prescribed flag is neither 0 nor 1");
+    c = static_cast<char>(b);
+  }
+}
+template <class E>
+E get_enum(ByteReader& r, std::uint8_t last, const char* what) {
+  const std::uint8_t b = r.u8();
+  if (b > last) r.fail(std::string(what) + " " + std::to_string(b) + " is not one of 0.." + std::to_string(last));
+  return static_cast<E>(b);
+}
+
+void get(ByteReader& r, BlockState& b) {
+  get(r, b.nodes);
+  get(r, b.outline);
+  get(r, b.material);
+  get(r, b.fixed);
+  get(r, b.initial_mean);
+}
+void get(ByteReader& r, Element& e) {
+  get(r, e.n);
+  get(r, e.block);
+  get(r, e.level);
+  get(r, e.parent);
+  get(r, e.lattice);
+  get(r, e.active);
+  get(r, e.stress);
+  get(r, e.last);
+  get(r, e.mass);
+}
+void get(ByteReader& r, Lattice& l) {
+  get(r, l.elem);
+  get(r, l.k);
+  get(r, l.nodes);
+  get(r, l.children);
+}
+void get(ByteReader& r, MeshEdge& e) {
+  get(r, e.lo);
+  get(r, e.hi);
+  get(r, e.elems);
+  get(r, e.nodes);
+}
+void get(ByteReader& r, BoundaryEdge& e) {
+  get(r, e.a);
+  get(r, e.b);
+  get(r, e.block);
+  get(r, e.fine);
+}
+void get(ByteReader& r, Clone& c) {
+  get(r, c.main);
+  get(r, c.t);
+  get(r, c.w);
+  get(r, c.ea);
+  get(r, c.eb);
+  get(r, c.area);
+  get(r, c.fine);
+  get(r, c.sliding);
+  get(r, c.lambda);
+}
+void get(ByteReader& r, SubElement& e) {
+  get(r, e.n);
+  get(r, e.parent);
+  get(r, e.stress);
+  get(r, e.last);
+  get(r, e.mass);
+}
+void get(ByteReader& r, SubModel& s) {
+  get(r, s.record);
+  get(r, s.k);
+  get(r, s.substeps);
+  get(r, s.parents);
+  get(r, s.x);
+  get(r, s.v);
+  get(r, s.f);
+  get(r, s.m);
+  get(r, s.inv_m);
+  get(r, s.block);
+  get(r, s.drive);
+  get(r, s.drive_w);
+  get_bytes(r, s.prescribed);
+  get(r, s.home);
+  get(r, s.home_ab);
+  get(r, s.home_c);
+  get(r, s.elems);
+  get(r, s.coarse);
+  get(r, s.coarse_x0);
+  get(r, s.coarse_force);
+  get(r, s.bc);
+}
+void get(ByteReader& r, SubModelRequest& q) {
+  get(r, q.main_node);
+  get(r, q.ea);
+  get(r, q.eb);
+  get(r, q.point);
+  get(r, q.dt2);
+}
+void get(ByteReader& r, SubModelRecord& x) {
+  get(r, x.created);
+  get(r, x.deleted);
+  get(r, x.main_node);
+  get(r, x.main_block);
+  get(r, x.target_block);
+  get(r, x.elements);
+  get(r, x.k);
+  get(r, x.sub_nodes);
+  get(r, x.free_nodes);
+  get(r, x.substeps);
+  get(r, x.sub_critical_dt);
+  get(r, x.substeps_taken);
+  get(r, x.radius);
+  get(r, x.kinetic_dropped);
+  get(r, x.strain_change);
+}
+void get(ByteReader& r, PenaltyContact& p) {
+  get(r, p.node);
+  get(r, p.a);
+  get(r, p.b);
+  get(r, p.xi);
+  get(r, p.depth);
+  get(r, p.normal);
+}
+void get(ByteReader& r, Snapshot::Tri& t) {
+  get(r, t.x);
+  get(r, t.velocity);
+  get(r, t.block);
+  get(r, t.fine);
+  get(r, t.node);
+  get(r, t.v);
+  get(r, t.stress);
+}
+void get(ByteReader& r, Snapshot& s) {
+  get(r, s.time);
+  get(r, s.tris);
+  get(r, s.clone_points);
+}
+void get(ByteReader& r, TouchRecord& t) {
+  get(r, t.time);
+  get(r, t.step_start);
+  get(r, t.step_end);
+  get(r, t.dt1);
+  get(r, t.dt2);
+  get(r, t.fine);
+  get(r, t.main_node);
+  get(r, t.main_block);
+  get(r, t.target_block);
+  get(r, t.node_to_node);
+  get(r, t.point);
+  get(r, t.mass_main);
+  get(r, t.mass_target);
+  get(r, t.v_main);
+  get(r, t.v_target);
+  get(r, t.v_clone);
+  get(r, t.energy_loss_eq5);
+  get(r, t.energy_loss_eq5_group);
+  get(r, t.energy_loss);
+  get(r, t.impulse_normal);
+  get(r, t.impulse_tangential);
+  get(r, t.coulomb_capped);
+  get(r, t.subdivision);
+  get(r, t.radius);
+  get(r, t.refined_elements);
+  get(r, t.snapshot);
+}
+void get(ByteReader& r, SeparationRecord& s) {
+  get(r, s.time);
+  get(r, s.main_node);
+  get(r, s.main_block);
+  get(r, s.target_block);
+  s.criterion = get_enum<SeparationCriterion>(r, static_cast<std::uint8_t>(SeparationCriterion::kSlidOff),
+                                              "a separation's criterion");
+  get(r, s.normal_force);
+  get(r, s.shear_force);
+  get(r, s.limit);
+  get(r, s.contact_area);
+  get(r, s.fine);
+}
+
+// --- the opening record ----------------------------------------------------
+
+// 64-bit FNV-1a of a byte string.
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+// Everything of the set-up that shapes a step, as bytes (the header above).
+std::uint64_t setup_hash(const ModelSetup& su) {
+  ByteWriter w;
+  const CdemScene& sc = su.scene;
+  w.u64(sc.materials.size());
+  for (const Material& m : sc.materials) {
+    put(w, m.density);
+    put(w, m.young);
+    put(w, m.poisson);
+  }
+  w.u64(sc.blocks.size());
+  for (const CdemBlock& b : sc.blocks) {
+    put(w, b.outline);
+    put(w, b.divisions);
+    put(w, b.mesh.nodes);
+    put(w, b.mesh.triangles);
+    put(w, b.velocity);
+    put(w, b.fixed);
+    put(w, b.material);
+  }
+  put(w, sc.gravity);
+  put(w, sc.dt);
+  const CdemOptions& o = su.opt;
+  put_enum(w, o.contact);
+  put_enum(w, o.touch_impact);
+  put(w, o.penalty_kn);
+  put(w, o.tolerance);
+  put(w, o.strength.tensile);
+  put(w, o.strength.cohesion);
+  put(w, o.strength.friction_deg);
+  put(w, o.subdivision);
+  put_enum(w, o.subdivision_mode);
+  put_enum(w, o.submodel_transfer);
+  put(w, o.min_subdivision);
+  put(w, o.max_subdivision);
+  put(w, o.substep_safety);
+  put(w, o.mass_damping);
+  put(w, o.check_stability);
+  put(w, o.capture_touch_snapshots);
+  put_enum(w, o.patch_deletion);
+  put(w, o.contact_point_mass);
+  put(w, su.dt);
+  put(w, su.d);
+  put(w, su.c);
+  put(w, su.wave_speed);
+  put(w, su.critical_dt);
+  put(w, su.element_critical_dt);
+  put(w, su.contact_critical_dt);
+  put(w, su.penalty_kn);
+  put(w, su.penalty_max_depth);
+  return fnv1a(w.bytes());
+}
+
+int coarse_element_count(const MeshState& mesh) {
+  return static_cast<int>(std::count_if(mesh.elems.begin(), mesh.elems.end(), [](const Element& e) { return e.level == 0; }));
+}
+
+// --- the checks of a state read back --------------------------------------
+
+// Index checks: each id must lie in [lo, n) of the list it indexes.
+struct Ids {
+  ByteReader& r;
+  void in(int id, std::size_t n, const char* what, int lo = 0) const {
+    if (id < lo || (id >= 0 && static_cast<std::size_t>(id) >= n))
+      r.fail(std::string(what) + " " + std::to_string(id) + " is out of range (" + std::to_string(n) + ")");
+  }
+  template <class C>
+  void all(const C& ids, std::size_t n, const char* what, int lo = 0) const {
+    for (int id : ids) in(id, n, what, lo);
+  }
+  void size(std::size_t got, std::size_t want, const char* what) const {
+    if (got != want)
+      r.fail(std::string(what) + " has " + std::to_string(got) + " entries, expected " + std::to_string(want));
+  }
+};
+
+void check(ByteReader& r, const ModelSetup& su, const ModelState& st) {
+  const Ids ids{r};
+  const NodeState& nd = st.nodes;
+  const std::size_t n = nd.x.size();
+  for (const auto* v : {&nd.v, &nd.xs, &nd.f, &nd.iface, &nd.iface0, &nd.iimp, &nd.scratch})
+    ids.size(v->size(), n, "a per-node list of vectors");
+  for (const auto* v : {&nd.m, &nd.inv_m, &nd.hang_w, &nd.released_at}) ids.size(v->size(), n, "a per-node list of numbers");
+  for (const auto* v : {&nd.block, &nd.hang_a, &nd.hang_b, &nd.clone_count}) ids.size(v->size(), n, "a per-node list of ids");
+  ids.size(nd.kind.size(), n, "the node kinds");
+  const std::size_t nb = st.blocks.size(), ne = st.mesh.elems.size(), nl = st.mesh.lattices.size();
+  ids.all(nd.block, nb, "a node's block");
+  ids.all(nd.hang_a, n, "a hanging node's tie", -1);
+  ids.all(nd.hang_b, n, "a hanging node's tie", -1);
+  for (const BlockState& b : st.blocks) {
+    ids.all(b.nodes, n, "a block's node");
+    ids.all(b.outline, n, "a block's outline node");
+    ids.in(b.material, su.d.size(), "a block's material");
+  }
+  const MeshState& mesh = st.mesh;
+  for (const Element& e : mesh.elems) {
+    ids.all(e.n, n, "an element's corner");
+    ids.in(e.block, nb, "an element's block");
+    ids.in(e.parent, ne, "an element's parent", -1);
+    ids.in(e.lattice, nl, "an element's lattice", -1);
+    if (e.level != 0 && e.level != 1) r.fail("an element's level " + std::to_string(e.level) + " is neither 0 nor 1");
+  }
+  for (const Lattice& l : mesh.lattices) {
+    if (l.k < 1) ids.r.fail("a lattice's k " + std::to_string(l.k) + " is below 1");
+    ids.size(l.nodes.size(), static_cast<std::size_t>(lattice_count(l.k)), "a lattice's node list");
+    ids.in(l.elem, ne, "a lattice's element");
+    ids.all(l.nodes, n, "a lattice's node");
+    ids.all(l.children, ne, "a lattice's element");
+  }
+  for (const auto& kv : mesh.edges) {
+    const MeshEdge& e = kv.second;
+    ids.in(e.lo, n, "an edge's node");
+    ids.in(e.hi, n, "an edge's node");
+    ids.all(e.elems, ne, "an edge's element", -1);
+    ids.all(e.nodes, n, "an edge's node");
+  }
+  for (const auto* list : {&mesh.coarse_bedges, &mesh.bedges})
+    for (const BoundaryEdge& e : *list) {
+      ids.in(e.a, n, "a boundary edge's node");
+      ids.in(e.b, n, "a boundary edge's node");
+      ids.in(e.block, nb, "a boundary edge's block");
+    }
+  ids.size(mesh.coarse_bedge_elem.size(), mesh.coarse_bedges.size(), "the coarse boundary's elements");
+  ids.all(mesh.coarse_bedge_elem, ne, "a coarse boundary edge's element");
+  ids.size(mesh.block_bedges.size(), nb, "the blocks' boundary edge lists");
+  for (const std::vector<int>& b : mesh.block_bedges) ids.all(b, mesh.bedges.size(), "a block's boundary edge");
+  ids.all(mesh.bnodes, n, "a boundary node");
+  for (const auto* list : {&mesh.coarse_elems, &mesh.fine_elems, &mesh.coarse_eval, &mesh.patch_eval})
+    ids.all(*list, ne, "an element list's element");
+  for (const auto* list : {&mesh.coarse_dofs, &mesh.fine_dofs, &mesh.hanging}) ids.all(*list, n, "a node list's node");
+  for (const Clone& c : st.clones) {
+    ids.in(c.main, n, "a clone's main node");
+    ids.all(c.t, n, "a clone's tied node", -1);
+    ids.in(c.ea, n, "a clone's edge node", -1);
+    ids.in(c.eb, n, "a clone's edge node", -1);
+  }
+  for (const auto& kv : st.step_touch_count) ids.in(kv.first, n, "a touched node");
+  const SubModels& subs = st.submodels;
+  for (const SubModel& s : subs.live) {
+    const std::size_t ns = s.x.size(), nc = s.coarse.size();
+    ids.in(s.record, subs.records.size(), "a sub-model's record");
+    ids.all(s.parents, ne, "a sub-model's parent");
+    for (const auto* v : {&s.v, &s.f, &s.bc}) ids.size(v->size(), ns, "a sub-model's per-node list");
+    for (const auto* v : {&s.m, &s.inv_m, &s.drive_w}) ids.size(v->size(), ns, "a sub-model's per-node list");
+    ids.size(s.block.size(), ns, "a sub-model's node blocks");
+    ids.size(s.drive.size(), ns, "a sub-model's drives");
+    ids.size(s.prescribed.size(), ns, "a sub-model's prescribed flags");
+    ids.size(s.home.size(), ns, "a sub-model's homes");
+    ids.size(s.home_ab.size(), ns, "a sub-model's home coordinates");
+    ids.size(s.home_c.size(), ns, "a sub-model's home corners");
+    ids.all(s.block, nb, "a sub-node's block");
+    for (const auto& d : s.drive) ids.all(d, nc, "a sub-node's drive", -1);
+    ids.all(s.home, ne, "a sub-node's home element", -1);
+    for (const auto& c : s.home_c) ids.all(c, nc, "a sub-node's home corner");
+    for (const SubElement& e : s.elems) {
+      ids.all(e.n, ns, "a sub-element's corner");
+      ids.in(e.parent, ne, "a sub-element's parent");
+    }
+    ids.all(s.coarse, n, "a sub-model's coarse node");
+    ids.size(s.coarse_x0.size(), nc, "a sub-model's coarse positions");
+    ids.size(s.coarse_force.size(), nc, "a sub-model's coarse forces");
+  }
+  for (const SubModelRequest& q : subs.requests) {
+    ids.in(q.main_node, n, "a sub-model request's node");
+    ids.in(q.ea, n, "a sub-model request's edge node", -1);
+    ids.in(q.eb, n, "a sub-model request's edge node", -1);
+  }
+  ids.size(subs.request_touch.size(), subs.requests.size(), "the sub-model requests' touches");
+  ids.all(subs.request_touch, st.log.touches.size(), "a sub-model request's touch");
+  if (!subs.elem_owner.empty()) ids.size(subs.elem_owner.size(), ne, "the element owners");
+  ids.all(subs.elem_owner, subs.live.size(), "an element's sub-model", -1);
+  for (const PenaltyContact& p : st.penalty_contacts) {
+    ids.in(p.node, n, "a penalty spring's node");
+    ids.in(p.a, n, "a penalty spring's edge node");
+    ids.in(p.b, n, "a penalty spring's edge node");
+  }
+}
+
+}  // namespace
+
+void write_state(ByteWriter& w, const ModelSetup& su, const ModelState& st) {
+  // The opening record: what the restoring model checks it matches.
+  w.u32(kStateLayout);
+  w.u64(setup_hash(su));
+  w.u64(su.scene.blocks.size());
+  w.u64(su.scene.materials.size());
+  w.i32(coarse_element_count(st.mesh));
+  w.f64(su.dt);
+
+  // The clock.
+  put(w, st.time);
+  put(w, st.step_t0);
+  put(w, st.steps);
+  // The nodes, the blocks.
+  const NodeState& nd = st.nodes;
+  for (const auto* v : {&nd.x, &nd.v, &nd.xs, &nd.f, &nd.iface, &nd.iface0, &nd.iimp}) put(w, *v);
+  put(w, nd.m);
+  put(w, nd.inv_m);
+  put(w, nd.block);
+  w.u64(nd.kind.size());
+  for (NodeKind k : nd.kind) put_enum(w, k);
+  put(w, nd.hang_a);
+  put(w, nd.hang_b);
+  put(w, nd.hang_w);
+  put(w, nd.clone_count);
+  put(w, nd.released_at);
+  put(w, nd.scratch);
+  put(w, st.blocks);
+  // The mesh: elements, lattices, the edge map by key, the coarse boundary,
+  // then the derived lists.
+  const MeshState& mesh = st.mesh;
+  put(w, mesh.elems);
+  put(w, mesh.lattices);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(mesh.edges.size());
+  for (const auto& kv : mesh.edges) keys.push_back(kv.first);
+  std::sort(keys.begin(), keys.end());
+  w.u64(keys.size());
+  for (std::uint64_t key : keys) {
+    w.u64(key);
+    put(w, mesh.edges.at(key));
+  }
+  put(w, mesh.coarse_bedges);
+  put(w, mesh.coarse_bedge_elem);
+  put(w, mesh.bedges);
+  put(w, mesh.block_bedges);
+  put(w, mesh.bnodes);
+  for (const auto* v : {&mesh.coarse_elems, &mesh.fine_elems, &mesh.coarse_eval, &mesh.patch_eval, &mesh.coarse_dofs,
+                        &mesh.fine_dofs, &mesh.hanging})
+    put(w, *v);
+  // Clones, the touches per node of the current step (by node).
+  put(w, st.clones);
+  std::vector<std::pair<int, int>> touched(st.step_touch_count.begin(), st.step_touch_count.end());
+  std::sort(touched.begin(), touched.end());
+  w.u64(touched.size());
+  for (const auto& [node, count] : touched) {
+    w.i32(node);
+    w.i32(count);
+  }
+  // The in-place patches, the sub-models.
+  put(w, st.patches.k);
+  put(w, st.patches.substeps);
+  put(w, st.patches.substeps_taken);
+  const SubModels& subs = st.submodels;
+  put(w, subs.live);
+  put(w, subs.records);
+  put(w, subs.requests);
+  put(w, subs.request_touch);
+  put(w, subs.elem_owner);
+  put(w, subs.substeps_taken);
+  // The penalty springs, the energy ledger, the contact log.
+  put(w, st.penalty_contacts);
+  const EnergyLedger& e = st.energy;
+  for (double x : {e.initial, e.impact_loss, e.remap_change, e.refine_loss, e.deletion_loss, e.touch_loss_eq5,
+                   e.touch_loss_eq5_group})
+    put(w, x);
+  put(w, st.log.touches);
+  put(w, st.log.separations);
+  put(w, st.log.slips);
+}
+
+ModelState read_state(ByteReader& r, const ModelSetup& su) {
+  const std::uint32_t layout = r.u32();
+  if (layout != kStateLayout)
+    r.fail("cdem state layout " + std::to_string(layout) + ", this build reads layout " + std::to_string(kStateLayout));
+  const std::uint64_t hash = r.u64(), blocks = r.u64(), materials = r.u64();
+  const int coarse = r.i32();
+  const double dt = r.f64();
+  if (blocks != su.scene.blocks.size() || materials != su.scene.materials.size())
+    r.fail("a state of another scene: " + std::to_string(blocks) + " blocks of " + std::to_string(materials) +
+           " materials, this scene has " + std::to_string(su.scene.blocks.size()) + " of " +
+           std::to_string(su.scene.materials.size()));
+  if (!(dt == su.dt))
+    r.fail("a state of another scene: its dt differs from this scene's");
+  if (hash != setup_hash(su))
+    r.fail("a state of another scene: its blocks, meshes, materials, gravity or cdem options differ from this scene's");
+
+  ModelState st;
+  get(r, st.time);
+  get(r, st.step_t0);
+  get(r, st.steps);
+  NodeState& nd = st.nodes;
+  for (auto* v : {&nd.x, &nd.v, &nd.xs, &nd.f, &nd.iface, &nd.iface0, &nd.iimp}) get(r, *v);
+  get(r, nd.m);
+  get(r, nd.inv_m);
+  get(r, nd.block);
+  nd.kind.resize(r.count(1));
+  for (NodeKind& k : nd.kind) k = get_enum<NodeKind>(r, static_cast<std::uint8_t>(NodeKind::kDead), "a node kind");
+  get(r, nd.hang_a);
+  get(r, nd.hang_b);
+  get(r, nd.hang_w);
+  get(r, nd.clone_count);
+  get(r, nd.released_at);
+  get(r, nd.scratch);
+  get(r, st.blocks);
+  MeshState& mesh = st.mesh;
+  get(r, mesh.elems);
+  get(r, mesh.lattices);
+  // The edges and the touch counts in increasing key order (one state, one stream).
+  const std::size_t edges = r.count(8);
+  std::uint64_t last_key = 0;
+  for (std::size_t k = 0; k < edges; ++k) {
+    const std::uint64_t key = r.u64();
+    if (k > 0 && !(key > last_key)) r.fail("the edges are not in increasing key order");
+    last_key = key;
+    MeshEdge& e = mesh.edges[key];
+    get(r, e);
+    if (e.lo < 0 || e.hi < 0 || !(e.lo < e.hi) || edge_key(e.lo, e.hi) != key) r.fail("an edge's nodes do not match its key");
+  }
+  get(r, mesh.coarse_bedges);
+  get(r, mesh.coarse_bedge_elem);
+  get(r, mesh.bedges);
+  get(r, mesh.block_bedges);
+  get(r, mesh.bnodes);
+  for (auto* v : {&mesh.coarse_elems, &mesh.fine_elems, &mesh.coarse_eval, &mesh.patch_eval, &mesh.coarse_dofs,
+                  &mesh.fine_dofs, &mesh.hanging})
+    get(r, *v);
+  get(r, st.clones);
+  const std::size_t touched = r.count(8);
+  int last_node = 0;
+  for (std::size_t k = 0; k < touched; ++k) {
+    const int node = r.i32();
+    if (k > 0 && !(node > last_node)) r.fail("the touch counts are not in increasing node order");
+    last_node = node;
+    st.step_touch_count.emplace(node, r.i32());
+  }
+  get(r, st.patches.k);
+  get(r, st.patches.substeps);
+  get(r, st.patches.substeps_taken);
+  SubModels& subs = st.submodels;
+  get(r, subs.live);
+  get(r, subs.records);
+  get(r, subs.requests);
+  get(r, subs.request_touch);
+  get(r, subs.elem_owner);
+  get(r, subs.substeps_taken);
+  get(r, st.penalty_contacts);
+  EnergyLedger& e = st.energy;
+  for (double* x : {&e.initial, &e.impact_loss, &e.remap_change, &e.refine_loss, &e.deletion_loss, &e.touch_loss_eq5,
+                    &e.touch_loss_eq5_group})
+    get(r, *x);
+  get(r, st.log.touches);
+  get(r, st.log.separations);
+  get(r, st.log.slips);
+
+  if (st.blocks.size() != su.scene.blocks.size()) r.fail("the state's blocks do not match the scene's");
+  if (coarse_element_count(mesh) != coarse)
+    r.fail("the state holds " + std::to_string(coarse_element_count(mesh)) + " coarse elements, its opening record " +
+           std::to_string(coarse));
+  check(r, su, st);
+  return st;
+}
+
+void Model::save_state(ByteWriter& w) const { write_state(w, setup_, state_); }
+
+void Model::restore_state(ByteReader& r) {
+  // Read and checked whole before the model's state is replaced.
+  ModelState st = read_state(r, setup_);
+  const int coarse = coarse_element_count(state_.mesh);
+  if (coarse_element_count(st.mesh) != coarse)
+    r.fail("a state of another scene: " + std::to_string(coarse_element_count(st.mesh)) + " coarse elements, this scene has " +
+           std::to_string(coarse));
+  state_ = std::move(st);
+}
+
+}  // namespace dda::cdem
