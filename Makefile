@@ -126,7 +126,8 @@ fuzz: build
 # First the instruction counts (callgrind, lib/bench/instructions.py: the
 # Sect. 6.1 collapse's first 0.2 s, the guards' share of it, and the full
 # normal contact per overlapping pair against Box2D 2.4's manifold, each
-# beside the same count on commit 48051c9; ~2 min), then the wall times:
+# beside the same count on commit 48051c9, counted with LTO: run
+# make bench LTO=ON to compare like with like; ~3 min), then the wall times:
 # the geometry kernel per polygon pair (Google Benchmark) and our pair cost
 # against Box2D 2.4's, then the Sect. 6.1 collapse (case 1) with 1 and 2
 # threads and as two independent 1-thread runs at once (the host's ceiling):

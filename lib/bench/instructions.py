@@ -61,12 +61,30 @@ def per_pair(bin_dir, n, mode):
     return (three - one) / (2 * PAIRS), out1.strip()
 
 
+def build_setting(bin_dir, name):
+    """A cache entry of the CMake build tree that holds bin_dir ("?" if not found)."""
+    cache = os.path.join(os.path.dirname(os.path.abspath(bin_dir)), "CMakeCache.txt")
+    try:
+        with open(cache) as f:
+            for line in f:
+                if line.startswith(name + ":"):
+                    return line.split("=", 1)[1].strip()
+    except OSError:
+        pass
+    return "?"
+
+
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
     bin_dir = sys.argv[1]
     skip_collapse = "--skip-collapse" in sys.argv[2:]
-    print("== instructions (callgrind), against %s" % BASE_COMMIT)
+    lto = build_setting(bin_dir, "DDA_LTO")
+    print("== instructions (callgrind), against %s (Release, DDA_LTO=ON); this build: %s, DDA_LTO=%s" %
+          (BASE_COMMIT, build_setting(bin_dir, "CMAKE_BUILD_TYPE"), lto))
+    if lto != "ON":
+        print("   (not like with like: without link-time optimisation the collapse window counts ~2.5 %% more; "
+              "make bench LTO=ON, or a build tree configured with -DDDA_LTO=ON)")
     if not skip_collapse:
         with tempfile.TemporaryDirectory() as tmp:
             ir, _ = callgrind([os.path.join(bin_dir, "collapse"), "--out", tmp, "--case", "1", "--threads", "1",
