@@ -83,7 +83,7 @@ def main():
     print("== instructions (callgrind), against %s (Release, DDA_LTO=ON); this build: %s, DDA_LTO=%s" %
           (BASE_COMMIT, build_setting(bin_dir, "CMAKE_BUILD_TYPE"), lto))
     if lto != "ON":
-        print("   (not like with like: without link-time optimisation the collapse window counts ~2.5 %% more; "
+        print("   (not like with like: without link-time optimisation the collapse window counts ~2.5 % more; "
               "make bench LTO=ON, or a build tree configured with -DDDA_LTO=ON)")
     if not skip_collapse:
         with tempfile.TemporaryDirectory() as tmp:
