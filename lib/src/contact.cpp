@@ -18,21 +18,23 @@ constexpr double kSixth = 1.0 / 6.0;  // a multiplication instead of a division 
 // Crossings of one IP edge with rays or envelope kinks: parameters strictly
 // inside (0, 1) (the end points are demarcation points anyway; so is 1/2,
 // which integrate_edge skips as a repeated point).
+// Insertion sort of t[0..count): a handful of points.
+inline void sort_points(double* t, int count) {
+  for (int i = 1; i < count; ++i) {
+    const double x = t[i];
+    int j = i;
+    for (; j > 0 && t[j - 1] > x; --j) t[j] = t[j - 1];
+    t[j] = x;
+  }
+}
+
 struct Crossings {
   std::array<double, 4 * kMaxVertices> t;  // left uninitialised: count says how many are set
   int count = 0;
   void add(double x) {
     if (x > 0.0 && x < 1.0 && count < static_cast<int>(t.size())) t[static_cast<std::size_t>(count++)] = x;
   }
-  // Insertion sort: a handful of points.
-  void sort() {
-    for (int i = 1; i < count; ++i) {
-      const double x = t[static_cast<std::size_t>(i)];
-      int j = i;
-      for (; j > 0 && t[static_cast<std::size_t>(j - 1)] > x; --j) t[static_cast<std::size_t>(j)] = t[static_cast<std::size_t>(j - 1)];
-      t[static_cast<std::size_t>(j)] = x;
-    }
-  }
+  void sort() { sort_points(t.data(), count); }
 };
 
 using detail::LaneMask;
@@ -193,11 +195,13 @@ struct EdgeSums {
 };
 
 // The sums over the demarcation points of one edge: t = 0, the sorted
-// crossings cr below 1/2, 1/2, those above, 1, each point once (a crossing
-// equal to the one before, or to 1/2, adds no segment); traction_at(t) gives
-// the traction at a crossing (f_start, f_mid, f_end at the fixed points).
+// crossings t[0..count) (all inside (0, 1)) below 1/2, 1/2, those above, 1,
+// each point once (a crossing equal to the one before, or to 1/2, adds no
+// segment); traction_at(t) gives the traction at a crossing (f_start, f_mid,
+// f_end at the fixed points).
 template <class TractionAt>
-[[gnu::always_inline]] inline EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end, TractionAt&& traction_at) {
+[[gnu::always_inline]] inline EdgeSums integrate_sorted(const double* t_sorted, int count, double f_start, double f_mid,
+                                                        double f_end, TractionAt&& traction_at) {
   EdgeSums sums;
   double t0 = 0.0, fa = f_start;
   auto segment_to = [&](double t1, double fb) {
@@ -209,17 +213,22 @@ template <class TractionAt>
     fa = fb;
   };
   int i = 0;
-  for (; i < cr.count && cr.t[static_cast<std::size_t>(i)] < 0.5; ++i) {
-    const double t = cr.t[static_cast<std::size_t>(i)];
+  for (; i < count && t_sorted[i] < 0.5; ++i) {
+    const double t = t_sorted[i];
     if (t != t0) segment_to(t, traction_at(t));  // two rays, one point: once
   }
   segment_to(0.5, f_mid);
-  for (; i < cr.count; ++i) {  // all the rest are below 1 (Crossings::add)
-    const double t = cr.t[static_cast<std::size_t>(i)];
+  for (; i < count; ++i) {  // all the rest are below 1
+    const double t = t_sorted[i];
     if (t != t0) segment_to(t, traction_at(t));
   }
   segment_to(1.0, f_end);
   return sums;
+}
+template <class TractionAt>
+[[gnu::always_inline]] inline EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end,
+                                                      TractionAt&& traction_at) {
+  return integrate_sorted(cr.t.data(), cr.count, f_start, f_mid, f_end, traction_at);
 }
 
 // Demarcation points of one side on an edge (Sect. 3.2.3 steps 1-4): the
@@ -377,31 +386,8 @@ template <int kN, bool kMinus>
     sums = integrate_halves(f_start, f_mid, f_end);
     return true;
   }
-  // Crossings::sort's insertion sort, then integrate_edge's walk.
-  for (int i = 1; i < count; ++i) {
-    const double x = cross[i];
-    int j = i;
-    for (; j > 0 && cross[j - 1] > x; --j) cross[j] = cross[j - 1];
-    cross[j] = x;
-  }
-  EdgeSums out;
-  double t0 = 0.0, fa = f_start;
-  const auto segment_to = [&](double t1, double fb) {
-    const double dt = t1 - t0;
-    out.s0 += dt * (fa + fb);
-    out.s1 += dt * (fa * (2.0 * t0 + t1) + fb * (t0 + 2.0 * t1));
-    ++out.segments;
-    t0 = t1;
-    fa = fb;
-  };
-  int i = 0;
-  for (; i < count && cross[i] < 0.5; ++i)
-    if (cross[i] != t0) segment_to(cross[i], traction(at(cross[i])));
-  segment_to(0.5, f_mid);
-  for (; i < count; ++i)
-    if (cross[i] != t0) segment_to(cross[i], traction(at(cross[i])));
-  segment_to(1.0, f_end);
-  sums = out;
+  sort_points(cross, count);
+  sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
   return true;
 }
 
