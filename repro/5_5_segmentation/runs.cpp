@@ -1,5 +1,5 @@
-// The comparison, scans, fuzz, trajectories and criteria of the 5.5 driver
-// (see segmentation.hpp), shared with the negative controls.
+// The 5.5 driver's runs (segmentation.hpp): the contacts along the Sect. 4-5
+// runs, the fuzzed pairs and the side-by-side trajectories.
 #include <algorithm>
 #include <cmath>
 
@@ -11,71 +11,10 @@
 namespace segmentation {
 
 using dda::Integration;
-using dda::NormalForce;
 using dda::Polygon;
-using dda::PotentialSide;
 using dda::SmallEdgeRays;
 using dda::Vec2;
 using repro::format_short;
-
-Errors compare(const Polygon& a, double kn_h_a, double small_a, const Polygon& b, double kn_h_b, double small_b) {
-  Errors e;
-  const double tol = dda::pair_tolerance(a, b);
-  const Polygon ip = dda::intersection_polygon(a, b, tol);
-  if (ip.count < 3) return e;
-  PotentialSide sa{a, kn_h_a, small_a}, sb{b, kn_h_b, small_b};
-  const NormalForce fe = dda::normal_contact_force(sa, sb, ip, Integration::kExactEnvelope, tol);
-  const double fe_len = dda::length(fe.force), dia = dda::diameter(ip);
-  if (!fe.valid || !(fe_len > 0.0)) return e;
-  for (std::size_t m = 0; m < kModes.size(); ++m) {
-    sa.small_edge_rays = sb.small_edge_rays = kModes[m];
-    const NormalForce fp = dda::normal_contact_force(sa, sb, ip, Integration::kPaperBisector, tol);
-    if (!fp.valid) return e;
-    e.mode[m].force = dda::length(fp.force - fe.force) / fe_len;
-    e.mode[m].point = dda::distance(fp.point, fe.point) / dia;
-  }
-  e.valid = true;
-  const double r = std::min(dda::inscribed_circle(a).radius, dda::inscribed_circle(b).radius);
-  e.depth_ratio = 2.0 * dda::inscribed_circle(ip).radius / (2.0 * r);
-  return e;
-}
-
-// ---- ModeStats ---------------------------------------------------------------------
-
-void ModeStats::add(const ModeError& m) {
-  ++n;
-  nonzero += m.force > kExactTolerance ? 1 : 0;
-  max_force = std::max(max_force, m.force);
-  max_point = std::max(max_point, m.point);
-  force_errors.push_back(m.force);
-}
-
-double ModeStats::nonzero_percent() const {
-  return n ? 100.0 * static_cast<double>(nonzero) / static_cast<double>(n) : 0.0;
-}
-
-double ModeStats::percentile(double q) const {
-  if (force_errors.empty()) return 0.0;
-  std::vector<double> v = force_errors;
-  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
-  return v[k];
-}
-
-bool ModeStats::same_as(const ModeStats& o) const { return force_errors == o.force_errors && max_point == o.max_point; }
-
-std::string ModeStats::describe() const {
-  return format_short(nonzero_percent(), 3) + " % with a force error > 1e-8 (above round-off); relative force error max " +
-         format_short(max_force, 3) + ", median " + format_short(percentile(0.5), 3) + ", 99th percentile " +
-         format_short(percentile(0.99), 3) + "; loading point error max " + format_short(max_point, 3) +
-         " of the IP diameter";
-}
-
-std::string ModeStats::brief() const {
-  return format_short(nonzero_percent(), 3) + " % with a force error > 1e-8, median " + format_short(percentile(0.5), 3) +
-         ", max " + format_short(max_force, 3) + ", loading point error max " + format_short(max_point, 3) +
-         " of the IP diameter";
-}
 
 // ---- 1. contacts along a run ----------------------------------------------------
 
@@ -104,29 +43,6 @@ SceneStats scan(const std::string& name, const dda::Scene& scene, int every, int
   }
   st.seconds = clock.elapsed_seconds();
   return st;
-}
-
-repro::Claim exact_row(const std::vector<SceneStats>& scans, std::size_t tested) {
-  std::array<double, 2> worst = {0.0, 0.0};  // largest force error over every scene, per reading
-  std::array<long, 2> nonzero = {0, 0};
-  long contacts = 0;
-  for (const SceneStats& st : scans) {
-    for (std::size_t m = 0; m < kModes.size(); ++m) {
-      worst[m] = std::max(worst[m], st.mode[m].max_force);
-      nonzero[m] += st.mode[m].nonzero;
-    }
-    contacts += st.mode[0].n;
-  }
-  repro::Claim c{kSection,
-                 "the library default (paper's printed small-edge rule) integrates every contact of the Sect. 4-5 runs exactly",
-                 "Sect. 3.2.3: 'Both the real nodes and virtual nodes of CP or TP are used'",
-                 std::to_string(contacts) + " contact evaluations in " + std::to_string(scans.size()) +
-                     " runs: largest relative force error " + kPaperRuleName + " " + format_short(worst[0], 3) + " (" +
-                     std::to_string(nonzero[0]) + " above 1e-8); " + kReplaceRuleName + " at the same states " +
-                     format_short(worst[1], 3) + " (" + std::to_string(nonzero[1]) + " above 1e-8)",
-                 "paper's rule: max relative force error < 1e-8", worst[tested] < kExactTolerance};
-  c.control = std::string("repro_controls: ") + kControlExact;
-  return c;
 }
 
 // ---- 2. fuzzed pairs ---------------------------------------------------------------
@@ -262,29 +178,6 @@ TrajResult run_trajectory(const Traj& t, std::size_t k, repro::CsvWriter& traj) 
   r.energy = {m0.stats().energy_error, m1.stats().energy_error, m2.stats().energy_error};
   r.identical = between == 0.0 && r.energy[0] == r.energy[1];
   return r;
-}
-
-// ---- 4. the rectangle's middle segment ------------------------------------------
-
-Errors rectangle_case(double depth) {
-  const Vec2 r[4] = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
-  const Polygon tp = dda::make_polygon(r, 4);
-  const double s = 0.5 * std::sqrt(2.0);
-  const Vec2 q[4] = {{1.0, 1.0 - depth}, {1.0 + s, 1.0 - depth + s}, {1.0, 1.0 - depth + 2 * s}, {1.0 - s, 1.0 - depth + s}};
-  const Polygon cp = dda::make_polygon(q, 4);
-  return compare(cp, 1.0, 0.0, tp, 1.0, 0.0);  // no small edges: both readings are the same rays
-}
-
-repro::Claim rectangle_row(double depth, const Errors& e) {
-  repro::Claim c{kSection,
-                 "a square's corner " + format_short(depth) +
-                     " m deep in a 2 m x 1 m rectangle (crossing the middle medial segment)",
-                 "the rectangle's middle segment y = 0.5 carries no vertex bisector ray",
-                 "relative force error " + format_short(e.mode[0].force, 3) + ", loading point error " +
-                     format_short(e.mode[0].point, 3) + " of the IP diameter (no small edge: either reading)",
-                 "> 1e-6 (the rule is not exact here)", e.valid && e.mode[0].force > kInexactThreshold};
-  c.control = std::string("repro_controls: ") + kControlRectangle;
-  return c;
 }
 
 }  // namespace segmentation
