@@ -49,29 +49,6 @@ double penetration(const dda::Simulation& sim) {
   return -lo;  // B's top is y = 0
 }
 
-std::vector<Case> resting_cases() {
-  std::vector<Case> out;
-  for (dda::HRule h : {dda::HRule::kMinMaxEdge, dda::HRule::kInscribedRadius})
-    for (dda::Integration rule : {dda::Integration::kPaperBisector, dda::Integration::kExactEnvelope}) {
-      const Resting r = resting_block(h, 0.0);
-      Case c = make_case("resting block", kit::option_name(rule, h, true), r.sc, -3, 6,
-                         0.0064);  // 1.25e-5 .. 6.4e-3 s
-      c.sc.contact.integration = rule;
-      c.measures = {{"deepest penetration", "energy: kn [L s delta / 2 - delta^2 / (3 H_A)] = W", 1e-12}};
-      const double dmax = r.max_pen();
-      c.observer = [dmax] {
-        auto deepest = std::make_shared<double>(0.0);
-        Observer o;
-        o.step = [deepest](const dda::Simulation& sim) { *deepest = std::max(*deepest, penetration(sim)); };
-        o.end = [deepest, dmax](const dda::Simulation&) { return std::vector<double>{std::fabs(*deepest - dmax) / dmax}; };
-        return o;
-      };
-      kit::whole_run_trajectory(c);
-      out.push_back(c);
-    }
-  return out;
-}
-
 // A free block spinning at 2 rad/s, no contact, no gravity: isolates the
 // kinematic update. DDA moves each vertex by T(p) dd (Eq. 8), a linearised
 // rotation: each step scales the block by sqrt(1 + (w dt)^2), so over a
@@ -101,6 +78,35 @@ std::vector<Case> free_rotation_cases() {
     };
     out.push_back(c);
   }
+  return out;
+}
+
+namespace {
+// The deepest penetration over the run against the energy estimate dmax
+// (relative).
+Observer deepest_penetration(double dmax) {
+  auto deepest = std::make_shared<double>(0.0);
+  Observer o;
+  o.step = [deepest](const dda::Simulation& sim) { *deepest = std::max(*deepest, penetration(sim)); };
+  o.end = [deepest, dmax](const dda::Simulation&) { return std::vector<double>{std::fabs(*deepest - dmax) / dmax}; };
+  return o;
+}
+}  // namespace
+
+std::vector<Case> resting_cases() {
+  std::vector<Case> out;
+  for (dda::HRule h : {dda::HRule::kMinMaxEdge, dda::HRule::kInscribedRadius})
+    for (dda::Integration rule : {dda::Integration::kPaperBisector, dda::Integration::kExactEnvelope}) {
+      const Resting r = resting_block(h, 0.0);
+      Case c = make_case("resting block", kit::option_name(rule, h, true), r.sc, -3, 6,
+                         0.0064);  // 1.25e-5 .. 6.4e-3 s
+      c.sc.contact.integration = rule;
+      c.measures = {{"deepest penetration", "energy: kn [L s delta / 2 - delta^2 / (3 H_A)] = W", 1e-12}};
+      const double dmax = r.max_pen();
+      c.observer = [dmax] { return deepest_penetration(dmax); };
+      kit::whole_run_trajectory(c);
+      out.push_back(c);
+    }
   return out;
 }
 
