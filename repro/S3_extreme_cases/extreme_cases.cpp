@@ -41,7 +41,8 @@
 // in ctest).
 //
 // Output: data/extreme_cases/table.csv, data/extreme_cases/guard_series.csv,
-// claims/S3_extreme_cases.csv.#include <string>
+// claims/S3_extreme_cases.csv.
+#include <string>
 #include <vector>
 
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
