@@ -40,7 +40,8 @@
 // overlaps and near a small edge's virtual node.
 //
 // The comparison, the scans and the criteria of the check rows are in
-// segmentation.hpp / checks.cpp (shared with the negative controls).
+// segmentation.hpp: compare.cpp, runs.cpp and criteria.cpp (shared with the
+// negative controls).
 //
 // Output: data/segmentation/contacts.csv, summary.csv (1), fuzz.csv (2),
 // trajectories.csv, trajectory_runs.csv (3); claims/5_5_segmentation.csv.

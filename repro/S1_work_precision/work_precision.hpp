@@ -1,5 +1,6 @@
 // S1 work precision (see work_precision.cpp for what it measures): the
-// scenes with a reference (cases.cpp), the dt sweep (sweep.cpp) and the
+// scenes with a reference (cases.cpp: the paper's, cases_ours.cpp: ours; their
+// parts in case_kit.hpp), the dt sweep (sweep.cpp) and the
 // claim rows with their criteria (claims.cpp). The criteria are functions
 // here so that the negative controls (repro/common/test_controls.cpp) apply
 // the same ones to a deliberately wrong configuration.
@@ -65,7 +66,7 @@ RunOut monitored_run(const Case& c, double dt, bool observe = true);
 // Median wall and CPU time of unmonitored runs of the scene at dt.
 repro::stab::Timing timed_run(const dda::Scene& sc, double dt);
 
-// ---- scenes (cases.cpp) ----------------------------------------------------
+// ---- scenes (cases.cpp, cases_ours.cpp) -------------------------------------
 std::vector<Case> all_cases();
 std::vector<Case> free_rotation_cases();  // [0] the paper's rotation, [1] exact (not the paper's)
 
