@@ -25,59 +25,47 @@ Run timed(F run) {
 
 Study run_study(const Setup& s, int max_ny, const std::function<void(const Run&)>& note) {
   const double E = s.material.young;
-  Study study_;
-  std::vector<Run>& runs = study_.runs;
-  std::map<std::string, Trace>& traces = study_.traces;
+  Study study;
+  // A run of the series, timed; `run` fills the trace `tr` (recorded anew at each repeat).
+  auto add = [&](const char* series, Trace& tr, const std::function<Run(Trace*)>& run) {
+    Run r = timed([&] {
+      tr = Trace{};
+      return run(&tr);
+    });
+    r.series = series;
+    study.runs.push_back(r);
+    note(r);
+    return r;
+  };
   // Mesh series, dt = kCourant h / c; the trace of each CDEM model on its
   // finest completed mesh (kept as the series goes).
   for (const bool sub : {false, true})
     for (int ny : kMeshNy) {
       if (ny > max_ny) continue;
       Trace tr;
-      Run r = timed([&] {
-        tr = Trace{};
-        return run_cdem(s, ny, 0.0, sub, &tr);
-      });
-      r.series = "mesh";
-      if (r.ok()) traces[r.model] = tr;
-      runs.push_back(r);
-      note(r);
+      const Run r = add("mesh", tr, [&](Trace* t) { return run_cdem(s, ny, 0.0, sub, t); });
+      if (r.ok()) study.traces[r.model] = tr;
     }
   // dt series on one mesh (its first point is the mesh series' run).
   for (const bool sub : {false, true})
     for (double courant : kDtSweepCourant) {
       if (kDtSweepNy > max_ny) continue;
       const double dt = courant * (s.width / kDtSweepNy) / s.wave_speed();
-      Run r = timed([&] { return run_cdem(s, kDtSweepNy, dt, sub); });
-      r.series = "dt";
-      runs.push_back(r);
-      note(r);
+      Trace unused;
+      add("dt", unused, [&](Trace*) { return run_cdem(s, kDtSweepNy, dt, sub); });
     }
   // Paper A: dt series at kn = E / 100, kn series at the smallest dt.
   for (double dt : kDdaDt) {
     Trace tr;
-    Run r = timed([&] {
-      tr = Trace{};
-      return run_dda(s, dt, 0.01 * E, &tr);
-    });
-    r.series = "dt";
-    if (dt == kDdaDt[2]) traces["A"] = tr;
-    runs.push_back(r);
-    note(r);
+    add("dt", tr, [&](Trace* t) { return run_dda(s, dt, 0.01 * E, t); });
+    if (dt == kDdaDt[2]) study.traces["A"] = tr;
   }
   for (double f : kKnFactors) {
     Trace tr;
-    Run r = timed([&] {
-      tr = Trace{};
-      return run_dda(s, kDdaDt[3], f * E, &tr);
-    });
-    r.series = "kn";
-    if (f == 1.0) traces["A kn=E"] = tr;
-    runs.push_back(r);
-    note(r);
+    add("kn", tr, [&](Trace* t) { return run_dda(s, kDdaDt[3], f * E, t); });
+    if (f == 1.0) study.traces["A kn=E"] = tr;
   }
-
-  return study_;
+  return study;
 }
 
 }  // namespace bars
