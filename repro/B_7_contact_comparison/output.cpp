@@ -20,13 +20,14 @@ void write_data(const std::string& dir, const std::vector<Result>& results,
        "smallest dt. wall_s: mean of repeated runs.",
        // the mode scene_defs() sets for B (the figure labels B's curves with it)
        "subdivision mode of B: in-place refinement (beyond the paper)"});
-  for (const Result& r : results)
-    csv.row(std::vector<std::string>{
-        r.scene, r.model, repro::format_full(r.dt), repro::format_full(r.wall), std::to_string(r.steps),
-        repro::format_full(r.t_touch), repro::format_full(r.touch_err), repro::format_full(r.mom_err),
-        repro::format_full(r.energy_err_end), repro::format_full(r.energy_err_max), repro::format_full(r.v_i),
-        repro::format_full(r.v_j), repro::format_full(r.vj_err_exchange), repro::format_full(r.vj_err_self),
-        repro::format_full(r.contact_start), repro::format_full(r.contact_end)});
+  for (const Result& r : results) {
+    std::vector<std::string> row = {r.scene, r.model, repro::format_full(r.dt), repro::format_full(r.wall),
+                                    std::to_string(r.steps)};
+    for (double v : {r.t_touch, r.touch_err, r.mom_err, r.energy_err_end, r.energy_err_max, r.v_i, r.v_j,
+                     r.vj_err_exchange, r.vj_err_self, r.contact_start, r.contact_end})
+      row.push_back(repro::format_full(v));
+    csv.row(row);
+  }
   csv.commit();
   repro::CsvWriter hcsv(dir + "history.csv", {"scene", "model", "time", "vx_i", "vx_j"});
   for (const auto& [key, h] : histories) {
