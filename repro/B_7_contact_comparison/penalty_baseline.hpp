@@ -4,8 +4,8 @@
 // baseline. Same scenes, meshes and dt sweeps as B0; kn =
 // E / 100 of the scene's material (0.4 GPa on the prisms, 10 MPa on the
 // squares: the kn of A), frictionless, undamped.
-// The runs and the criteria of P's rows are here (header-only, like
-// contact_comparison.hpp) so that the negative controls
+// The runs (run.cpp) and the criteria of P's rows (criteria.cpp) are
+// declared here so that the negative controls
 // (repro/common/controls_node_to_edge.cpp) apply the same criteria; the rows
 // are written by penalty_baseline.cpp.
 #pragma once
