@@ -1,9 +1,8 @@
 // Paper A Sect. 3.2.2 (potential_fields.cpp says what it reproduces): the
 // reconstructed polygons (geometry.cpp), the potential grids (fields.cpp)
 // and the criteria of every check row (checks.cpp), declared here so that
-// the negative controls (repro/common/test_controls.cpp,
-// controls_geometry.cpp) apply the same criteria to a deliberately wrong
-// field or polygon.
+// the negative controls (controls.cpp beside it) apply the same criteria
+// to a deliberately wrong field or polygon.
 #pragma once
 #include <cstddef>
 #include <functional>
@@ -28,7 +27,7 @@ const char* const kSection = "3.2.2";
 // The negative control of the checks every field gets (add_common_claims).
 const char* const kFieldControl =
     "repro_controls: 3.2.2 potential field: FAIL on an offset, a shifted and a doubled field";
-// The negative controls of the figure-specific rows (controls_geometry.cpp).
+// The negative controls of the figure-specific rows (controls.cpp).
 inline const char* const kControlPenetration = "3.2.2 Fig. 4b equal penetration: FAIL with H set to each edge's length";
 inline const char* const kControlEdgeLines =
     "3.2.2 Fig. 4b edge lines = shortest distance: FAIL on the concave Fig. 5 polygon";

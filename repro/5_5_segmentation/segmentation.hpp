@@ -1,7 +1,7 @@
 // Beyond Paper A Sect. 3.2.3 (segmentation.cpp says what it measures): the
 // comparison of the paper's segmentation with the exact integration, the
 // scans, the fuzzed pairs, the rectangle case and the criteria of the check
-// rows, here so that the negative controls (repro/common/controls_geometry.cpp)
+// rows, here so that the negative controls (controls.cpp beside it)
 // apply the same criteria to a deliberately wrong configuration.
 #pragma once
 #include <array>

@@ -42,7 +42,7 @@
 //
 // The runs, measures and criteria are in collapse.hpp (library
 // collapse_cases), shared with the rows' negative controls
-// (repro/common/controls_6_1.cpp).
+// (controls.cpp beside it).
 #include <algorithm>
 #include <cstdio>
 #include <string>

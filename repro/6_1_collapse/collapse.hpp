@@ -1,7 +1,7 @@
 // Paper A Sect. 6.1 (collapse.cpp says what it reproduces): the measures of
 // a run, one case's run (with or without its output files), the renumbered
 // reruns and the criteria of the claim rows, here so that the negative
-// controls (repro/common/controls_6_1.cpp) apply the same criteria to
+// controls (controls.cpp beside it) apply the same criteria to
 // deliberately wrong configurations.
 #pragma once
 #include <array>
@@ -114,7 +114,7 @@ bool runs_out_further(const Sample& a, const Sample& b);
 // Round-off: runs_out_further(case 1, case 2) in every numbering.
 bool ordering_survives(const Ends& ends);
 
-// ---- the negative controls (repro/common/controls_6_1.cpp) named by the rows
+// ---- the negative controls (controls.cpp beside it) named by the rows
 inline constexpr const char* kControlGenerator =
     "6.1 generator: FAIL without the sliver filter and with the joint spacings a third";
 inline constexpr const char* kControlStable = "6.1 stable run: FAIL with dt twice the critical step";

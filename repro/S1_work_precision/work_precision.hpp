@@ -2,7 +2,7 @@
 // scenes with a reference (cases.cpp: the paper's, cases_ours.cpp: ours; their
 // parts in case_kit.hpp), the dt sweep (sweep.cpp) and the
 // claim rows with their criteria (claims.cpp). The criteria are functions
-// here so that the negative controls (repro/common/test_controls.cpp) apply
+// here so that the negative controls (controls.cpp beside it) apply
 // the same ones to a deliberately wrong configuration.
 #pragma once
 #include <algorithm>
@@ -150,7 +150,7 @@ struct Budget {
 // The budget rows: below 1e-3 of the energy turned over at every dt that ran.
 inline bool budget_closes(double max_error) { return max_error < 1e-3; }
 
-// The negative controls (test_controls.cpp) named by the rows.
+// The negative controls (controls.cpp) named by the rows.
 inline const char* const kControlOrder2 = "repro_controls: S1 order 2: FAIL on a first-order configuration";
 inline const char* const kControlOrder1 = "repro_controls: S1 order 1: FAIL on a second-order configuration";
 inline const char* const kControlRoundoff = "repro_controls: S1 round-off: FAIL on a first-order configuration";

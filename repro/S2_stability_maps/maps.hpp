@@ -1,6 +1,6 @@
 // S2 stability maps (stability_maps.cpp says what they show): the scenes,
 // the run of one (kn, dt) cell and its class, here so that the negative
-// controls (repro/common/test_controls.cpp) apply the same classification.
+// controls (controls.cpp beside it) apply the same classification.
 #pragma once
 #include <string>
 #include <vector>

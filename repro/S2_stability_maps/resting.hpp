@@ -1,7 +1,7 @@
 // S2, part 1 (stability_maps.cpp): the resting contacts whose stability
 // limit the solver's critical steps are checked against, the empirical limit
 // by bisection, and the rows' criteria, here so that the negative controls
-// (repro/common/test_controls.cpp) apply the same ones.
+// (controls.cpp beside it) apply the same ones.
 #pragma once
 #include <string>
 

@@ -1,7 +1,7 @@
 // S3 extreme cases (extreme_cases.cpp says what they are and expect): the
 // cases (cases.cpp), one run (run.cpp) and the row criteria (criteria.cpp),
 // declared here so that the negative controls
-// (repro/common/test_controls.cpp) apply the same criteria to deliberately
+// (controls.cpp beside it) apply the same criteria to deliberately
 // wrong configurations.
 #pragma once
 #include <string>

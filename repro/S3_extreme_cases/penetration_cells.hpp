@@ -1,6 +1,6 @@
 // S3 penetration map (penetration_map.cpp says what it shows): the cells,
 // one run of a cell and the rows' criteria, here so that the negative
-// controls (repro/common/test_controls.cpp) apply the same ones.
+// controls (controls.cpp beside it) apply the same ones.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,10 +1,10 @@
-// Negative controls of the rows of Paper B Sect. 5 as written (the
-// sub-model, SubdivisionMode::kSubModel): B-6's comparison rows
-// (prisms::mode_rows) and B-9's sub-model cells (impact::submodel_rows).
-// Each test applies the driver's own criterion to a deliberately wrong
-// configuration and asserts FAIL (and to a good one where it should PASS);
-// the rows name the tests through the shared test-name constants. Part of
-// repro_controls_tests (the main is in test_controls.cpp).
+// Negative controls of B-6's rows of Paper B Sect. 5 as written (the
+// sub-model, SubdivisionMode::kSubModel; prisms::mode_rows): the touch, the
+// energy and the momentum. Each test applies the driver's own criterion to
+// a deliberately wrong configuration (a wider gap, a step above the
+// critical one, the literal transfer of step 5) and asserts FAIL, and to
+// the paper's run where it should PASS; the rows name the tests through
+// the shared test-name constants.
 #include <catch2/catch.hpp>
 
 #include <functional>
@@ -12,9 +12,8 @@
 #include <vector>
 
 #include "repro/B_6_two_prisms/two_prisms.hpp"
-#include "repro/B_9_impact_study/impact_study.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/controls_rows.hpp"
+#include "repro/common/controls.hpp"
 
 namespace {
 
@@ -44,27 +43,6 @@ void b6_names_test(const std::string& claim_start, const char* test) {
       prisms::mode_rows(sub_run(), inplace_run(), inplace_run().r),
       [&claim_start](const repro::Claim& c) { return c.claim.rfind(claim_start, 0) == 0; }, test,
       "B-6 starting '" + claim_start + "'");
-}
-
-using impact::Cell;
-using impact::CellResult;
-
-// The good sub-model cell (30 deg, 5 m/s, mu 0.3) and its finished run.
-const Cell kGoodSubCell{30.0, 5.0, 0.3, true, false, true};
-const CellResult& good_sub_cell() {
-  static const CellResult r = impact::run_cell(kGoodSubCell);
-  return r;
-}
-
-// The good sub-model cell run on its scene changed by `edit`, at step dt.
-CellResult good_sub_cell_with(const std::function<void(dda::cdem::CdemScene&)>& edit, double dt = impact::kDt) {
-  dda::cdem::CdemScene s = impact::scene_of(kGoodSubCell, dt);
-  edit(s);
-  return impact::run_cell(kGoodSubCell, dt, &s);
-}
-
-void b9_names_test(const std::string& key, const char* test) {
-  controls::key_names_test(impact::submodel_rows({good_sub_cell()}, {}), key, test);
 }
 
 }  // namespace
@@ -122,53 +100,4 @@ TEST_CASE(prisms::kTestSubMomentum, "[controls][B-6][submodel]") {
   CHECK(prisms::momentum_conserved(sub_run().r));
   CHECK(prisms::momentum_conserved(k1));
   CHECK_FALSE(prisms::momentum_conserved(literal));
-}
-
-TEST_CASE(impact::kTestSubPassThrough, "[controls][B-9][submodel]") {
-  b9_names_test("submodel-no-pass-through", impact::kTestSubPassThrough);
-  REQUIRE(good_sub_cell().ok);
-  CHECK(impact::no_pass_through(good_sub_cell()));
-  const Cell c{0.0, 1.0, 0.0, true, false, true};
-  dda::cdem::CdemScene s = impact::scene_of(c);
-  const double depth = 2.0 * s.options.tolerance;
-  s.blocks[0].outline = impact::square(-impact::kSide + depth, -0.5 * impact::kSide);
-  const CellResult r = impact::run_cell(c, impact::kDt, &s);
-  INFO("outcome " << r.outcome);
-  CHECK_FALSE(impact::no_pass_through(r));
-}
-
-TEST_CASE(impact::kTestSubEnergy, "[controls][B-9][submodel]") {
-  b9_names_test("submodel-kinetic-energy", impact::kTestSubEnergy);
-  CHECK(impact::energy_never_grows(good_sub_cell()));
-  const double dt = 1.5 * dda::cdem::Model(impact::scene_of(kGoodSubCell)).critical_dt();
-  const CellResult r = good_sub_cell_with([](dda::cdem::CdemScene& s) { s.options.check_stability = false; }, dt);
-  INFO("outcome " << r.outcome << ", max KE/KE0 - 1 = " << r.ke_growth);
-  CHECK_FALSE(impact::energy_never_grows(r));
-}
-
-TEST_CASE(impact::kTestSubSeparation, "[controls][B-9][submodel]") {
-  b9_names_test("submodel-separation", impact::kTestSubSeparation);
-  CHECK(impact::separates(good_sub_cell()));
-  const CellResult r = good_sub_cell_with([](dda::cdem::CdemScene& s) {
-    s.options.strength.tensile = 1e12;
-    s.options.strength.cohesion = 1e12;
-  });
-  INFO("outcome " << r.outcome);
-  CHECK_FALSE(impact::separates(r));
-}
-
-TEST_CASE(impact::kTestSubTouchLoss, "[controls][B-9][submodel]") {
-  b9_names_test("submodel-touch-loss-eq5", impact::kTestSubTouchLoss);
-  CellResult r = good_sub_cell();
-  CHECK(impact::touch_loss_within_eq5(r));
-  r.touch_loss = 1.1 * r.touch_loss_eq5_group;  // 10 % above the group's Eq. 5
-  CHECK_FALSE(impact::touch_loss_within_eq5(r));
-}
-
-TEST_CASE(impact::kTestSubTotalLoss, "[controls][B-9][submodel]") {
-  b9_names_test("submodel-total-loss-eq5", impact::kTestSubTotalLoss);
-  CHECK(impact::total_loss_within_block_eq5(good_sub_cell()));
-  const CellResult r = good_sub_cell_with([](dda::cdem::CdemScene& s) { s.options.mass_damping = 2000.0; });
-  INFO("outcome " << r.outcome << ", loss / block Eq. 5 = " << r.total_loss / r.block_eq5);
-  CHECK_FALSE(impact::total_loss_within_block_eq5(r));
 }

@@ -1,9 +1,8 @@
-// Negative controls of B-8, two elastic bars against 1D wave theory
-// (repro/B_8_bar_waves): each test applies the driver's own criterion (from
-// bar_waves.hpp) to the driver's configuration, where it must PASS, and to a
-// deliberately wrong one, where it must FAIL; the driver's rows name these
-// tests through the shared test-name constants. Part of repro_controls_tests
-// (the main is in test_controls.cpp).
+// Negative controls of B-8, two elastic bars against 1D wave theory: each
+// test applies the driver's own criterion (from bar_waves.hpp) to the
+// driver's configuration, where it must PASS, and to a deliberately wrong
+// one, where it must FAIL; the driver's rows name these tests through the
+// shared test-name constants.
 #include <catch2/catch.hpp>
 
 #include "repro/B_8_bar_waves/bar_waves.hpp"

@@ -1,14 +1,15 @@
-// Shared by the B-6 negative controls (controls_paper_b.cpp,
-// controls_energy.cpp): a row of prisms::rows must be a check that names its
-// control test.
+// Shared by the B-6 negative controls (controls.cpp, controls_energy.cpp):
+// the option sets of the runs they compare, and a row of prisms::rows that
+// must be a check naming its control test.
 #pragma once
 #include <catch2/catch.hpp>
 
 #include <string>
 
+#include "dda/cdem/scenes.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/controls_rows.hpp"
+#include "repro/common/controls.hpp"
 
 namespace controls_b6 {
 
@@ -33,9 +34,16 @@ inline void names_test_both(const prisms::Result& sub, const prisms::Result& inp
     }
   CHECK(found == 2);
 }
+// The in-place option (Sect. 5 as an in-place refinement).
 inline dda::cdem::CdemOptions in_place() {
   dda::cdem::CdemOptions o;
   o.subdivision_mode = dda::cdem::SubdivisionMode::kInPlace;
+  return o;
+}
+// No subdivision: the coarse run beside the paper's.
+inline dda::cdem::CdemOptions no_subdivision() {
+  dda::cdem::CdemOptions o;
+  o.subdivision = false;
   return o;
 }
 

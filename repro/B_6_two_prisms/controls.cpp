@@ -1,37 +1,31 @@
-// Negative controls of Paper B's drivers: B-6 two prisms
-// and B-7 contact comparison. Each test applies the driver's own criterion
-// (from the driver's header) to a deliberately wrong configuration and
-// asserts that the check comes out FAIL (and, where cheap, that the paper's
-// configuration passes); the driver's row names the test in its `control`
-// field through the shared test-name constant. Part of repro_controls_tests
-// (the main is in test_controls.cpp).
+// Negative controls of the B-6 two-prisms rows: touch, velocity exchange
+// and momentum (in both subdivision modes), the touch in the printed step,
+// refinement within c dt2, the clone's separation and the energy lost in
+// the collision. Each test applies the driver's own criterion to a
+// deliberately wrong configuration (a wider gap, block j denser or fixed,
+// softer or longer prisms, mass damping, coarse clone nodes) and asserts
+// FAIL, and where cheap that the paper's configuration passes.
 #include <catch2/catch.hpp>
 
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "dda/cdem/model.hpp"
 #include "dda/cdem/scenes.hpp"
-#include "dda/scene.hpp"
+#include "repro/B_6_two_prisms/controls_b6.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
-#include "repro/B_7_contact_comparison/contact_comparison.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/controls_b6.hpp"
+#include "repro/common/controls.hpp"
 
-// --- B-6, two prisms -------------------------------------------------------------
+// --- The touch, the refinement, the separation and the losses ---------------------
 namespace {
 // The run of the prisms scene with geometry g and options opt (default: the
 // paper's scene, with subdivision).
 prisms::Result prisms_run(const dda::cdem::CdemOptions& opt = {}, const dda::cdem::PrismGeometry& g = {}) {
   return prisms::simulate(dda::cdem::two_prisms(2, opt, g));
 }
-dda::cdem::CdemOptions no_subdivision() {
-  dda::cdem::CdemOptions o;
-  o.subdivision = false;
-  return o;
-}
 using controls_b6::names_test;
+using controls_b6::no_subdivision;
 }  // namespace
 
 // The row's own verdict is FAIL (the printed step does not contain the
@@ -125,91 +119,66 @@ TEST_CASE(prisms::kTestSubdivisionLoss, "[controls][B-6]") {
   CHECK_FALSE(prisms::subdivision_reduces_loss(again, coarse));
 }
 
-// --- B-7, A against B on the same collisions: one run per model at the base dt ---
+// --- Touch, exchange and momentum, in both subdivision modes ----------------------
 namespace {
-compare::SceneDef scene_def(const std::string& name) {
-  for (const compare::SceneDef& d : compare::scene_defs())
-    if (d.name == name) return d;
-  FAIL("no B-7 scene " << name);
-  return {};
+// The rows of a run of the prisms scene with geometry g, block j
+// j_density_factor times as dense and fixed if asked; the coarse run beside
+// it is the paper's scene without subdivision.
+// mode: the subdivision (the default: Sect. 5 as written, the sub-model; the
+// rows beside its failing ones use the in-place option).
+std::vector<repro::Claim> prism_rows(const dda::cdem::PrismGeometry& g, double j_density_factor, bool j_fixed,
+                                     dda::cdem::SubdivisionMode mode = dda::cdem::SubdivisionMode::kSubModel) {
+  dda::cdem::CdemOptions o;
+  o.subdivision_mode = mode;
+  dda::cdem::CdemScene s = dda::cdem::two_prisms(2, o, g);
+  if (j_density_factor != 1.0) controls::make_j_denser(s, j_density_factor);
+  s.blocks[1].fixed = j_fixed;
+  return prisms::rows(prisms::simulate(s), prisms::simulate(dda::cdem::two_prisms(2, controls_b6::no_subdivision())));
 }
-compare::Result base_run(const compare::SceneDef& d, const std::string& model) {
-  return compare::run_sweep(d, model, nullptr, true).front();
-}
-// d with its Paper A (DDA) scene changed by f.
-compare::SceneDef with_dda(const compare::SceneDef& d, const std::function<void(dda::Scene&)>& f) {
-  compare::SceneDef w = d;
-  const auto make = d.dda_scene;
-  w.dda_scene = [make, f] {
-    dda::Scene s = make();
-    f(s);
-    return s;
-  };
-  return w;
-}
-// d with its Paper B (CDEM) scenes changed by f.
-compare::SceneDef with_cdem(const compare::SceneDef& d, const std::function<void(dda::cdem::CdemScene&)>& f) {
-  compare::SceneDef w = d;
-  const auto make = d.cdem_scene;
-  w.cdem_scene = [make, f](bool sub) {
-    dda::cdem::CdemScene s = make(sub);
-    f(s);
-    return s;
-  };
-  return w;
-}
-// Every material of a CDEM scene a quarter as stiff: c = sqrt(E / rho) halved.
-void quarter_stiffness(dda::cdem::CdemScene& s) {
-  for (dda::Material& m : s.materials) m.young /= 4.0;
+// The rows that name `control`, with their verdicts.
+std::vector<bool> verdicts_of(const std::vector<repro::Claim>& rows, const char* control) {
+  std::vector<bool> v;
+  for (const repro::Claim& c : rows)
+    if (c.control == control) v.push_back(c.pass);
+  return v;
 }
 }  // namespace
 
-TEST_CASE(compare::kTestEnergy, "[controls][B-7]") {
-  for (const std::string name : {"prisms", "squares"}) {
-    INFO(name);
-    const compare::SceneDef d = scene_def(name);
-    const compare::Result b = base_run(d, "B");
-    CHECK(compare::energy_ok(base_run(d, "A"), b));
-    // Mass damping 1/s in A's blocks: A loses 78 % (prisms) / 86 % (squares)
-    // of E0, far more than B's 1.1 % / 1.6 %.
-    const compare::SceneDef damped = with_dda(d, [](dda::Scene& s) { s.damping.mass = 1.0; });
-    CHECK_FALSE(compare::energy_ok(base_run(damped, "A"), b));
+// Each in both modes: the sub-model (the paper's rows) and the in-place
+// option (the rows beside the sub-model's failing ones).
+TEST_CASE("B-6 touch: FAIL with the gap 0.1 m wider", "[controls][B-6]") {
+  for (auto mode : {dda::cdem::SubdivisionMode::kSubModel, dda::cdem::SubdivisionMode::kInPlace}) {
+    const std::vector<bool> paper = verdicts_of(prism_rows({}, 1.0, false, mode), prisms::kControlTouch);
+    REQUIRE(paper.size() == 2);
+    for (bool v : paper) CHECK(v);
+    dda::cdem::PrismGeometry g;
+    g.gap += 0.1;  // touch at 1.1 / 3 s
+    for (bool v : verdicts_of(prism_rows(g, 1.0, false, mode), prisms::kControlTouch)) CHECK_FALSE(v);
   }
 }
 
-TEST_CASE(compare::kTestPrismsDuration, "[controls][B-7]") {
-  const compare::SceneDef d = scene_def("prisms");
-  const compare::Result a = base_run(d, "A"), b = base_run(d, "B");
-  CHECK(compare::prisms_duration_ok(a, b));  // A 0.21 s, B 6.7 ms
-  // B's prisms a quarter as stiff: the wave takes twice as long, the clone
-  // holds 13.3 ms (the window is 7.2 +- 2 ms).
-  CHECK_FALSE(compare::prisms_duration_ok(a, base_run(with_cdem(d, quarter_stiffness), "B")));
-  // A's kn 10^4 times stiffer (4e12 Pa): A's contact lasts 10 ms, less
-  // than 3 x B's 6.7 ms.
-  const compare::SceneDef stiff = with_dda(d, [](dda::Scene& s) { s.contact.kn *= 1e4; });
-  CHECK_FALSE(compare::prisms_duration_ok(base_run(stiff, "A"), b));
+TEST_CASE("B-6 exchange: FAIL with block j twice as dense", "[controls][B-6]") {
+  // Unequal masses: j leaves at 2 m / (m + M) v = 2 m/s, not i's 3 m/s.
+  for (auto mode : {dda::cdem::SubdivisionMode::kSubModel, dda::cdem::SubdivisionMode::kInPlace}) {
+    const std::vector<bool> wrong = verdicts_of(prism_rows({}, 2.0, false, mode), prisms::kControlExchange);
+    REQUIRE(wrong.size() == 2);
+    for (bool v : wrong) CHECK_FALSE(v);
+  }
+  // The real run: the in-place option passes both (the sub-model's FAILs are
+  // its rows' paper_method verdicts).
+  for (bool v : verdicts_of(prism_rows({}, 1.0, false, dda::cdem::SubdivisionMode::kInPlace), prisms::kControlExchange))
+    CHECK(v);
 }
 
-TEST_CASE(compare::kTestSquaresDuration, "[controls][B-7]") {
-  const compare::SceneDef d = scene_def("squares");
-  const double t_ref = compare::squares_wave_time();  // 2.83 ms
-  const compare::Result a = base_run(d, "A");
-  CHECK(compare::squares_duration_ok(a, base_run(d, "B"), t_ref));  // B 2.97 ms, A 22 ms
-  // B's squares a quarter as stiff: B's contact lasts 5.9 ms, twice 2 L / c
-  // of the paper's material.
-  CHECK_FALSE(compare::squares_duration_ok(a, base_run(with_cdem(d, quarter_stiffness), "B"), t_ref));
-}
-
-TEST_CASE(compare::kTestKn, "[controls][B-7]") {
-  const compare::SceneDef d = scene_def("prisms");
-  const std::vector<double> factors = {1.0, 10.0, 100.0};
-  CHECK(compare::kn_dependence_ok(compare::kn_sweep(d, factors), d.v0));
-  // Block j twice as dense: A leaves j at 2 m / (m + M) v0 = 2 m/s at every
-  // kn, not the exchanged 3 m/s.
-  const compare::SceneDef dense = with_dda(d, [](dda::Scene& s) {
-    s.materials.push_back(s.materials[static_cast<std::size_t>(s.blocks[1].material)]);
-    s.materials.back().density *= 2.0;
-    s.blocks[1].material = static_cast<int>(s.materials.size()) - 1;
-  });
-  CHECK_FALSE(compare::kn_dependence_ok(compare::kn_sweep(dense, factors), d.v0));
+TEST_CASE("B-6 momentum: FAIL with block j fixed", "[controls][B-6]") {
+  // A fixed j is a wall: i bounces back and the momentum is not conserved.
+  for (auto mode : {dda::cdem::SubdivisionMode::kSubModel, dda::cdem::SubdivisionMode::kInPlace}) {
+    const std::vector<bool> wrong = verdicts_of(prism_rows({}, 1.0, true, mode), prisms::kControlMomentum);
+    REQUIRE(wrong.size() == 1);
+    CHECK_FALSE(wrong[0]);
+  }
+  const std::vector<bool> inplace =
+      verdicts_of(prism_rows({}, 1.0, false, dda::cdem::SubdivisionMode::kInPlace), prisms::kControlMomentum);
+  REQUIRE(inplace.size() == 1);
+  CHECK(inplace[0]);
 }

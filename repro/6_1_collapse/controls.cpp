@@ -1,7 +1,6 @@
-// Negative controls of the Sect. 6.1 collapse rows (repro/6_1_collapse): each
-// applies the driver's own criterion (repro/6_1_collapse/collapse.hpp) to a
-// deliberately wrong configuration the claim depends on and asserts FAIL.
-// Part of repro_controls_tests (test_controls.cpp has the main).
+// Negative controls of the Sect. 6.1 collapse rows: each applies the
+// driver's own criterion (collapse.hpp) to a deliberately wrong
+// configuration the claim depends on and asserts FAIL.
 //
 // Cost: the full 7.5 s collapse takes minutes, so the runs here are short:
 // both cases to kShort = 1.5 s (run once, shared by the tests), where case 1

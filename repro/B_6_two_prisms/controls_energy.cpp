@@ -1,8 +1,8 @@
-// Negative controls of the energy-account rows of the
-// Paper B drivers: each test applies the driver's own criterion (from the
-// driver's header) to a deliberately wrong account and asserts FAIL, and
-// that the paper's run passes. Part of repro_controls_tests (the main is in
-// test_controls.cpp).
+// Negative controls of the B-6 energy rows: the energy account closing at
+// every row and the touch loss following Eq. 5 over the contact-point mass.
+// Each test applies the driver's own criterion to the paper's run (PASS)
+// and to a deliberately wrong account or series (FAIL): a loss left out, a
+// made-up series, Eq. 5 with the wrong masses.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -10,10 +10,9 @@
 
 #include "dda/cdem/model.hpp"
 #include "dda/cdem/scenes.hpp"
+#include "repro/B_6_two_prisms/controls_b6.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/controls_b6.hpp"
-
 
 // The default is the sub-model (Sect. 5), whose row fails (paper_method:
 // the fine-scale kinetic energy of its free sub-nodes is in `other`);
@@ -21,9 +20,7 @@
 TEST_CASE(prisms::kTestEnergyCloses, "[controls][B-6][energy]") {
   const prisms::Result sub = prisms::simulate(dda::cdem::two_prisms(2));
   const prisms::Result paper = prisms::simulate(dda::cdem::two_prisms(2, controls_b6::in_place()));
-  dda::cdem::CdemOptions no_sub;
-  no_sub.subdivision = false;
-  const prisms::Result coarse = prisms::simulate(dda::cdem::two_prisms(2, no_sub));
+  const prisms::Result coarse = prisms::simulate(dda::cdem::two_prisms(2, controls_b6::no_subdivision()));
   controls_b6::names_test_both(sub, paper, coarse,
                 "the energy account closes at every time-series row (kinetic + strain + touch loss + refine and "
                 "deletion losses)",
@@ -43,9 +40,7 @@ TEST_CASE(prisms::kTestEnergyCloses, "[controls][B-6][energy]") {
 }
 
 TEST_CASE(prisms::kTestContactMass, "[controls][B-6][energy]") {
-  dda::cdem::CdemOptions no_sub;
-  no_sub.subdivision = false;
-  const prisms::Result coarse = prisms::simulate(dda::cdem::two_prisms(2, no_sub));
+  const prisms::Result coarse = prisms::simulate(dda::cdem::two_prisms(2, controls_b6::no_subdivision()));
   const double m_node = prisms::touching_node_mass(prisms::simulate(dda::cdem::two_prisms(2, controls_b6::in_place())));
   std::vector<prisms::MassPoint> pts;
   for (double f : {1.0 / 4, 1.0 / 16, 1.0 / 64})
