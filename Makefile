@@ -84,11 +84,15 @@ sanitize: deps
 # from such a run: commit it on its own, saying why a verdict changed.
 # The longest drivers come first so that the $(JOBS) parallel runs end together.
 # ---------------------------------------------------------------------------
-DRIVERS := collapse toppling_slumping work_precision stability_maps extreme_cases \
+DRIVERS := work_precision collapse toppling_slumping stability_maps extreme_cases \
            segmentation B_7_contact_comparison B_8_bar_waves B_9_impact_study extreme_geometry potential_fields \
            previous_potential two_squares symmetric_stack incline bouncing_block \
            small_angles small_edges B_6_two_prisms penetration_map contact_statements \
            geometry_claims
+# A driver's arguments in the verdict run besides --out: options that change
+# only its timings, never a row's verdict (S1's timed runs serve its
+# work-precision figure; its errors come from the monitored runs).
+VERDICT_ARGS_work_precision := --timing-repeats 1 --jobs $(JOBS)
 VERDICT_OUT ?= $(BUILD)/verdicts_out
 EXPECTED    := repro/expected_verdicts.csv
 
@@ -97,8 +101,8 @@ verdict-run: configure
 	@rm -rf $(VERDICT_OUT) && mkdir -p $(VERDICT_OUT)/logs
 	@echo "== verdicts: running $(words $(DRIVERS)) drivers ($(JOBS) at a time) into $(VERDICT_OUT)"
 	@start=$$(date +%s); \
-	printf '%s\n' $(DRIVERS) | xargs -P $(JOBS) -I{} sh -c \
-	  '$(BIN)/{} --out $(VERDICT_OUT) > $(VERDICT_OUT)/logs/{}.log 2>&1 || { echo "driver {} failed: $(VERDICT_OUT)/logs/{}.log"; exit 1; }' \
+	printf '%s\n' $(foreach d,$(DRIVERS),"$(d) $(VERDICT_ARGS_$(d))") | xargs -P $(JOBS) -L 1 sh -c \
+	  '$(BIN)/$$0 --out $(VERDICT_OUT) "$$@" > $(VERDICT_OUT)/logs/$$0.log 2>&1 || { echo "driver $$0 failed: $(VERDICT_OUT)/logs/$$0.log"; exit 1; }' \
 	  || exit 1; \
 	echo "== verdicts: drivers took $$(( $$(date +%s) - start )) s"
 

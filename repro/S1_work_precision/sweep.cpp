@@ -1,10 +1,15 @@
 // S1 work precision: every case at every dt, one monitored run for the
 // errors and timed unmonitored runs for the cost; the curves' observed
 // orders (repro::stab::observed_order).
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "dda/simulation.hpp"
@@ -17,6 +22,64 @@ using repro::format_short;
 // of a shared machine weigh more (a median of 5 or 9).
 int repeats_for(double seconds) { return seconds < 0.05 ? 9 : seconds < 0.2 ? 5 : 3; }
 std::string num(double x) { return repro::format_full(x); }
+
+// What the wall_s/cpu_s columns are the median of.
+std::string timing_words(const SweepOptions& o) {
+  std::string w = o.max_repeats >= 9 ? "3 to 9 unmonitored runs (more for short runs)"
+                  : o.max_repeats <= 1 ? "one unmonitored run"
+                                       : "up to " + std::to_string(o.max_repeats) + " unmonitored runs";
+  if (o.jobs > 1) w += ", " + std::to_string(o.jobs) + " cases at a time";
+  return w;
+}
+
+// One case's runs: a monitored and a timed run per dt, and the reference.
+struct CaseRuns {
+  std::vector<RunOut> res;
+  std::vector<repro::stab::Timing> times;
+  RunOut ref;
+  std::exception_ptr error;  // what the runs threw (rethrown in case order)
+};
+
+CaseRuns run_case(const Case& c, int max_repeats) {
+  CaseRuns out;
+  try {
+    for (double dt : c.dts) {
+      out.res.push_back(monitored_run(c, dt));
+      out.times.push_back(out.res.back().ok ? timed_run(c.sc, dt, max_repeats) : repro::stab::Timing{});
+    }
+    // Reference run for the trajectory measures.
+    if (!c.trajectory_windows.empty()) {
+      out.ref = monitored_run(c, c.dts.front() / 16.0, false);
+      if (!out.ref.ok)
+        throw std::runtime_error(c.scene + ", " + c.option + ": reference run stopped: " + out.ref.message);
+    }
+  } catch (...) {
+    out.error = std::current_exception();
+  }
+  return out;
+}
+
+// Every case's runs, `jobs` cases at a time (each case's runs on one thread
+// in its own Simulations: nothing is shared), in case order.
+std::vector<CaseRuns> run_cases(const std::vector<Case>& cases, const SweepOptions& options,
+                                const repro::Progress& progress) {
+  std::vector<CaseRuns> runs(cases.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex progress_mutex;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < cases.size(); i = next++) {
+      runs[i] = run_case(cases[i], options.max_repeats);
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      progress(cases[i].scene + ", " + cases[i].option + ": done");
+    }
+  };
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(cases.size())));
+  std::vector<std::thread> team;
+  for (int j = 1; j < jobs; ++j) team.emplace_back(worker);
+  worker();
+  for (std::thread& t : team) t.join();
+  return runs;
+}
 }  // namespace
 
 // observe = false: the reference run (trajectory samples only).
@@ -53,7 +116,7 @@ RunOut monitored_run(const Case& c, double dt, bool observe) {
   return r;
 }
 
-repro::stab::Timing timed_run(const dda::Scene& sc, double dt) {
+repro::stab::Timing timed_run(const dda::Scene& sc, double dt, int max_repeats) {
   dda::Scene s = sc;
   s.dt = dt;
   auto run = [&] {
@@ -62,32 +125,27 @@ repro::stab::Timing timed_run(const dda::Scene& sc, double dt) {
     for (long k = 0; k < total; ++k) sim.step();
   };
   const repro::stab::Timing first = repro::stab::median_time(1, run);
-  return repro::stab::median_time(repeats_for(first.wall), run);
+  const int repeats = std::min(repeats_for(first.wall), max_repeats);
+  return repeats <= 1 ? first : repro::stab::median_time(repeats, run);
 }
 
 std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::string& dir, References& references,
-                                const repro::Progress& progress) {
+                                const repro::Progress& progress, const SweepOptions& options) {
+  const std::vector<CaseRuns> case_runs = run_cases(cases, options, progress);
   repro::CsvWriter runs(dir + "/runs.csv",
                         {"scene", "option", "measure", "dt", "dt_over_crit_start", "dt_over_crit_max", "wall_s",
                          "cpu_s", "error", "local_order", "status"},
                         {"S1 work precision: error (relative, or m where the measure says so) against the median "
-                         "wall time (steady_clock) and CPU time of 3 to 9 unmonitored runs (more for short runs); "
-                         "empty error: the run stopped (status says why)"});
+                         "wall time (steady_clock) and CPU time of " + timing_words(options) +
+                         "; empty error: the run stopped (status says why)"});
   std::vector<CurveSummary> curves;
-  for (const Case& c : cases) {
-    std::vector<RunOut> res;
-    std::vector<repro::stab::Timing> times;
-    for (double dt : c.dts) {
-      res.push_back(monitored_run(c, dt));
-      times.push_back(res.back().ok ? timed_run(c.sc, dt) : repro::stab::Timing{});
-    }
-    // Reference run for the trajectory measures.
-    RunOut ref;
-    if (!c.trajectory_windows.empty()) {
-      ref = monitored_run(c, c.dts.front() / 16.0, false);
-      if (!ref.ok) throw std::runtime_error(c.scene + ", " + c.option + ": reference run stopped: " + ref.message);
-      references.push_back({c.scene + " | " + c.option, ref.samples});
-    }
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    const Case& c = cases[ci];
+    if (case_runs[ci].error) std::rethrow_exception(case_runs[ci].error);
+    const std::vector<RunOut>& res = case_runs[ci].res;
+    const std::vector<repro::stab::Timing>& times = case_runs[ci].times;
+    const RunOut& ref = case_runs[ci].ref;
+    if (!c.trajectory_windows.empty()) references.push_back({c.scene + " | " + c.option, ref.samples});
     // Errors per measure.
     std::vector<std::string> names;
     std::vector<std::string> refs;
@@ -152,7 +210,6 @@ std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::strin
       }
       curves.push_back(cs);
     }
-    progress(c.scene + ", " + c.option + ": done");
   }
   runs.commit();
 

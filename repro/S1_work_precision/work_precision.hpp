@@ -63,8 +63,10 @@ struct RunOut {
 // One monitored run at dt (observe = false: the reference run, trajectory
 // samples only); a SimulationError ends it with ok = false.
 RunOut monitored_run(const Case& c, double dt, bool observe = true);
-// Median wall and CPU time of unmonitored runs of the scene at dt.
-repro::stab::Timing timed_run(const dda::Scene& sc, double dt);
+// Median wall and CPU time of unmonitored runs of the scene at dt: one run
+// to size the median, then 3 of them (5 or 9 for runs shorter than 0.2 or
+// 0.05 s), at most max_repeats.
+repro::stab::Timing timed_run(const dda::Scene& sc, double dt, int max_repeats = 9);
 
 // ---- scenes (cases.cpp, cases_ours.cpp) -------------------------------------
 std::vector<Case> all_cases();
@@ -104,10 +106,19 @@ struct CurveSummary {
 // Converged trajectories by "scene | option" (reference-run samples).
 using References = std::vector<std::pair<std::string, std::vector<std::vector<double>>>>;
 
+// How the sweep spends its time. The errors and every claim row depend on
+// neither: only the wall_s/cpu_s columns (and the times quoted in rows' text).
+struct SweepOptions {
+  int max_repeats = 9;  // timed runs per dt at most (timed_run)
+  // Cases run at once, each on its own thread (results kept in case order).
+  // With more than one, the timed runs share the machine's cores.
+  int jobs = 1;
+};
+
 // Runs every case at every dt, writes dir/runs.csv and dir/orders.csv, and
 // returns one summary per (case, measure); fills `references`.
 std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::string& dir, References& references,
-                                const repro::Progress& progress);
+                                const repro::Progress& progress, const SweepOptions& options = {});
 
 // ---- criteria and claims (claims.cpp) --------------------------------------
 

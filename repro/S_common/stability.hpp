@@ -15,22 +15,29 @@
 namespace repro::stab {
 
 // Medians over `repeats` calls of f: wall time (std::chrono::steady_clock)
-// and the process CPU time (std::clock), s. On a loaded machine the wall
-// time includes waiting for a core; the CPU time does not.
+// and the calling thread's CPU time (CLOCK_THREAD_CPUTIME_ID), s. On a
+// loaded machine the wall time includes waiting for a core; the CPU time
+// does not (nor the work of other threads running other cases).
 struct Timing {
   double wall = 0.0;
   double cpu = 0.0;
   int repeats = 0;
 };
 double median(std::vector<double> v);
+// The calling thread's CPU time, s.
+inline double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 template <class F>
 Timing median_time(int repeats, F&& f) {
   std::vector<double> wall, cpu;
   for (int r = 0; r < std::max(repeats, 1); ++r) {
     const auto t0 = std::chrono::steady_clock::now();
-    const std::clock_t c0 = std::clock();
+    const double c0 = thread_cpu_seconds();
     f();
-    cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
+    cpu.push_back(thread_cpu_seconds() - c0);
     wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   return {median(wall), median(cpu), static_cast<int>(wall.size())};
