@@ -16,7 +16,7 @@
 //    the moment as the energy's derivative, -dE/dtheta for CP turned about
 //    pg (central difference).
 // Each row function takes a Variant: the negative controls of
-// repro/common/test_controls.cpp apply the same criterion to a deliberately
+// controls.cpp beside this file apply the same criterion to a deliberately
 // wrong construction and must get FAIL.
 #pragma once
 #include <algorithm>

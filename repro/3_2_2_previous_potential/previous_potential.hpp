@@ -1,7 +1,7 @@
 // Paper A Sect. 3.2.2, Fig. 4a (previous_potential.cpp says what it
 // reproduces): the reconstructed "previous sub-polygon" potential, its grid
 // scan and the criteria of the check rows, here so that the negative controls
-// (repro/common/controls_geometry.cpp) apply the same criteria to a
+// (controls.cpp beside this file) apply the same criteria to a
 // deliberately wrong configuration.
 #pragma once
 #include <algorithm>

@@ -1,6 +1,6 @@
 // Paper A Sect. 4.1: the run and the claim rows of the two-squares collision,
 // shared by the driver (two_squares.cpp) and the negative controls
-// (test_controls.cpp, which run the same criteria on deliberately wrong
+// (controls.cpp beside this file, which run the same criteria on deliberately wrong
 // scenes and assert FAIL).
 #pragma once
 #include <algorithm>

@@ -1,6 +1,6 @@
 // Paper A Sect. 4.2: the symmetric-stack run and its claim row, shared by the
 // driver (symmetric_stack.cpp) and the negative control
-// (repro/common/test_controls.cpp).
+// (controls.cpp beside this file).
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Paper A Sect. 4.3: one sliding run and the Eq. 30 criterion, shared by the
-// driver (incline.cpp) and the negative controls (repro/common/test_controls.cpp).
+// driver (incline.cpp) and the negative controls (controls.cpp beside this file).
 #pragma once
 #include <cmath>
 #include <string>
@@ -47,7 +47,7 @@ inline Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg, dd
 
 // The Eq. 30 criterion of every sliding row: within kTol of Eq. 30.
 inline bool eq30_met(const Run& r) { return std::fabs(r.rel_error()) < kTol; }
-// The negative control of the rows with friction (test_controls.cpp).
+// The negative control of the rows with friction (controls.cpp).
 inline const char* const kControlEq30Friction = "repro_controls: 4.3 Eq. 30 with friction: FAIL with friction off";
 // ... and of the rows without (a test-case name).
 inline const char* const kControlEq30Frictionless = "4.3 Eq. 30 without friction: FAIL with friction on";

@@ -1,6 +1,6 @@
 // Paper A Sect. 5.1: one bouncing-block run and the H-rule comparison row,
 // shared by the driver (bouncing_block.cpp) and the negative controls
-// (repro/common/test_controls.cpp).
+// (controls.cpp beside this file).
 #pragma once
 #include <algorithm>
 #include <cmath>

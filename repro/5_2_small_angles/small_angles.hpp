@@ -1,6 +1,6 @@
 // Paper A Sect. 5.2: one small-angle run and the point-symmetry row, shared by
 // the driver (small_angles.cpp) and the negative control
-// (repro/common/test_controls.cpp).
+// (controls.cpp beside this file).
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Paper A Sect. 5.3: one small-edge impact and its claim rows, shared by the
 // driver (small_edges.cpp) and the negative controls
-// (repro/common/test_controls.cpp, controls_geometry.cpp).
+// (controls.cpp beside this file).
 #pragma once
 #include <algorithm>
 #include <string>
@@ -17,7 +17,7 @@ namespace small_edges {
 inline const char* const kControlFlip = "5.3 sane: FAIL when kn is 1000 times too soft and the guards are off";
 inline const char* const kControlSoft = "5.3 penetration: FAIL when kn is 100 times too soft";
 inline const char* const kControlDamped = "5.3 energy: FAIL with mass damping";
-inline const char* const kControlMirror =  // in repro/common/controls_geometry.cpp
+inline const char* const kControlMirror =  // in controls.cpp beside this file
     "5.3 mirror symmetry: FAIL when the square also moves 1 mm/s sideways";
 constexpr double kMirrorTolerance = 1e-9;  // m
 using dda::Vec2;

@@ -1,6 +1,6 @@
 // Beyond Paper A Sect. 5 (extreme_geometry.cpp says what it measures): the
 // cases, one attempt at a dt, and the "clean" criterion, here so that the
-// negative controls (repro/common/test_controls.cpp) apply the same one.
+// negative controls (controls.cpp beside this file) apply the same one.
 #pragma once
 #include <functional>
 #include <optional>
@@ -62,7 +62,7 @@ std::vector<Case> make_cases();
 std::string describe(const Outcome& o);
 std::string pm(double x);
 
-// The negative control of the "clean" criterion (repro/common/test_controls.cpp).
+// The negative control of the "clean" criterion (controls.cpp beside this file).
 inline constexpr const char* kCleanControl =
     "repro_controls: 5.4 clean: FAIL on a damped, an asymmetric and a pierced run";
 

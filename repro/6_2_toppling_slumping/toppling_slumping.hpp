@@ -1,6 +1,6 @@
 // Paper A Sect. 6.2 (toppling_slumping.cpp says what it reproduces): the
 // per-side measures, the control runs and the criteria of the claim rows,
-// here so that the negative controls (repro/common/test_controls.cpp) apply
+// here so that the negative controls (controls.cpp beside this file) apply
 // the same criteria to deliberately wrong configurations.
 #pragma once
 #include <algorithm>
@@ -216,7 +216,7 @@ inline bool ratchet_explains(double late_return_mapping, double late_paper) {
 }
 inline constexpr const char* kControlRatchet = "6.2 ratchet diagnosis: FAIL when both runs use the paper's update";
 
-// The negative controls (test_controls.cpp) named by the rows.
+// The negative controls (controls.cpp) named by the rows.
 inline const char* const kControlMechanism =
     "repro_controls: 6.2 toppling, slumping, premise: FAIL with locked joints, a rough base and a gentle friction";
 

@@ -1,6 +1,6 @@
 // Paper B Sect. 6, two prisms (two_prisms.cpp says what it reproduces): one
 // run of the two-scale model and the claim rows, here so that the negative
-// controls (repro/common/test_controls.cpp, controls_paper_b.cpp) apply the
+// controls (controls.cpp beside this file) apply the
 // same criteria to deliberately wrong configurations.
 #pragma once
 #include <algorithm>
@@ -53,11 +53,11 @@ inline constexpr int kPaperDivisionsForMass = 2;  // the paper's example mesh he
 inline const std::vector<double> kMassFractions = {1.0 / 4, 1.0 / 9, 1.0 / 16, 1.0 / 36, 1.0 / 64};
 inline constexpr int kMassMaxSubdivision = 8;
 
-// The negative controls (test_controls.cpp) named by the rows.
+// The negative controls (controls.cpp) named by the rows.
 inline const char* const kControlTouch = "repro_controls: B-6 touch: FAIL with the gap 0.1 m wider";
 inline const char* const kControlExchange = "repro_controls: B-6 exchange: FAIL with block j twice as dense";
 inline const char* const kControlMomentum = "repro_controls: B-6 momentum: FAIL with block j fixed";
-// The negative controls in repro/common/controls_paper_b.cpp: their exact
+// The negative controls in controls.cpp beside this file: their exact
 // test-case names (a row names one with repro::control_test).
 inline const char* const kTestPrintedStep =
     "B-6 printed step: PASS with the gap 1.25 mm wider, FAIL with the paper's gap and 0.1 m wider";
@@ -195,7 +195,7 @@ inline constexpr double kEnergyGrowthSlack = 1e-9;  // round-off of sums of ~1e3
 bool energy_never_grows(const std::vector<dda::cdem::CdemEnergyAccount>& rows);
 inline constexpr double kMomentumRoundOff = 1e-12;  // relative: the other rows' momentum tolerance
 bool momentum_conserved(const Result& r);
-// The negative controls in repro/common/controls_submodel.cpp.
+// The negative controls in controls_submodel.cpp.
 inline const char* const kTestSubTouch = "B-6 sub-model touch time: FAIL with the gap 0.1 m wider";
 inline const char* const kTestSubEnergy =
     "B-6 sub-model energy never grows: FAIL on a series 1 % above E0 and with dt above the critical step";

@@ -1,7 +1,7 @@
 // Paper A against Paper B on the same collisions (contact_comparison.cpp
 // says what it compares): the scenes, one run per model and dt, and the
 // criteria of the rows, here so that the negative controls
-// (repro/common/test_controls.cpp, controls_paper_b.cpp) apply the same
+// (controls.cpp beside this file) apply the same
 // criteria to deliberately wrong configurations.
 #pragma once
 #include <algorithm>
@@ -112,11 +112,11 @@ std::vector<KnRun> kn_sweep(const SceneDef& def, const std::vector<double>& fact
 // grows (factors in increasing order), while every run exchanges the
 // velocities within 1 % of v0 and conserves momentum to round-off.
 bool kn_dependence_ok(const std::vector<KnRun>& runs, double v0);
-// The negative controls (test_controls.cpp) named by the rows.
+// The negative controls (controls.cpp) named by the rows.
 inline const char* const kControlTouch = "repro_controls: B-7 touch: FAIL against a wrong time of impact";
 inline const char* const kControlMomentum = "repro_controls: B-7 momentum: FAIL with block j fixed";
 inline const char* const kControlExchange = "repro_controls: B-7 exchange: FAIL with block j twice as dense";
-// The negative controls in repro/common/controls_paper_b.cpp: their exact
+// The negative controls in controls.cpp beside this file: their exact
 // test-case names (a row names one with repro::control_test).
 inline const char* const kTestEnergy = "B-7 energy: FAIL with mass damping in A";
 inline const char* const kTestPrismsDuration =

@@ -1,6 +1,6 @@
 // The rows of B-7's baseline P (node-to-edge penalty on the CST blocks, see
 // penalty_baseline.hpp): touch time and momentum (checks, with negative
-// controls in repro/common/controls_node_to_edge.cpp), the predicted
+// controls in controls.cpp beside this file), the predicted
 // critical step against the measured stability limit (a check), energy and
 // cost (measurements).
 #include "repro/B_7_contact_comparison/penalty_baseline.hpp"

@@ -6,7 +6,7 @@
 // squares: the kn of A), frictionless, undamped.
 // The runs (run.cpp) and the criteria of P's rows (criteria.cpp) are
 // declared here so that the negative controls
-// (repro/common/controls_node_to_edge.cpp) apply the same criteria; the rows
+// (controls.cpp beside this file) apply the same criteria; the rows
 // are written by penalty_baseline.cpp.
 #pragma once
 #include <cmath>
@@ -72,7 +72,7 @@ bool penalty_momentum_ok(const std::vector<Result>& p);
 inline constexpr double kStabilityMargin = 2.0;
 bool stability_prediction_ok(const StabilityProbe& p, double dt_predicted);
 
-// Names of the negative controls in repro/common/controls_node_to_edge.cpp.
+// Names of the negative controls in controls.cpp beside this file.
 inline const char* const kTestPenaltyTouch = "B-7 P touch: FAIL against a wrong time of impact";
 inline const char* const kTestPenaltyMomentum = "B-7 P momentum: FAIL with block j fixed";
 inline const char* const kTestPenaltyStability =

@@ -1,7 +1,7 @@
 // Two elastic bars head on against 1D wave theory (bar_waves.cpp says what
 // it reproduces): the scene, one run per model, the measured quantities and
 // the criteria of the rows, here so that the negative controls
-// (repro/common/controls_bar_waves.cpp) apply the same criteria to
+// (controls.cpp beside this file) apply the same criteria to
 // deliberately wrong configurations.
 #pragma once
 #include <algorithm>
@@ -157,7 +157,7 @@ bool exchange_ok(const Run& r, const Setup& s);
 // Every run (a stopped one up to its stop) keeps E <= E0 (1 + tol).
 bool energy_never_grows(const std::vector<Run>& runs);
 
-// The negative controls in repro/common/controls_bar_waves.cpp: their exact
+// The negative controls in controls.cpp beside this file: their exact
 // test-case names (a row names one with repro::control_test).
 inline const char* const kTestDuration = "B-8 contact duration: FAIL with bars half as long";
 inline const char* const kTestStress = "B-8 mean contact stress: FAIL with bars four times as stiff";

@@ -2,7 +2,7 @@
 // one oblique impact of two CST-meshed 1 m squares with Paper B's two-scale
 // contact per cell (angle, speed, friction, subdivision), the measured
 // quantities of a cell and the per-cell criteria of the rows, here so that
-// the negative controls (repro/common/controls_impact_study.cpp) apply the
+// the negative controls (controls.cpp beside this file) apply the
 // same criteria to deliberately wrong configurations.
 //
 // Set-up: block A (left, x in [-1 - gap, -gap]) moves with speed v at the
@@ -193,7 +193,7 @@ std::string subdivision_name(const Cell& c);
 
 std::string cell_name(const Cell& c);
 
-// The negative controls in repro/common/controls_impact_study.cpp: their
+// The negative controls in controls.cpp beside this file: their
 // exact test-case names.
 inline const char* const kTestPassThrough =
     "B-9 no pass-through: FAIL for a node 2 d_tol deep, crossed centres and a run started overlapping";
@@ -203,7 +203,7 @@ inline const char* const kTestTouchLoss = "B-9 touch loss: FAIL for a record who
 inline const char* const kTestTotalLoss = "B-9 total loss: FAIL with strong mass damping";
 inline const char* const kTestCoulomb = "B-9 Coulomb: FAIL for J_t above mu J_n";
 inline const char* const kTestRigidLaw = "B-9 rigid law: FAIL for J_t off the stick/slide prediction";
-// The sub-model cells' rows (repro/common/controls_submodel.cpp).
+// The sub-model cells' rows (controls.cpp beside this file).
 inline const char* const kTestSubPassThrough =
     "B-9 sub-model no pass-through: FAIL for a sub-model run started 2 d_tol deep";
 inline const char* const kTestSubEnergy = "B-9 sub-model kinetic energy: FAIL for dt above the critical step";
