@@ -124,6 +124,7 @@ expected-verdicts: verdict-run
 SCENE_FUZZ_CASES    ?= 200000
 SCENE_FUZZ_CLI_RUNS ?= 500
 fuzz: build
+	@cmake --build $(BUILD) -j $(JOBS) --target property_fuzz
 	FUZZ_CASES=$(FUZZ_CASES) $(BIN)/property_fuzz
 	$(BIN)/io_scene_fuzz --cases $(SCENE_FUZZ_CASES) --cli-runs $(SCENE_FUZZ_CLI_RUNS) --seed random
 
