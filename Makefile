@@ -101,7 +101,7 @@ verdict-run: configure
 	@rm -rf $(VERDICT_OUT) && mkdir -p $(VERDICT_OUT)/logs
 	@echo "== verdicts: running $(words $(DRIVERS)) drivers ($(JOBS) at a time) into $(VERDICT_OUT)"
 	@start=$$(date +%s); \
-	printf '%s\n' $(foreach d,$(DRIVERS),"$(d) $(VERDICT_ARGS_$(d))") | xargs -P $(JOBS) -L 1 sh -c \
+	printf '%s\n' $(foreach d,$(DRIVERS),"$(strip $(d) $(VERDICT_ARGS_$(d)))") | xargs -P $(JOBS) -L 1 sh -c \
 	  '$(BIN)/$$0 --out $(VERDICT_OUT) "$$@" > $(VERDICT_OUT)/logs/$$0.log 2>&1 || { echo "driver $$0 failed: $(VERDICT_OUT)/logs/$$0.log"; exit 1; }' \
 	  || exit 1; \
 	echo "== verdicts: drivers took $$(( $$(date +%s) - start )) s"
