@@ -70,6 +70,22 @@ inline int run_cli_signalled(const std::vector<std::string>& args, const std::st
   return wait_cli(pid);
 }
 
+// Runs `dda <args>` and sends it `signal` `delay` s after the file `path`
+// appeared (polled every 2 ms; if it still runs). A run that ends before
+// the file appears is not signalled: its own exit code.
+inline int run_cli_signalled_after(const std::vector<std::string>& args, const std::string& log,
+                                   const std::string& path, double delay, int signal) {
+  const pid_t pid = start_cli(args, log);
+  int status = 0;
+  while (!fs::exists(path)) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+  ::kill(pid, signal);
+  return wait_cli(pid);
+}
+
 // Every regular file under `dir`: relative path -> bytes.
 inline std::map<std::string, std::string> files_of(const std::string& dir) {
   std::map<std::string, std::string> out;
