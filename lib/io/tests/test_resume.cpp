@@ -183,7 +183,7 @@ TEST_CASE("a run killed outright after a periodic checkpoint resumes from it, by
     int rc = 0;
     for (int attempt = 0; attempt < 6 && rc != 128 + SIGKILL; ++attempt, delay *= 0.5) {
       fs::remove_all(dir);
-      rc = run_cli_signalled_after(args, dir + ".log", dir + "/checkpoint.dda", delay, SIGKILL);
+      rc = signalled_when(args, dir + ".log", dir + "/checkpoint.dda", SIGKILL, delay);
     }
     REQUIRE(rc == 128 + SIGKILL);
     REQUIRE(fs::exists(dir + "/checkpoint.dda"));
@@ -288,24 +288,6 @@ const std::string& prisms_reference(double* seconds = nullptr) {
   return dir;
 }
 
-// Starts `dda <args>`, waits until `file` exists and `delay` s more, then
-// sends `signal`; its exit code (0: it ended first).
-int signalled_when(const std::vector<std::string>& args, const std::string& log, const std::string& file, int signal,
-                   double delay = 0.0) {
-  const pid_t pid = start_cli(args, log);
-  for (;;) {
-    if (fs::exists(file)) {
-      std::this_thread::sleep_for(std::chrono::duration<double>(delay));
-      ::kill(pid, signal);
-      break;
-    }
-    int status = 0;
-    if (::waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
-  return wait_cli(pid);
-}
-
 }  // namespace
 
 TEST_CASE("a cdem run interrupted by SIGINT at a random step and resumed ends byte-identical", "[io][resume][cdem]") {
@@ -341,7 +323,7 @@ TEST_CASE("a cdem run killed after its checkpoint in the collision resumes from 
   const std::string& ref = prisms_reference();
   const std::string dir = scratch("resume_prisms_sigkill");
   int rc = 0;
-  for (int attempt = 0; attempt < 4 && rc != 128 + SIGKILL; ++attempt) {
+  for (int attempt = 0; attempt < 8 && rc != 128 + SIGKILL; ++attempt) {
     fs::remove_all(dir);
     rc = signalled_when({"run", prisms_scene(), "--out", dir, "--quiet", "--vtk", "--checkpoint-every", "0.3345"},
                         dir + ".log", dir + "/checkpoint.dda", SIGKILL);
