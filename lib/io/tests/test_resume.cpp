@@ -103,17 +103,28 @@ std::mt19937& rng() {
   return g;
 }
 
+// `dda run` of the column into `dir` with every output and `extra` flags.
+std::vector<std::string> column_args(const std::string& dir, const std::string& scene,
+                                     const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {"run", scene, "--out", dir, "--quiet"};
+  args.insert(args.end(), kAllOutputs.begin(), kAllOutputs.end());
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+// A random moment between fractions lo and hi of the reference run's wall time, s.
+double random_moment(double lo, double hi) {
+  double wall = 0.0;
+  reference_run(&wall);
+  return std::uniform_real_distribution<double>(lo, hi)(rng()) * wall;
+}
+
 // Starts the column in `dir` (extra: more flags) and stops it with `signal`
 // at a random moment of its run; retries earlier if it ended first. The
 // exit code of the stopped run.
 int stopped_run(const std::string& dir, const std::string& scene, int signal, std::vector<std::string> extra = {}) {
-  double wall = 0.0;
-  reference_run(&wall);
-  std::uniform_real_distribution<double> when(0.15, 0.85);
-  double delay = when(rng()) * wall;
-  std::vector<std::string> args = {"run", scene, "--out", dir, "--quiet"};
-  args.insert(args.end(), kAllOutputs.begin(), kAllOutputs.end());
-  args.insert(args.end(), extra.begin(), extra.end());
+  double delay = random_moment(0.15, 0.85);
+  const std::vector<std::string> args = column_args(dir, scene, extra);
   for (int attempt = 0; attempt < 6; ++attempt, delay *= 0.5) {
     fs::remove_all(dir);
     const int rc = run_cli_signalled(args, dir + ".log", delay, signal);
@@ -173,13 +184,8 @@ TEST_CASE("a run killed outright after a periodic checkpoint resumes from it, by
     // moment after the first checkpoint appeared (on a loaded machine a
     // moment drawn from the whole run can come before it); earlier if the
     // run ended first.
-    double wall = 0.0;
-    reference_run(&wall);
-    std::uniform_real_distribution<double> when(0.0, 0.5);
-    double delay = when(rng()) * wall;
-    std::vector<std::string> args = {"run", scene, "--out", dir, "--quiet"};
-    args.insert(args.end(), kAllOutputs.begin(), kAllOutputs.end());
-    args.insert(args.end(), every.begin(), every.end());
+    double delay = random_moment(0.0, 0.5);
+    const std::vector<std::string> args = column_args(dir, scene, every);
     int rc = 0;
     for (int attempt = 0; attempt < 6 && rc != 128 + SIGKILL; ++attempt, delay *= 0.5) {
       fs::remove_all(dir);
