@@ -195,11 +195,13 @@ TEST_CASE("a run killed outright after a periodic checkpoint resumes from it, by
     REQUIRE(fs::exists(dir + "/checkpoint.dda"));
     CHECK_FALSE(fs::exists(dir + "/run.json"));
     CHECK(fs::exists(dir + "/timeseries.csv.tmp"));
-    // Interrupted once more on the way, then to the end.
+    // Interrupted once more on the way, then to the end. A slow start (an
+    // instrumented build on a busy machine) can take the signal before the
+    // handler is installed: ended by SIGTERM itself, a kill like the first.
     const std::string log = dir + "_resume.log";
     const int again = run_cli_signalled({"run", "--resume", dir, "--quiet"}, log, 0.3, SIGTERM);
-    CHECK((again == 130 || again == 0));
-    if (again == 130) REQUIRE(run_cli({"run", "--resume", dir, "--quiet"}, log) == 0);
+    CHECK((again == 130 || again == 0 || again == 128 + SIGTERM));
+    if (again != 0) REQUIRE(run_cli({"run", "--resume", dir, "--quiet"}, log) == 0);
     check_same_outputs(ref, dir);
   }
 }
