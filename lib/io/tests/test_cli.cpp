@@ -8,7 +8,10 @@
 #include <fstream>
 #include <string>
 
+#include "scene_helpers.hpp"
+
 namespace fs = std::filesystem;
+using dda::io::test::write_scene;
 
 namespace {
 
@@ -68,13 +71,11 @@ TEST_CASE("dda usage errors exit 2, --help exits 0", "[io][cli]") {
 
 TEST_CASE("dda run writes the outputs and exits 0", "[io][cli]") {
   const std::string dir = tmp("run");
-  fs::create_directories(dir);
-  const std::string scene = dir + "/s.json";
-  std::ofstream(scene) << R"({
+  const std::string scene = write_scene(dir, R"({
     "materials": [{"density": 2000, "young": 1e9, "poisson": 0.25}],
     "blocks": [{"rect": [0, 0, 1, 1], "velocity": [1, 0]}, {"rect": [1.01, 0, 1, 1]}],
     "contact": {"kn": 1e7}, "dt": 1e-4, "duration": 0.05
-  })";
+  })");
   const std::string out = dir + "/out";
   CHECK(run_cli("run \"" + scene + "\" --out \"" + out + "\" --quiet", dir + "/log") == 0);
   CHECK(fs::exists(out + "/timeseries.csv"));
@@ -85,13 +86,11 @@ TEST_CASE("dda run writes the outputs and exits 0", "[io][cli]") {
 
 TEST_CASE("dda run exits 3 on a SimulationError and keeps the valid rows", "[io][cli]") {
   const std::string dir = tmp("blowup");
-  fs::create_directories(dir);
-  const std::string scene = dir + "/s.json";
-  std::ofstream(scene) << R"({
+  const std::string scene = write_scene(dir, R"({
     "materials": [{"density": 2000, "young": 1e9, "poisson": 0.25}],
     "blocks": [{"rect": [0, 0, 1, 1], "velocity": [50, 0]}, {"rect": [1.05, 0, 1, 1]}],
     "contact": {"kn": 1e12}, "dt": 1e-3, "duration": 1.0, "output": {"every": 1}
-  })";
+  })");
   const std::string out = dir + "/out";
   CHECK(run_cli("run \"" + scene + "\" --out \"" + out + "\"", dir + "/log") == 3);
   const std::string msg = slurp(dir + "/log");
@@ -103,15 +102,13 @@ TEST_CASE("dda run exits 3 on a SimulationError and keeps the valid rows", "[io]
 
 TEST_CASE("dda check with dt_fraction reports the step it gives", "[io][cli]") {
   const std::string dir = tmp("check_dt_fraction");
-  fs::create_directories(dir);
-  const std::string scene = dir + "/s.json";
-  std::ofstream(scene) << R"({
+  const std::string scene = write_scene(dir, R"({
     "materials": [{"density": 2000, "young": 1e9, "poisson": 0.25}],
     "blocks": [{"rect": [0, 0, 1, 1], "velocity": [1, 0]}, {"rect": [1.01, 0, 1, 1]}],
     "contact": {"kn": 1e7, "small_edge_rays": "virtual_replaces_vertex"},
     "dt_fraction": 0.5, "duration": 0.05,
     "guards": {"max_step_motion": 0.2, "max_energy_growth": 1.0, "energy_check_every": 10}
-  })";
+  })");
   const std::string log = dir + ".log";
   CHECK(run_cli("check \"" + scene + "\"", log) == 0);
   const std::string msg = slurp(log);

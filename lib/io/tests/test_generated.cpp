@@ -3,7 +3,6 @@
 // field, and the Sect. 6 example scenes equal the C++ scene builders.
 #include <catch2/catch.hpp>
 
-#include <regex>
 
 #include <string>
 #include <vector>
@@ -12,11 +11,9 @@
 
 #include "dda/io/scene_file.hpp"
 #include "dda/rock_scenes.hpp"
+#include "scene_helpers.hpp"
 
-using dda::io::parse_scene;
-using dda::io::SceneFile;
-using dda::io::SceneFileError;
-using nlohmann::json;
+using namespace dda::io::test;
 
 namespace {
 
@@ -38,26 +35,6 @@ json base() {
     "dt": 1e-4,
     "duration": 0.1
   })");
-}
-
-std::string error_of(const json& j) {
-  try {
-    parse_scene(j.dump(2), "scene.json");
-  } catch (const SceneFileError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-void check_rejected(const json& j, const std::string& field, const std::string& reason) {
-  const std::string m = error_of(j);
-  INFO("message: " << m);
-  // "scene.json:<line>:<col>: <field>: ..." (no line:col for a field not in the file)
-  const std::regex prefix("^scene\\.json(:[0-9]+:[0-9]+)?: ");
-  std::smatch at;
-  REQUIRE(std::regex_search(m, at, prefix));
-  CHECK(m.compare(static_cast<std::size_t>(at.length(0)), field.size() + 2, field + ": ") == 0);
-  CHECK(m.find(reason) != std::string::npos);
 }
 
 void check_same_scene(const dda::Scene& a, const dda::Scene& b) {

@@ -14,12 +14,10 @@
 
 #include "dda/io/run.hpp"
 #include "dda/io/scene_file.hpp"
+#include "scene_helpers.hpp"
 
-using dda::io::parse_scene;
 using dda::io::ReadOptions;
-using dda::io::SceneFile;
-using dda::io::SceneFileError;
-using nlohmann::json;
+using namespace dda::io::test;
 
 namespace {
 
@@ -36,16 +34,6 @@ json base() {
   })");
 }
 
-std::string error_of(const std::string& text, const ReadOptions& opt = {}) {
-  try {
-    parse_scene(text, "scene.json", opt);
-  } catch (const SceneFileError& e) {
-    return e.what();
-  }
-  return "";
-}
-std::string error_of(const json& j, const ReadOptions& opt = {}) { return error_of(j.dump(2), opt); }
-
 struct Where {
   long line = -1, column = -1;  // -1: no position in the message
   std::string rest;             // after "<file>[:l:c]: "
@@ -58,13 +46,6 @@ Where where(const std::string& m) {
   if (s[1].matched) w.line = std::stol(s[1]), w.column = std::stol(s[2]);
   w.rest = s[3];
   return w;
-}
-
-void check_rejected(const std::string& m, const std::string& field, const std::string& reason) {
-  INFO("message: " << m);
-  const Where w = where(m);
-  CHECK(w.rest.rfind(field + ": ", 0) == 0);
-  CHECK(m.find(reason) != std::string::npos);
 }
 
 }  // namespace
@@ -171,23 +152,12 @@ TEST_CASE("file size is limited before reading", "[io][scene][hostile][limits]")
     const std::string line(1023, ' ');
     for (std::size_t i = 0; i <= dda::io::kMaxSceneFileBytes / 1024; ++i) out << line << '\n';
   }
-  std::string m;
-  try {
-    dda::io::load_scene_file(big);
-  } catch (const SceneFileError& e) {
-    m = e.what();
-  }
+  const std::string m = load_error_of(big);
   INFO(m);
   CHECK(m.rfind(big + ": more than 16777216 bytes", 0) == 0);
   fs::remove(big);
   // A device without a size: at most the limit is read.
-  m.clear();
-  try {
-    dda::io::load_scene_file("/dev/zero");
-  } catch (const SceneFileError& e) {
-    m = e.what();
-  }
-  CHECK(m.find("more than 16777216 bytes") != std::string::npos);
+  CHECK(load_error_of("/dev/zero").find("more than 16777216 bytes") != std::string::npos);
 }
 
 TEST_CASE("a run of too many steps is refused unless allowed", "[io][scene][hostile][steps]") {

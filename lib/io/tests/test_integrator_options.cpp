@@ -7,10 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "dda/io/scene_file.hpp"
+#include "scene_helpers.hpp"
 
-using dda::io::parse_scene;
-using dda::io::SceneFileError;
-using nlohmann::json;
+using namespace dda::io::test;
 
 namespace {
 
@@ -22,15 +21,6 @@ json scene() {
     "dt": 1e-4,
     "duration": 0.1
   })");
-}
-
-std::string error_of(const json& j) {
-  try {
-    parse_scene(j.dump(), "scene.json");
-  } catch (const SceneFileError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace

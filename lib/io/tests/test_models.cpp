@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -17,11 +18,9 @@
 #include "dda/cdem/scenes.hpp"
 #include "dda/io/models.hpp"
 #include "dda/io/scene_file.hpp"
+#include "scene_helpers.hpp"
 
-using dda::io::parse_scene;
-using dda::io::SceneFileError;
 using namespace dda::io::test;
-using nlohmann::json;
 
 namespace {
 
@@ -48,15 +47,6 @@ json penalty_base() {
     "dt": 1e-4,
     "duration": 0.01
   })");
-}
-
-std::string error_of(const json& j) {
-  try {
-    parse_scene(j.dump(2), "scene.json");
-  } catch (const SceneFileError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 // Numbers of a CSV file written in shortest round-trip form, by row.
@@ -143,15 +133,40 @@ TEST_CASE("keys of the other model and bad cdem values are refused, naming the f
     INFO(m);
     CHECK(m.find(text) != std::string::npos);
   };
-  json j = penalty_base();
-  j["model"] = "cdm";
-  expect(j, "model: unknown value \"cdm\"; expected one of \"penalty\", \"cdem\"");
-  j = penalty_base();
-  j["cdem"] = {{"divisions", 2}};
-  expect(j, "cdem: applies to the cdem model only; this scene's \"model\" is \"penalty\"");
-  j = penalty_base();
-  j["blocks"][0]["mesh"] = {{"divisions", 2}};
-  expect(j, "blocks[0].mesh: applies to the cdem model only");
+  // Each case: the base scene, the values set (by JSON pointer), the message.
+  struct Case {
+    json (*base)();
+    std::vector<std::pair<const char*, json>> set;
+    const char* message;
+  };
+  const std::vector<Case> cases = {
+      {penalty_base, {{"/model", "cdm"}}, "model: unknown value \"cdm\"; expected one of \"penalty\", \"cdem\""},
+      {penalty_base,
+       {{"/cdem", json{{"divisions", 2}}}},
+       "cdem: applies to the cdem model only; this scene's \"model\" is \"penalty\""},
+      {penalty_base, {{"/blocks/0/mesh", json{{"divisions", 2}}}}, "blocks[0].mesh: applies to the cdem model only"},
+      {cdem_base, {{"/blocks/0/spin", 1.0}}, "blocks[0].spin: applies to the penalty model only"},
+      {cdem_base, {{"/cdem/contact", "two-scale"}}, "cdem.contact: unknown value \"two-scale\""},
+      {cdem_base, {{"/cdem/penalty_kn", 1e8}}, "cdem.penalty_kn: applies to \"contact\": \"node_to_edge_penalty\" only"},
+      {cdem_base,
+       {{"/cdem/contact", "node_to_edge_penalty"}, {"/cdem/strength", json{{"tensile", 1.0}}}},
+       "cdem.strength: applies to the two-scale contact only"},
+      {cdem_base,
+       {{"/cdem/subdivision", false}, {"/cdem/max_subdivision", 4}},
+       "cdem.max_subdivision: has no effect with \"subdivision\": false"},
+      {cdem_base,
+       {{"/cdem/patch_deletion", "energy_matched"}},
+       "cdem.patch_deletion: applies to \"subdivision_mode\": \"in_place\" only"},
+      {cdem_base, {{"/cdem/tolerance", 0}}, "cdem.tolerance: must be positive"},
+      {cdem_base, {{"/cdem/divisions", 0}}, "cdem.divisions: must lie in [1, 64]"},
+      {cdem_base, {{"/blocks/0/mesh", json{{"cells", {2, 2}}}}}, "blocks[0].mesh.cells: needs an axis-aligned rectangle"},
+      {cdem_base, {{"/dt", 5e-3}}, "dt: time step 0.005 s exceeds the critical step"},  // above the mesh's critical step
+  };
+  for (const Case& k : cases) {
+    json j = k.base();
+    for (const auto& [at, value] : k.set) j[json::json_pointer(at)] = value;
+    expect(j, k.message);
+  }
   for (const char* key : {"contact", "boundaries", "strains", "guards", "damping", "dt_fraction", "threads",
                           "broad_phase", "initial_overlap", "rotation_update"}) {
     json c = cdem_base();
@@ -159,40 +174,8 @@ TEST_CASE("keys of the other model and bad cdem values are refused, naming the f
     if (std::string(key) == "boundaries") c[key] = json::array();
     expect(c, std::string(key) + ": applies to the penalty model only");
   }
-  json c = cdem_base();
-  c["blocks"][0]["spin"] = 1.0;
-  expect(c, "blocks[0].spin: applies to the penalty model only");
-  c = cdem_base();
-  c["cdem"]["contact"] = "two-scale";
-  expect(c, "cdem.contact: unknown value \"two-scale\"");
-  c = cdem_base();
-  c["cdem"]["penalty_kn"] = 1e8;
-  expect(c, "cdem.penalty_kn: applies to \"contact\": \"node_to_edge_penalty\" only");
-  c = cdem_base();
-  c["cdem"]["contact"] = "node_to_edge_penalty";
-  c["cdem"]["strength"] = {{"tensile", 1.0}};
-  expect(c, "cdem.strength: applies to the two-scale contact only");
-  c = cdem_base();
-  c["cdem"]["subdivision"] = false;
-  c["cdem"]["max_subdivision"] = 4;
-  expect(c, "cdem.max_subdivision: has no effect with \"subdivision\": false");
-  c = cdem_base();
-  c["cdem"]["patch_deletion"] = "energy_matched";
-  expect(c, "cdem.patch_deletion: applies to \"subdivision_mode\": \"in_place\" only");
-  c = cdem_base();
-  c["cdem"]["tolerance"] = 0;
-  expect(c, "cdem.tolerance: must be positive");
-  c = cdem_base();
-  c["cdem"]["divisions"] = 0;
-  expect(c, "cdem.divisions: must lie in [1, 64]");
-  c = cdem_base();
-  c["blocks"][0]["mesh"] = {{"cells", {2, 2}}};
-  expect(c, "blocks[0].mesh.cells: needs an axis-aligned rectangle");
-  c = cdem_base();
-  c["dt"] = 5e-3;  // above the mesh's critical step
-  expect(c, "dt: time step 0.005 s exceeds the critical step");
   // The message has the position of the field in the file.
-  c = cdem_base();
+  json c = cdem_base();
   c["cdem"]["tolerance"] = -1;
   const std::string m = error_of(c);
   CHECK(m.rfind("scene.json:", 0) == 0);
@@ -313,9 +296,7 @@ TEST_CASE("dda run on Paper B's two prisms reproduces the B-6 driver's run bit f
 
 TEST_CASE("dda run --threads N: the same files for any N, recorded in run.json", "[io][models]") {
   const std::string dir = scratch("threads");
-  fs::create_directories(dir);
-  const std::string scene = dir + "/pile.json";
-  std::ofstream(scene) << R"({
+  const std::string scene = write_scene(dir, R"({
     "materials": [{"density": 2700, "young": 2e9, "poisson": 0.3}],
     "blocks": [],
     "generated": {"region": [[0, 0], [3, 0], [3, 5], [0, 5]],
@@ -325,7 +306,7 @@ TEST_CASE("dda run --threads N: the same files for any N, recorded in run.json",
     "gravity": [0, -9.81], "broad_phase": "sweep", "dt_fraction": 0.5, "duration": 0.1,
     "threads": 3,
     "output": {"every": 5, "snapshots": [0, 0.05, 0.1]}
-  })";
+  })", "pile.json");
   REQUIRE(run_cli({"run", scene, "--out", dir + "/one", "--quiet", "--threads", "1"}, dir + "/one.log") == 0);
   REQUIRE(run_cli({"run", scene, "--out", dir + "/two", "--quiet", "--threads", "2"}, dir + "/two.log") == 0);
   REQUIRE(run_cli({"run", scene, "--out", dir + "/file", "--quiet"}, dir + "/file.log") == 0);  // the scene's 3

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -65,6 +66,31 @@ dda::io::SceneFile squares(double v, double gap, double kn, double dt, double du
             {"duration", duration},
             {"output", {{"every", every}}}};
   return dda::io::parse_scene(j.dump(), "squares.json");
+}
+
+// The record `dir`/run.json of a run.
+json run_record(const std::string& dir) {
+  std::ifstream in(dir + "/run.json");
+  return json::parse(in);
+}
+
+// `f` run into `dir` with its interrupt flag already set before the first
+// step, and what every such run leaves: a checkpoint, no temporary file,
+// run.json's status, the time series' row at t = 0. The result and run.json.
+std::pair<dda::io::RunResult, json> interrupted_run(const dda::io::SceneFile& f, const std::string& dir) {
+  volatile std::sig_atomic_t flag = 1;
+  dda::io::RunOptions opt;
+  opt.out_dir = dir;
+  opt.interrupt = &flag;
+  const dda::io::RunResult r = dda::io::run_scene(f, opt);
+  CHECK(r.status == dda::io::RunStatus::kInterrupted);
+  CHECK(r.checkpoint_path == dir + "/checkpoint.dda");
+  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
+  CHECK(no_tmp_files(dir));
+  const json run = run_record(dir);
+  CHECK(run["status"] == "interrupted");
+  CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
+  return {r, run};
 }
 
 }  // namespace
@@ -147,8 +173,7 @@ TEST_CASE("a completed run writes the time series, the snapshots and run.json", 
   CHECK(snap[1] == std::vector<std::string>{"0", "0", "0", "0", "0", "0"});
   CHECK(std::stod(snap.back()[0]) == Approx(0.1));
 
-  std::ifstream in(dir + "/run.json");
-  const json run = json::parse(in);
+  const json run = run_record(dir);
   CHECK(run["status"] == "completed");
   CHECK(run["steps"] == 1000);
   CHECK(run["blocks"][1]["name"] == "B");
@@ -189,8 +214,7 @@ TEST_CASE("a run stopped by SimulationError keeps the valid rows", "[io][run]") 
       CHECK(field.find("nan") == std::string::npos);
       CHECK(field.find("inf") == std::string::npos);
     }
-  std::ifstream in(dir + "/run.json");
-  const json run = json::parse(in);
+  const json run = run_record(dir);
   CHECK(run["status"] == "simulation_error");
   CHECK(run["message"].get<std::string>() == r.message);
 }
@@ -198,41 +222,17 @@ TEST_CASE("a run stopped by SimulationError keeps the valid rows", "[io][run]") 
 TEST_CASE("an interrupted run writes the output so far and a checkpoint", "[io][run]") {
   const std::string dir = fresh_dir("interrupted");
   const dda::io::SceneFile f = squares(1.0, 0.01, 1e7, 1e-4, 0.1, 7);
-  volatile std::sig_atomic_t flag = 1;  // set before the first step
-  dda::io::RunOptions opt;
-  opt.out_dir = dir;
-  opt.interrupt = &flag;
-  const dda::io::RunResult r = dda::io::run_scene(f, opt);
-  CHECK(r.status == dda::io::RunStatus::kInterrupted);
+  const auto [r, run] = interrupted_run(f, dir);
   CHECK(r.steps == 0);
   CHECK(r.timeseries_rows == 1);  // the row at t = 0
-  CHECK(r.checkpoint_path == dir + "/checkpoint.dda");
-  CHECK(fs::exists(dir + "/checkpoint.dda"));
-  CHECK(no_tmp_files(dir));
-  std::ifstream in(dir + "/run.json");
-  const json run = json::parse(in);
-  CHECK(run["status"] == "interrupted");
   CHECK(run["message"] == "interrupted at step 0 (t = 0 s)");
-  CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
 }
 
 TEST_CASE("an interrupted cdem run writes the output so far and a checkpoint", "[io][run]") {
   const std::string dir = fresh_dir("interrupted_cdem");
   const dda::io::SceneFile f = dda::io::load_scene_file(std::string(DDA_SCENES_DIR) + "/two_prisms.json");
-  volatile std::sig_atomic_t flag = 1;
-  dda::io::RunOptions opt;
-  opt.out_dir = dir;
-  opt.interrupt = &flag;
-  const dda::io::RunResult r = dda::io::run_scene(f, opt);
-  CHECK(r.status == dda::io::RunStatus::kInterrupted);
-  CHECK(r.checkpoint_path == dir + "/checkpoint.dda");
-  REQUIRE(fs::exists(dir + "/checkpoint.dda"));
-  CHECK(no_tmp_files(dir));
-  std::ifstream in(dir + "/run.json");
-  const json run = json::parse(in);
-  CHECK(run["status"] == "interrupted");
+  const json run = interrupted_run(f, dir).second;
   CHECK(run["model"] == "cdem");
-  CHECK(read_csv(dir + "/timeseries.csv").size() == 2);
   // The checkpoint holds the cdem model's section beside the run's.
   const dda::io::Checkpoint c = dda::io::read_checkpoint(dir);
   CHECK(c.model == "cdem");
@@ -268,8 +268,7 @@ TEST_CASE("with dt_fraction, the run uses and records that fraction of the predi
   opt.out_dir = dir;
   const dda::io::RunResult r = dda::io::run_scene(f, opt);
   REQUIRE(r.status == dda::io::RunStatus::kCompleted);
-  std::ifstream in(dir + "/run.json");
-  const json run = json::parse(in);
+  const json run = run_record(dir);
   CHECK(run["dt"].get<double>() == sim.dt());
   CHECK(r.steps == static_cast<std::int64_t>(std::llround(0.02 / sim.dt())));
 }
