@@ -4,14 +4,12 @@
 #include <vector>
 
 #include "dda/block.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
-Polygon rect(double x0, double y0, double w, double h) {
-  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  return make_polygon(p, 4);
-}
 
 // rho * int T^T T dS by a midpoint rule on an N x N grid over the rectangle:
 // independent of the area-moment formulas.

@@ -5,14 +5,12 @@
 #include <cstdint>
 
 #include "dda/contact.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
-Polygon rect(double x0, double y0, double w, double h) {
-  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  return make_polygon(p, 4);
-}
 Polygon hexagon(Vec2 c, double r, double phase) {
   Vec2 p[6];
   for (int k = 0; k < 6; ++k) p[k] = c + r * Vec2{std::cos(phase + k * M_PI / 3), std::sin(phase + k * M_PI / 3)};

@@ -11,8 +11,10 @@
 #include "dda/paper_scenes.hpp"
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
 
@@ -29,20 +31,6 @@ double worst_balance(Simulation& sim, double t_end, int samples, bool without_di
     worst = std::max(worst, std::fabs(without_dissipated ? e.total() - e.initial : e.balance_error()));
   }
   return worst / scale;
-}
-
-// Least-squares slope of log(err) against log(dt).
-double fitted_order(const std::vector<double>& dt, const std::vector<double>& err) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(dt.size());
-  for (std::size_t i = 0; i < dt.size(); ++i) {
-    const double x = std::log(dt[i]), y = std::log(err[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 paper::Incline incline_run(double phi_deg, FrictionUpdate update) {

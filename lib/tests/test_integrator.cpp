@@ -10,14 +10,13 @@
 #include "dda/paper_scenes.hpp"
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
 
-std::vector<Vec2> rect(double x0, double y0, double w, double h) {
-  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
 
 
 // Polar second moment of area about the centroid, m^4.
@@ -53,7 +52,7 @@ Scene spinning_block(RotationUpdate rule, double spin, double dt) {
   s.dt = dt;
   s.rotation_update = rule;
   BlockSpec b;
-  b.vertices = rect(0.0, 0.0, 1.0, 2.0);
+  b.vertices = rect_vertices(0.0, 0.0, 1.0, 2.0);
   b.spin = spin;
   s.blocks = {b};
   return s;
@@ -112,20 +111,6 @@ double energy_error(const Scene& scene, double t_end) {
   return worst / e0;
 }
 
-// Least-squares slope of log(y) against log(x).
-double fitted_order(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  const double n = static_cast<double>(x.size());
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    const double lx = std::log(x[k]), ly = std::log(y[k]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 // Paper A's flat contact: kn 10 MPa, H = 1 m given, rho 2000, g 9.81.
 constexpr double kKn = 1e7, kG = 9.81, kRho = 2000.0, kH = 1.0;
 
@@ -156,10 +141,10 @@ Scene resting_block(double a, double b, double v0) {
   s.contact.h = kH;
   const double delta = kRho * kG * kH / (2.0 * kKn);
   BlockSpec base;
-  base.vertices = rect(-1.0, -1.0, 3.0, 1.0);
+  base.vertices = rect_vertices(-1.0, -1.0, 3.0, 1.0);
   base.fixed = true;
   BlockSpec block;
-  block.vertices = rect(0.0, -delta, 1.0, 1.0);
+  block.vertices = rect_vertices(0.0, -delta, 1.0, 1.0);
   block.velocity = {0.0, v0};
   s.blocks = {base, block};
   s.initial_overlap = 2.5 * delta;
@@ -228,11 +213,11 @@ Scene stack(double a, double settle, bool strains) {
   s.contact.h_rule = HRule::kGiven;
   s.contact.h = kH;
   BlockSpec base;
-  base.vertices = rect(-1.0, -1.0, 3.0, 1.0);
+  base.vertices = rect_vertices(-1.0, -1.0, 3.0, 1.0);
   base.fixed = true;
   BlockSpec lower, upper;
-  lower.vertices = rect(0.0, 1e-6, 1.0, 1.0);
-  upper.vertices = rect(0.0, 1.0 + 2e-6, 1.0, 1.0);
+  lower.vertices = rect_vertices(0.0, 1e-6, 1.0, 1.0);
+  upper.vertices = rect_vertices(0.0, 1.0 + 2e-6, 1.0, 1.0);
   upper.velocity = {0.1, 0.0};  // held back while settling
   s.blocks = {base, lower, upper};
   s.damping.mass = a;

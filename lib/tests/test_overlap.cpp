@@ -5,15 +5,10 @@
 #include <cmath>
 
 #include "dda/overlap.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
-
-namespace {
-Polygon rect(double x0, double y0, double w, double h) {
-  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  return make_polygon(p, 4);
-}
-}  // namespace
+using namespace dda::test;
 
 TEST_CASE("entrance block of two squares is the 2x2 square around a0 - b offset", "[overlap]") {
   const Polygon a = rect(0, 0, 1, 1), b = rect(3, 0, 1, 1);

@@ -8,14 +8,12 @@
 #include "dda/joint_sets.hpp"
 #include "dda/polygon.hpp"
 #include "dda/rock_scenes.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
-Polygon rect(double x0, double y0, double w, double h) {
-  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  return make_polygon(p, 4);
-}
 PolygonFault fault_of(std::vector<Vec2> p) { return validate_polygon(p.data(), static_cast<int>(p.size())).fault; }
 }  // namespace
 

@@ -3,15 +3,10 @@
 #include <cmath>
 
 #include "dda/potential.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
-
-namespace {
-Polygon rect(double x0, double y0, double w, double h) {
-  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  return make_polygon(p, 4);
-}
-}  // namespace
+using namespace dda::test;
 
 TEST_CASE("exit distance and potential of a rectangle", "[potential]") {
   const Polygon r = rect(0, 0, 4, 2);

@@ -5,6 +5,7 @@
 // being exact where SPEC.md's replacing reading is not (repro/5_5).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -12,14 +13,12 @@
 #include "dda/contact.hpp"
 #include "dda/robustness_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
-Polygon rect(double x0, double y0, double w, double h) {
-  const Vec2 p[4] = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-  return make_polygon(p, 4);
-}
 
 // Runs to the end; returns the smallest y-component of the normal force on
 // `pushed` (negative = pulled into the other block: flip-through) and the
@@ -39,6 +38,18 @@ double run_and_watch(Simulation& sim, paper::RunMonitor& mon, int pushed, double
   }
   return min_push;
 }
+
+// Runs the two triangles of `st` to the end, sampling `mon` every step; the
+// largest point-symmetry error about their centre on the way.
+double run_point_symmetric(Simulation& sim, paper::RunMonitor& mon, const paper::SmallAngleTriangles& st) {
+  double asym = 0.0;
+  while (sim.time() < st.scene.duration - 0.5 * sim.dt()) {
+    sim.step();
+    mon.sample();
+    asym = std::max(asym, paper::point_symmetry_error(sim.polygon(0), sim.polygon(1), st.centre));
+  }
+  return asym;
+}
 }  // namespace
 
 TEST_CASE("overlap thickness and vertex depth of two squares pressed together", "[robustness]") {
@@ -52,12 +63,7 @@ TEST_CASE("5.2: 5 deg triangles move point-symmetrically and conserve energy", "
   const paper::SmallAngleTriangles st = paper::small_angle_triangles(5.0);
   Simulation sim(st.scene);
   paper::RunMonitor mon(sim, 0, 1);
-  double asym = 0.0;
-  while (sim.time() < st.scene.duration - 0.5 * sim.dt()) {
-    sim.step();
-    mon.sample();
-    asym = std::max(asym, paper::point_symmetry_error(sim.polygon(0), sim.polygon(1), st.centre));
-  }
+  const double asym = run_point_symmetric(sim, mon, st);
   CHECK(mon.stats().first_contact > 0.0);
   CHECK(sim.contacts().empty());  // apart again at 0.2 s
   CHECK(asym < 1e-9);
@@ -75,12 +81,7 @@ TEST_CASE("5.2: a 2 deg sliver at the paper's dt fails loudly, and runs clean be
   st.scene.dt_fraction = 0.5;
   Simulation sim(st.scene);
   paper::RunMonitor mon(sim, 0, 1);
-  double asym = 0.0;
-  while (sim.time() < st.scene.duration - 0.5 * sim.dt()) {
-    sim.step();
-    mon.sample();
-    asym = std::max(asym, paper::point_symmetry_error(sim.polygon(0), sim.polygon(1), st.centre));
-  }
+  const double asym = run_point_symmetric(sim, mon, st);
   CHECK(asym < 1e-9);
   CHECK(mon.stats().energy_error < 0.01);
 }

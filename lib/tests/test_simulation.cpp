@@ -15,22 +15,17 @@
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "state_hash.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
-using dda::test::state_hash;
-
-namespace {
-std::vector<Vec2> rect(double x0, double y0, double w, double h) {
-  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
-}  // namespace
+using namespace dda::test;
 
 TEST_CASE("a free-falling block follows g t^2 / 2 exactly (Verlet is exact for constant force)", "[simulation]") {
   Scene s;
   s.gravity = {0.0, -9.81};
   s.dt = 1e-3;
   BlockSpec b;
-  b.vertices = rect(0, 0, 1, 2);
+  b.vertices = rect_vertices(0, 0, 1, 2);
   b.velocity = {0.5, 0.0};
   s.blocks = {b};
   Simulation sim(s);
@@ -147,7 +142,7 @@ TEST_CASE("scene checks name the field and the reason", "[simulation]") {
   CHECK(message(bad).find("blocks[1].vertices") == 0);
   CHECK(message(bad).find("clockwise") != std::string::npos);
   bad = s;
-  bad.blocks[1].vertices = rect(-0.6, -0.5, 1.0, 1.0);
+  bad.blocks[1].vertices = rect_vertices(-0.6, -0.5, 1.0, 1.0);
   CHECK(message(bad).find("overlaps blocks[1]") != std::string::npos);
   bad = s;
   bad.boundaries.push_back({{-2.0, 0.0}, {2.0, 0.0}});  // solid below y = 0 cuts both squares
@@ -207,21 +202,7 @@ namespace {
 // A jointed column on a floor against a wall: ~80 blocks, several hundred
 // candidate pairs, friction rules.
 Scene jointed_column() {
-  const GeneratedBlocks g = generate_blocks({{0, 0}, {10, 0}, {10, 20}, {0, 20}},
-                                            {{80.0, 1.5, {0, 0}}, {40.0, 2.5, {0, 0}}}, 0.5);
-  Scene s;
-  s.materials = {{2700.0, 2e9, 0.3}};
-  s.contact.kn = 2e9;
-  s.contact.kt = 1e9;
-  s.contact.friction_deg = 15.0;
-  s.contact.friction_rules = {{0, 1, 35.0}};
-  s.gravity = {0.0, -9.81};
-  s.broad_phase = BroadPhase::kSweep;
-  for (const Polygon& p : g.blocks) {
-    BlockSpec b;
-    b.vertices.assign(p.v.begin(), p.v.begin() + p.count);
-    s.blocks.push_back(b);
-  }
+  Scene s = jointed_rock({{0, 0}, {10, 0}, {10, 20}, {0, 20}}, {{80.0, 1.5, {0, 0}}, {40.0, 2.5, {0, 0}}}, 0.5, 15.0);
   s.boundaries.push_back({{-5, 0}, {40, 0}, 0.0, 1});  // floor, solid below
   s.boundaries.push_back({{0, 20}, {0, -1}, 0.0, 1});  // wall, solid on the left
   return s;
@@ -315,9 +296,9 @@ TEST_CASE("a zero friction angle never produces a tangential force, whatever kt"
   s.gravity = {0.0, -9.81};
   s.dt = 1e-4;
   BlockSpec slab, box;
-  slab.vertices = rect(-5, -1, 10, 1);
+  slab.vertices = rect_vertices(-5, -1, 10, 1);
   slab.fixed = true;
-  box.vertices = rect(0, 0.01, 1, 1);
+  box.vertices = rect_vertices(0, 0.01, 1, 1);
   box.velocity = {2.0, -1.0};
   s.blocks = {slab, box};
   Simulation sim(s);

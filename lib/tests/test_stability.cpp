@@ -9,19 +9,18 @@
 
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
 
-std::vector<Vec2> rect(double x0, double y0, double w, double h) {
-  return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
 
 // Sect. 4.1's squares 1 mm apart with a stiff contact (kn 1e10 Pa).
 Scene stiff_impact(double dt_fraction) {
   Scene s = paper::two_squares();
-  s.blocks[0].vertices = rect(-1.001, -0.5, 1.0, 1.0);
+  s.blocks[0].vertices = rect_vertices(-1.001, -0.5, 1.0, 1.0);
   s.contact.kn = 1e10;
   s.dt_fraction = dt_fraction;
   s.duration = 0.05;
@@ -60,10 +59,10 @@ Resting resting(double kn, HRule rule) {
   const double w = 2000.0 * 9.81, len = 1.0;
   const double d = len - std::sqrt(len * len - w * h / kn);  // static penetration of a flat contact
   BlockSpec b;
-  b.vertices = rect(-2.0, -1.0, 4.0, 1.0);
+  b.vertices = rect_vertices(-2.0, -1.0, 4.0, 1.0);
   b.fixed = true;
   BlockSpec a;
-  a.vertices = rect(-0.5, -d, 1.0, 1.0);
+  a.vertices = rect_vertices(-0.5, -d, 1.0, 1.0);
   s.blocks = {b, a};
   s.initial_overlap = 2.0 * d * (1.0 + 1e-9);
   const double k = kn * len * 2.0 / h;

@@ -10,8 +10,10 @@
 #include "dda/joint_sets.hpp"
 #include "dda/simulation.hpp"
 #include "dda/state_bytes.hpp"
+#include "test_helpers.hpp"
 
 using namespace dda;
+using namespace dda::test;
 
 namespace {
 
@@ -28,16 +30,8 @@ struct Variant {
 };
 
 Scene collapsing_column(const Variant& v) {
-  const GeneratedBlocks g = generate_blocks({{0, 0}, {4, 0}, {4, 8}, {0, 8}},
-                                            {{70.0, 1.0, {0, 0}}, {30.0, 1.6, {0, 0}}}, 0.2);
-  Scene s;
-  s.materials = {{2700.0, 2e9, 0.3}};
-  s.contact.kn = 2e9;
-  s.contact.kt = 1e9;
-  s.contact.friction_deg = 20.0;
-  s.contact.friction_rules = {{0, 1, 35.0}};
+  Scene s = jointed_rock({{0, 0}, {4, 0}, {4, 8}, {0, 8}}, {{70.0, 1.0, {0, 0}}, {30.0, 1.6, {0, 0}}}, 0.2, 20.0);
   s.contact.friction_update = v.friction;
-  s.gravity = {0.0, -9.81};
   s.dt_fraction = 0.5;  // of the predicted critical step
   s.broad_phase = v.broad_phase;
   s.rotation_update = v.rotation;
@@ -45,11 +39,6 @@ Scene collapsing_column(const Variant& v) {
   s.damping.mass = v.mass_damping;
   s.damping.stiffness = v.stiffness_damping;
   s.guards.energy_check_every = 25;
-  for (const Polygon& p : g.blocks) {
-    BlockSpec b;
-    b.vertices.assign(p.v.begin(), p.v.begin() + p.count);
-    s.blocks.push_back(b);
-  }
   s.blocks[0].velocity = {0.5, 0.2};  // one block thrown against the others
   s.boundaries.push_back({{-5, 0}, {20, 0}, 0.0, 1});  // floor, solid below
   return s;
