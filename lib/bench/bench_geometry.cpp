@@ -46,39 +46,27 @@ const std::vector<Pair>& pairs(int n) {
 
 // Overlap test, then the intersection polygon when the pair overlaps.
 void BM_OverlapAndIntersection(benchmark::State& state) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)));
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0))), [](const Pair& p) {
     if (dda::overlap_state(p.a, p.b) == dda::OverlapState::kOverlapping) {
       dda::Polygon ip = dda::intersection_polygon(p.a, p.b);
       benchmark::DoNotOptimize(ip);
     }
-  }
-  bench::report_per_pair(state);
+  });
 }
 
 // The two parts alone, to see where the time goes.
 void BM_OverlapOnly(benchmark::State& state) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)));
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0))), [](const Pair& p) {
     dda::OverlapState s = dda::overlap_state(p.a, p.b);
     benchmark::DoNotOptimize(s);
-  }
-  bench::report_per_pair(state);
+  });
 }
 
 void BM_IntersectionOnly(benchmark::State& state) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)));
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0))), [](const Pair& p) {
     dda::Polygon ip = dda::intersection_polygon(p.a, p.b);
     benchmark::DoNotOptimize(ip);
-  }
-  bench::report_per_pair(state);
+  });
 }
 
 BENCHMARK(BM_OverlapAndIntersection)->Arg(4)->Arg(6)->Arg(8);

@@ -48,7 +48,6 @@
 
 namespace {
 
-using bench::kPairs;
 using bench::Pair;
 
 // bench::fill_pairs's pairs for (n, kind), built once per run.
@@ -62,62 +61,45 @@ std::vector<Pair>& pairs(int n, bool overlapping) {
 // Ours, overlapping pairs: Sect. 3.1 overlap + IP, Sect. 3.2 normal force,
 // moment and loading point, as Simulation::pair_force calls them.
 void BM_DdaNormalContact(benchmark::State& state) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)), true);
-  std::size_t i = 0;
   dda::Polygon ip;
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0)), true), [&](const Pair& p) {
     const double tol = p.tol();
     if (dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data()) == dda::OverlapState::kOverlapping) {
       const dda::NormalForce nf = dda::normal_contact_force(p.a.side, p.b.side, ip, dda::Integration::kPaperBisector,
                                                             tol, source.data(), dda::LoadingPoint::kWithinIp);
       benchmark::DoNotOptimize(nf);
     }
-  }
-  bench::report_per_pair(state);
+  });
 }
 
 // Ours, overlapping pairs, geometry only: Sect. 3.1 overlap + IP.
 void BM_DdaOverlapIp(benchmark::State& state) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)), true);
-  std::size_t i = 0;
   dda::Polygon ip;
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
-    const double tol = p.tol();
-    const dda::OverlapState s = dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data());
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0)), true), [&](const Pair& p) {
+    const dda::OverlapState s = dda::overlap_and_intersection(p.a.poly, p.b.poly, p.tol(), ip, source.data());
     benchmark::DoNotOptimize(s);
     benchmark::DoNotOptimize(ip);
-  }
-  bench::report_per_pair(state);
+  });
 }
 
 // Ours, separated candidates: the overlap test alone.
 void BM_DdaSeparated(benchmark::State& state) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)), false);
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0)), false), [](const Pair& p) {
     dda::OverlapState s = dda::overlap_state(p.a.poly, p.b.poly);
     benchmark::DoNotOptimize(s);
-  }
-  bench::report_per_pair(state);
+  });
 }
 
 // Box2D's manifold on the same pairs (identity transforms).
 void box2d_manifold(benchmark::State& state, bool overlapping) {
-  const std::vector<Pair>& v = pairs(static_cast<int>(state.range(0)), overlapping);
   const b2Transform identity(b2Vec2(0.0f, 0.0f), b2Rot(0.0f));
-  std::size_t i = 0;
   b2Manifold m;
-  for (auto _ : state) {
-    const Pair& p = v[i++ & (kPairs - 1)];
+  bench::each_pair(state, pairs(static_cast<int>(state.range(0)), overlapping), [&](const Pair& p) {
     b2CollidePolygons(&m, &p.a.b2, identity, &p.b.b2, identity);
     benchmark::DoNotOptimize(m);
-  }
-  bench::report_per_pair(state);
+  });
 }
 void BM_Box2dOverlapping(benchmark::State& state) { box2d_manifold(state, true); }
 void BM_Box2dSeparated(benchmark::State& state) { box2d_manifold(state, false); }

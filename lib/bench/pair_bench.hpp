@@ -1,5 +1,5 @@
 // Shared by the pair benchmarks (bench_geometry, pair_sides.hpp): random
-// convex polygons and the per-pair counter.
+// convex polygons, the loop over the pairs and the per-pair counter.
 #pragma once
 #include <benchmark/benchmark.h>
 
@@ -34,6 +34,20 @@ inline void report_per_pair(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
   state.counters["sec_per_pair"] =
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// `work(pair)` on `pairs` in turn, one pair per iteration (their count a
+// power of two: indexed with a mask), reported per pair.
+template <class Pair, class Work>
+void each_pair(benchmark::State& state, const std::vector<Pair>& pairs, Work work) {
+  const std::size_t mask = pairs.size() - 1;
+  if (pairs.empty() || (pairs.size() & mask) != 0) {
+    state.SkipWithError("the pair count is not a power of two");
+    return;
+  }
+  std::size_t i = 0;
+  for (auto _ : state) work(pairs[i++ & mask]);
+  report_per_pair(state);
 }
 
 }  // namespace bench
