@@ -66,50 +66,25 @@ std::uint64_t setup_hash(const ModelSetup& su) {
   const CdemScene& sc = su.scene;
   w.u64(sc.materials.size());
   for (const Material& m : sc.materials) {
-    put(w, m.density);
-    put(w, m.young);
-    put(w, m.poisson);
+    put_all(w, m.density, m.young, m.poisson);
   }
   w.u64(sc.blocks.size());
   for (const CdemBlock& b : sc.blocks) {
-    put(w, b.outline);
-    put(w, b.divisions);
-    put(w, b.mesh.nodes);
-    put(w, b.mesh.triangles);
-    put(w, b.velocity);
-    put(w, b.fixed);
-    put(w, b.material);
+    put_all(w, b.outline, b.divisions, b.mesh.nodes, b.mesh.triangles, b.velocity, b.fixed, b.material);
   }
-  put(w, sc.gravity);
-  put(w, sc.dt);
+  put_all(w, sc.gravity, sc.dt);
   const CdemOptions& o = su.opt;
   put_enum(w, o.contact);
   put_enum(w, o.touch_impact);
-  put(w, o.penalty_kn);
-  put(w, o.tolerance);
-  put(w, o.strength.tensile);
-  put(w, o.strength.cohesion);
-  put(w, o.strength.friction_deg);
-  put(w, o.subdivision);
+  put_all(w, o.penalty_kn, o.tolerance, o.strength.tensile, o.strength.cohesion, o.strength.friction_deg,
+          o.subdivision);
   put_enum(w, o.subdivision_mode);
   put_enum(w, o.submodel_transfer);
-  put(w, o.min_subdivision);
-  put(w, o.max_subdivision);
-  put(w, o.substep_safety);
-  put(w, o.mass_damping);
-  put(w, o.check_stability);
-  put(w, o.capture_touch_snapshots);
+  put_all(w, o.min_subdivision, o.max_subdivision, o.substep_safety, o.mass_damping, o.check_stability,
+          o.capture_touch_snapshots);
   put_enum(w, o.patch_deletion);
-  put(w, o.contact_point_mass);
-  put(w, su.dt);
-  put(w, su.d);
-  put(w, su.c);
-  put(w, su.wave_speed);
-  put(w, su.critical_dt);
-  put(w, su.element_critical_dt);
-  put(w, su.contact_critical_dt);
-  put(w, su.penalty_kn);
-  put(w, su.penalty_max_depth);
+  put_all(w, o.contact_point_mass, su.dt, su.d, su.c, su.wave_speed, su.critical_dt, su.element_critical_dt,
+          su.contact_critical_dt, su.penalty_kn, su.penalty_max_depth);
   return fnv1a(w.bytes());
 }
 
@@ -250,29 +225,18 @@ void write_state(ByteWriter& w, const ModelSetup& su, const ModelState& st) {
   w.f64(su.dt);
 
   // The clock.
-  put(w, st.time);
-  put(w, st.step_t0);
-  put(w, st.steps);
+  put_all(w, st.time, st.step_t0, st.steps);
   // The nodes, the blocks.
   const NodeState& nd = st.nodes;
   for (const auto* v : {&nd.x, &nd.v, &nd.xs, &nd.f, &nd.iface, &nd.iface0, &nd.iimp}) put(w, *v);
-  put(w, nd.m);
-  put(w, nd.inv_m);
-  put(w, nd.block);
+  put_all(w, nd.m, nd.inv_m, nd.block);
   w.u64(nd.kind.size());
   for (NodeKind k : nd.kind) put_enum(w, k);
-  put(w, nd.hang_a);
-  put(w, nd.hang_b);
-  put(w, nd.hang_w);
-  put(w, nd.clone_count);
-  put(w, nd.released_at);
-  put(w, nd.scratch);
-  put(w, st.blocks);
+  put_all(w, nd.hang_a, nd.hang_b, nd.hang_w, nd.clone_count, nd.released_at, nd.scratch, st.blocks);
   // The mesh: elements, lattices, the edge map by key, the coarse boundary,
   // then the derived lists.
   const MeshState& mesh = st.mesh;
-  put(w, mesh.elems);
-  put(w, mesh.lattices);
+  put_all(w, mesh.elems, mesh.lattices);
   std::vector<std::uint64_t> keys;
   keys.reserve(mesh.edges.size());
   for (const auto& kv : mesh.edges) keys.push_back(kv.first);
@@ -282,11 +246,7 @@ void write_state(ByteWriter& w, const ModelSetup& su, const ModelState& st) {
     w.u64(key);
     put(w, mesh.edges.at(key));
   }
-  put(w, mesh.coarse_bedges);
-  put(w, mesh.coarse_bedge_elem);
-  put(w, mesh.bedges);
-  put(w, mesh.block_bedges);
-  put(w, mesh.bnodes);
+  put_all(w, mesh.coarse_bedges, mesh.coarse_bedge_elem, mesh.bedges, mesh.block_bedges, mesh.bnodes);
   for (const auto* v : {&mesh.coarse_elems, &mesh.fine_elems, &mesh.coarse_eval, &mesh.patch_eval, &mesh.coarse_dofs,
                         &mesh.fine_dofs, &mesh.hanging})
     put(w, *v);
@@ -300,25 +260,16 @@ void write_state(ByteWriter& w, const ModelSetup& su, const ModelState& st) {
     w.i32(count);
   }
   // The in-place patches, the sub-models.
-  put(w, st.patches.k);
-  put(w, st.patches.substeps);
-  put(w, st.patches.substeps_taken);
+  put_all(w, st.patches.k, st.patches.substeps, st.patches.substeps_taken);
   const SubModels& subs = st.submodels;
-  put(w, subs.live);
-  put(w, subs.records);
-  put(w, subs.requests);
-  put(w, subs.request_touch);
-  put(w, subs.elem_owner);
-  put(w, subs.substeps_taken);
+  put_all(w, subs.live, subs.records, subs.requests, subs.request_touch, subs.elem_owner, subs.substeps_taken);
   // The penalty springs, the energy ledger, the contact log.
   put(w, st.penalty_contacts);
   const EnergyLedger& e = st.energy;
   for (double x : {e.initial, e.impact_loss, e.remap_change, e.refine_loss, e.deletion_loss, e.touch_loss_eq5,
                    e.touch_loss_eq5_group})
     put(w, x);
-  put(w, st.log.touches);
-  put(w, st.log.separations);
-  put(w, st.log.slips);
+  put_all(w, st.log.touches, st.log.separations, st.log.slips);
 }
 
 ModelState read_state(ByteReader& r, const ModelSetup& su) {
@@ -338,26 +289,15 @@ ModelState read_state(ByteReader& r, const ModelSetup& su) {
     r.fail("a state of another scene: its blocks, meshes, materials, gravity or cdem options differ from this scene's");
 
   ModelState st;
-  get(r, st.time);
-  get(r, st.step_t0);
-  get(r, st.steps);
+  get_all(r, st.time, st.step_t0, st.steps);
   NodeState& nd = st.nodes;
   for (auto* v : {&nd.x, &nd.v, &nd.xs, &nd.f, &nd.iface, &nd.iface0, &nd.iimp}) get(r, *v);
-  get(r, nd.m);
-  get(r, nd.inv_m);
-  get(r, nd.block);
+  get_all(r, nd.m, nd.inv_m, nd.block);
   nd.kind.resize(r.count(1));
   for (NodeKind& k : nd.kind) k = get_enum<NodeKind>(r, static_cast<std::uint8_t>(NodeKind::kDead), "a node kind");
-  get(r, nd.hang_a);
-  get(r, nd.hang_b);
-  get(r, nd.hang_w);
-  get(r, nd.clone_count);
-  get(r, nd.released_at);
-  get(r, nd.scratch);
-  get(r, st.blocks);
+  get_all(r, nd.hang_a, nd.hang_b, nd.hang_w, nd.clone_count, nd.released_at, nd.scratch, st.blocks);
   MeshState& mesh = st.mesh;
-  get(r, mesh.elems);
-  get(r, mesh.lattices);
+  get_all(r, mesh.elems, mesh.lattices);
   // The edges and the touch counts in increasing key order (one state, one stream).
   const std::size_t edges = r.count(8);
   std::uint64_t last_key = 0;
@@ -369,11 +309,7 @@ ModelState read_state(ByteReader& r, const ModelSetup& su) {
     get(r, e);
     if (e.lo < 0 || e.hi < 0 || !(e.lo < e.hi) || edge_key(e.lo, e.hi) != key) r.fail("an edge's nodes do not match its key");
   }
-  get(r, mesh.coarse_bedges);
-  get(r, mesh.coarse_bedge_elem);
-  get(r, mesh.bedges);
-  get(r, mesh.block_bedges);
-  get(r, mesh.bnodes);
+  get_all(r, mesh.coarse_bedges, mesh.coarse_bedge_elem, mesh.bedges, mesh.block_bedges, mesh.bnodes);
   for (auto* v : {&mesh.coarse_elems, &mesh.fine_elems, &mesh.coarse_eval, &mesh.patch_eval, &mesh.coarse_dofs,
                   &mesh.fine_dofs, &mesh.hanging})
     get(r, *v);
@@ -386,24 +322,15 @@ ModelState read_state(ByteReader& r, const ModelSetup& su) {
     last_node = node;
     st.step_touch_count.emplace(node, r.i32());
   }
-  get(r, st.patches.k);
-  get(r, st.patches.substeps);
-  get(r, st.patches.substeps_taken);
+  get_all(r, st.patches.k, st.patches.substeps, st.patches.substeps_taken);
   SubModels& subs = st.submodels;
-  get(r, subs.live);
-  get(r, subs.records);
-  get(r, subs.requests);
-  get(r, subs.request_touch);
-  get(r, subs.elem_owner);
-  get(r, subs.substeps_taken);
-  get(r, st.penalty_contacts);
+  get_all(r, subs.live, subs.records, subs.requests, subs.request_touch, subs.elem_owner, subs.substeps_taken,
+          st.penalty_contacts);
   EnergyLedger& e = st.energy;
   for (double* x : {&e.initial, &e.impact_loss, &e.remap_change, &e.refine_loss, &e.deletion_loss, &e.touch_loss_eq5,
                     &e.touch_loss_eq5_group})
     get(r, *x);
-  get(r, st.log.touches);
-  get(r, st.log.separations);
-  get(r, st.log.slips);
+  get_all(r, st.log.touches, st.log.separations, st.log.slips);
 
   if (st.blocks.size() != su.scene.blocks.size()) r.fail("the state's blocks do not match the scene's");
   if (coarse_element_count(mesh) != coarse)

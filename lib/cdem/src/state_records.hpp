@@ -121,4 +121,17 @@ E get_enum(ByteReader& r, std::uint8_t last, const char* what) {
   return static_cast<E>(b);
 }
 
+// --- several parts in turn --------------------------------------------------
+
+// put(w, a), put(w, b), ... in the order given (one record's fields).
+template <class... T>
+void put_all(ByteWriter& w, const T&... parts) {
+  (put(w, parts), ...);
+}
+// get(r, a), get(r, b), ... in the order given.
+template <class... T>
+void get_all(ByteReader& r, T&... parts) {
+  (get(r, parts), ...);
+}
+
 }  // namespace dda::cdem::state_io
