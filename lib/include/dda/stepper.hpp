@@ -11,6 +11,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "dda/simulation.hpp"
@@ -67,31 +68,41 @@ class Stepper {
   virtual std::vector<Vec2> outline(int i) const = 0;
 };
 
-// Paper A's model behind the interface; owns the simulation.
-class SimulationStepper final : public Stepper {
+// An adapter that owns its model (Simulation, cdem::Model) and passes on
+// what both models name alike: the step, the clock, the scene's duration,
+// the momentum.
+template <class Model>
+class OwningStepper : public Stepper {
  public:
-  explicit SimulationStepper(Simulation sim) : sim_(std::move(sim)) {}
+  explicit OwningStepper(Model model) : model_(std::move(model)) {}
 
-  Simulation& simulation() { return sim_; }
-  const Simulation& simulation() const { return sim_; }
+  void step() override { model_.step(); }
+  double time() const override { return model_.time(); }
+  double dt() const override { return model_.dt(); }
+  std::int64_t step_count() const override { return model_.step_count(); }
+  double duration() const override { return model_.scene().duration; }
+  Vec2 momentum() const override { return model_.momentum(); }
 
-  void step() override { sim_.step(); }
-  void advance(std::int64_t count) override { sim_.advance(count); }
-  double time() const override { return sim_.time(); }
-  double dt() const override { return sim_.dt(); }
-  std::int64_t step_count() const override { return sim_.step_count(); }
-  double duration() const override { return sim_.scene().duration; }
-  Energy energy() const override { return sim_.energy(); }
-  Vec2 momentum() const override { return sim_.momentum(); }
-  std::size_t contact_count() const override { return sim_.contacts().size(); }
-  int block_count() const override { return sim_.scene_block_count(); }
+ protected:
+  Model model_;
+};
+
+// Paper A's model behind the interface; owns the simulation.
+class SimulationStepper final : public OwningStepper<Simulation> {
+ public:
+  using OwningStepper::OwningStepper;
+
+  Simulation& simulation() { return model_; }
+  const Simulation& simulation() const { return model_; }
+
+  void advance(std::int64_t count) override { model_.advance(count); }
+  Energy energy() const override { return model_.energy(); }
+  std::size_t contact_count() const override { return model_.contacts().size(); }
+  int block_count() const override { return model_.scene_block_count(); }
   BlockMotion block_motion(int block) const override;
   bool has_rotation() const override { return true; }
-  int outline_count() const override { return sim_.block_count(); }
+  int outline_count() const override { return model_.block_count(); }
   std::vector<Vec2> outline(int i) const override;
-
- private:
-  Simulation sim_;
 };
 
 }  // namespace dda

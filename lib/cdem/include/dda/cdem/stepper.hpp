@@ -15,29 +15,20 @@ namespace dda::cdem {
 // refinement and deletion losses of Sect. 5), so that balance_error() is
 // minus the account's `other` (time integration, sliding friction, mass
 // damping, the clones' drift).
-class ModelStepper final : public Stepper {
+class ModelStepper final : public OwningStepper<Model> {
  public:
-  explicit ModelStepper(Model model) : model_(std::move(model)) {}
+  using OwningStepper::OwningStepper;
 
   Model& model() { return model_; }
   const Model& model() const { return model_; }
 
-  void step() override { model_.step(); }
-  double time() const override { return model_.time(); }
-  double dt() const override { return model_.dt(); }
-  std::int64_t step_count() const override { return model_.step_count(); }
-  double duration() const override { return model_.scene().duration; }
   Energy energy() const override;
-  Vec2 momentum() const override { return model_.momentum(); }
   std::size_t contact_count() const override;
   int block_count() const override { return model_.block_count(); }
   BlockMotion block_motion(int block) const override;
   bool has_rotation() const override { return false; }
   int outline_count() const override { return model_.block_count(); }
   std::vector<Vec2> outline(int i) const override { return model_.block_outline(i); }
-
- private:
-  Model model_;
 };
 
 }  // namespace dda::cdem
