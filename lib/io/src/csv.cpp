@@ -41,6 +41,16 @@ std::string csv_quote(const std::string& field) {
 
 namespace {
 
+// `line` = `fields` quoted as needed, comma-separated, ended by a newline.
+void quoted_line(const std::vector<std::string>& fields, std::string& line) {
+  line.clear();
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i) line += ',';
+    line += csv_quote(fields[i]);
+  }
+  line += '\n';
+}
+
 void rename_into_place(const std::string& tmp, const std::string& path) {
   std::error_code ec;
   fs::rename(tmp, path, ec);
@@ -84,12 +94,7 @@ CsvFile::CsvFile(std::string path, std::vector<std::string> header, const std::v
       line_ = "# " + c + "\n";
       write_line();
     }
-    line_.clear();
-    for (std::size_t i = 0; i < header_.size(); ++i) {
-      if (i) line_ += ',';
-      line_ += csv_quote(header_[i]);
-    }
-    line_ += '\n';
+    quoted_line(header_, line_);
     write_line();
   } catch (...) {
     discard();
@@ -188,12 +193,7 @@ void CsvFile::text_row(const std::vector<std::string>& fields) {
   if (fields.size() != header_.size())
     throw std::logic_error("CsvFile(" + path_ + "): row has " + std::to_string(fields.size()) + " fields, header has " +
                            std::to_string(header_.size()));
-  line_.clear();
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i) line_ += ',';
-    line_ += csv_quote(fields[i]);
-  }
-  line_ += '\n';
+  quoted_line(fields, line_);
   write_line();
   ++rows_;
 }

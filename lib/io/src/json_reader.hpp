@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include <nlohmann/json.hpp>
@@ -51,6 +52,28 @@ class Reader {
   static const json* find(const json& obj, const char* key) {
     const auto it = obj.find(key);
     return it == obj.end() ? nullptr : &*it;
+  }
+
+  // If `obj` has `key`: `to` = its value read as `to`'s type says (a number,
+  // an integer, a boolean, a string or a point; `path`.`key` in messages);
+  // else `to` keeps its default.
+  template <class T>
+  void optional(const json& obj, const std::string& path, const char* key, T& to) const {
+    const json* v = find(obj, key);
+    if (!v) return;
+    const std::string at = join_path(path, key);
+    if constexpr (std::is_same_v<T, double>)
+      to = number(*v, at);
+    else if constexpr (std::is_same_v<T, int>)
+      to = integer(*v, at);
+    else if constexpr (std::is_same_v<T, bool>)
+      to = boolean(*v, at);
+    else if constexpr (std::is_same_v<T, std::string>)
+      to = string(*v, at);
+    else {
+      static_assert(std::is_same_v<T, Vec2>, "optional: a number, integer, boolean, string or point");
+      to = vec2(*v, at);
+    }
   }
 
   const json& need(const json& obj, const std::string& path, const char* key) const {

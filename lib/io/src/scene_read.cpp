@@ -119,11 +119,11 @@ BlockSpec read_block(const Reader& r, const json& v, const std::string& path, co
     for (Vec2& p : b.vertices) p = pivot + rotate(p - pivot, a);
     check_magnitude(r, b.vertices, join_path(path, "rotate_deg"));
   }
-  if (const json* x = Reader::find(v, "name")) b.name = r.string(*x, join_path(path, "name"));
-  if (const json* x = Reader::find(v, "velocity")) b.velocity = r.vec2(*x, join_path(path, "velocity"));
-  if (const json* x = Reader::find(v, "spin")) b.spin = r.number(*x, join_path(path, "spin"));
-  if (const json* x = Reader::find(v, "fixed")) b.fixed = r.boolean(*x, join_path(path, "fixed"));
-  if (const json* x = Reader::find(v, "group")) b.group = r.integer(*x, join_path(path, "group"));
+  r.optional(v, path, "name", b.name);
+  r.optional(v, path, "velocity", b.velocity);
+  r.optional(v, path, "spin", b.spin);
+  r.optional(v, path, "fixed", b.fixed);
+  r.optional(v, path, "group", b.group);
   if (const json* x = Reader::find(v, "material")) b.material = material_ref(r, *x, join_path(path, "material"), names);
   if (b.fixed && (b.velocity != Vec2{} || b.spin != 0.0))
     r.fail(join_path(path, Reader::find(v, "velocity") ? "velocity" : "spin"),
@@ -138,8 +138,8 @@ BoundarySegment read_boundary(const Reader& r, const json& v, const std::string&
   s.b = r.vec2(r.need(v, path, "b"), join_path(path, "b"));
   if (!std::isfinite((s.b.x - s.a.x) * (s.b.x - s.a.x) + (s.b.y - s.a.y) * (s.b.y - s.a.y)))
     r.fail(path, "coordinates too large: the segment's squared length overflows a double (keep |x|, |y| below 1e150 m)");
-  if (const json* x = Reader::find(v, "depth")) s.depth = r.number(*x, join_path(path, "depth"));
-  if (const json* x = Reader::find(v, "group")) s.group = r.integer(*x, join_path(path, "group"));
+  r.optional(v, path, "depth", s.depth);
+  r.optional(v, path, "group", s.group);
   return s;
 }
 
@@ -202,9 +202,9 @@ GeneratedRegion read_generated(const Reader& r, const json& v, const std::string
   }
   BlockSpec proto;
   if (const json* x = Reader::find(v, "material")) proto.material = material_ref(r, *x, join_path(path, "material"), names);
-  if (const json* x = Reader::find(v, "group")) proto.group = r.integer(*x, join_path(path, "group"));
+  r.optional(v, path, "group", proto.group);
   std::string name;
-  if (const json* x = Reader::find(v, "name")) name = r.string(*x, join_path(path, "name"));
+  r.optional(v, path, "name", name);
   GeneratedBlocks g;
   try {
     g = generate_blocks(region, sets, min_area);
@@ -234,8 +234,8 @@ ContactParams read_contact(const Reader& r, const json& v, const std::string& pa
             "small_edge_rays", "friction_update"});
   ContactParams c;
   c.kn = r.number(r.need(v, path, "kn"), join_path(path, "kn"));
-  if (const json* x = Reader::find(v, "kt")) c.kt = r.number(*x, join_path(path, "kt"));
-  if (const json* x = Reader::find(v, "friction_deg")) c.friction_deg = r.number(*x, join_path(path, "friction_deg"));
+  r.optional(v, path, "kt", c.kt);
+  r.optional(v, path, "friction_deg", c.friction_deg);
   if (const json* x = Reader::find(v, "friction_rules")) {
     const std::string rp = join_path(path, "friction_rules");
     r.array(*x, rp, " of {\"groups\": [a, b], \"friction_deg\": phi}");
@@ -267,8 +267,7 @@ ContactParams read_contact(const Reader& r, const json& v, const std::string& pa
     c.integration = r.choice<Integration>(
         *x, join_path(path, "integration"),
         {{"paper_bisector", Integration::kPaperBisector}, {"exact_envelope", Integration::kExactEnvelope}});
-  if (const json* x = Reader::find(v, "small_edge_fraction"))
-    c.small_edge_fraction = r.number(*x, join_path(path, "small_edge_fraction"));
+  r.optional(v, path, "small_edge_fraction", c.small_edge_fraction);
   if (const json* x = Reader::find(v, "small_edge_rays"))
     c.small_edge_rays = r.choice<SmallEdgeRays>(*x, join_path(path, "small_edge_rays"),
                                                 {{"virtual_and_vertex", SmallEdgeRays::kVirtualAndVertex},
@@ -287,18 +286,12 @@ StabilityGuards read_guards(const Reader& r, const json& v, const std::string& p
            {"max_step_motion", "max_balance_error", "max_energy_growth", "energy_check_every", "max_penetration",
             "max_approach_energy"});
   StabilityGuards g;
-  if (const json* x = Reader::find(v, "max_step_motion"))
-    g.max_step_motion = r.number(*x, join_path(path, "max_step_motion"));
-  if (const json* x = Reader::find(v, "max_balance_error"))
-    g.max_balance_error = r.number(*x, join_path(path, "max_balance_error"));
-  if (const json* x = Reader::find(v, "max_energy_growth"))
-    g.max_energy_growth = r.number(*x, join_path(path, "max_energy_growth"));
-  if (const json* x = Reader::find(v, "energy_check_every"))
-    g.energy_check_every = r.integer(*x, join_path(path, "energy_check_every"));
-  if (const json* x = Reader::find(v, "max_penetration"))
-    g.max_penetration = r.number(*x, join_path(path, "max_penetration"));
-  if (const json* x = Reader::find(v, "max_approach_energy"))
-    g.max_approach_energy = r.number(*x, join_path(path, "max_approach_energy"));
+  r.optional(v, path, "max_step_motion", g.max_step_motion);
+  r.optional(v, path, "max_balance_error", g.max_balance_error);
+  r.optional(v, path, "max_energy_growth", g.max_energy_growth);
+  r.optional(v, path, "energy_check_every", g.energy_check_every);
+  r.optional(v, path, "max_penetration", g.max_penetration);
+  r.optional(v, path, "max_approach_energy", g.max_approach_energy);
   return g;
 }
 
@@ -399,13 +392,11 @@ std::string generated_note(const std::string& message, const std::vector<Generat
 Damping read_damping(const Reader& r, const json& v, const std::string& path) {
   r.object(v, path, {"mass", "stiffness", "settle_time", "settle_sticking", "settle_slip_time"});
   Damping d;
-  if (const json* x = Reader::find(v, "mass")) d.mass = r.number(*x, join_path(path, "mass"));
-  if (const json* x = Reader::find(v, "stiffness")) d.stiffness = r.number(*x, join_path(path, "stiffness"));
-  if (const json* x = Reader::find(v, "settle_time")) d.settle_time = r.number(*x, join_path(path, "settle_time"));
-  if (const json* x = Reader::find(v, "settle_sticking"))
-    d.settle_sticking = r.boolean(*x, join_path(path, "settle_sticking"));
-  if (const json* x = Reader::find(v, "settle_slip_time"))
-    d.settle_slip_time = r.number(*x, join_path(path, "settle_slip_time"));
+  r.optional(v, path, "mass", d.mass);
+  r.optional(v, path, "stiffness", d.stiffness);
+  r.optional(v, path, "settle_time", d.settle_time);
+  r.optional(v, path, "settle_sticking", d.settle_sticking);
+  r.optional(v, path, "settle_slip_time", d.settle_slip_time);
   return d;
 }
 
