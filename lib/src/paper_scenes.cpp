@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene_blocks.hpp"
+
 namespace dda::paper {
 
 namespace {
@@ -10,15 +12,6 @@ constexpr double kG = 9.81;  // m/s^2
 
 std::vector<Vec2> rect(double x0, double y0, double w, double h) {
   return {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
-}
-
-BlockSpec block(std::vector<Vec2> v, Vec2 vel = {}, bool fixed = false, int group = 0) {
-  BlockSpec b;
-  b.vertices = std::move(v);
-  b.velocity = vel;
-  b.fixed = fixed;
-  b.group = group;
-  return b;
 }
 }  // namespace
 

@@ -5,6 +5,7 @@
 
 #include "dda/overlap.hpp"
 #include "dda/potential.hpp"
+#include "scene_blocks.hpp"
 
 namespace dda::paper {
 
@@ -24,14 +25,6 @@ Scene table5_scene(const char* name, double dt, double duration) {
   return s;
 }
 
-BlockSpec block(std::vector<Vec2> v, Vec2 vel, bool fixed, const char* name) {
-  BlockSpec b;
-  b.vertices = std::move(v);
-  b.velocity = vel;
-  b.fixed = fixed;
-  b.name = name;
-  return b;
-}
 }  // namespace
 
 BouncingBlock bouncing_block(double b_height, HRule h_rule, double duration) {
@@ -43,8 +36,8 @@ BouncingBlock bouncing_block(double b_height, HRule h_rule, double duration) {
   const double half_w = 2.0;  // B is 4 m wide
   const double a = 1.0;       // A is a 1 m square
   s.blocks = {
-      block({{-half_w, -b_height}, {half_w, -b_height}, {half_w, 0.0}, {-half_w, 0.0}}, {}, true, "B"),
-      block({{-0.5 * a, bb.drop}, {0.5 * a, bb.drop}, {0.5 * a, bb.drop + a}, {-0.5 * a, bb.drop + a}}, {}, false,
+      block({{-half_w, -b_height}, {half_w, -b_height}, {half_w, 0.0}, {-half_w, 0.0}}, {}, true, 0, "B"),
+      block({{-0.5 * a, bb.drop}, {0.5 * a, bb.drop}, {0.5 * a, bb.drop + a}, {-0.5 * a, bb.drop + a}}, {}, false, 0,
             "A"),
   };
   return bb;
@@ -73,7 +66,7 @@ SmallAngleTriangles small_angle_triangles(double angle_deg, double duration, Tri
   // Point image through the centre (0, 0): a rotation by 180 deg keeps CCW.
   std::vector<Vec2> t1;
   for (const Vec2& p : t0) t1.push_back(-p);
-  s.blocks = {block(t0, {0.0, 1.0}, false, "lower"), block(t1, {0.0, -1.0}, false, "upper")};
+  s.blocks = {block(t0, {0.0, 1.0}, false, 0, "lower"), block(t1, {0.0, -1.0}, false, 0, "upper")};
   st.centre = {0.0, 0.0};
   st.apex = {0, 0};
   return st;
@@ -98,7 +91,7 @@ SmallEdgeImpact small_edge_impact(SmallEdgeCase which, double small_edge, double
   const double gap = 0.01, h = 0.5 / std::sqrt(2.0);  // half diagonal of the 0.5 m square
   const Vec2 p = si.hit_point + Vec2{0.0, gap};
   const std::vector<Vec2> upper = {p, p + Vec2{h, h}, p + Vec2{0.0, 2.0 * h}, p + Vec2{-h, h}};
-  s.blocks = {block(lower, {}, true, "lower"), block(upper, {0.0, -1.0}, false, "upper")};
+  s.blocks = {block(lower, {}, true, 0, "lower"), block(upper, {0.0, -1.0}, false, 0, "upper")};
   si.contact_vertex = 0;
   return si;
 }
