@@ -136,6 +136,21 @@ py::dict separation_columns(const std::vector<cdem::SeparationRecord>& rows) {
   return d;
 }
 
+// A property getter: of(model, b) for each block b, as (n, 2) points or (n,)
+// values (a copy).
+template <class T>
+auto per_block(T (Model::*of)(int) const) {
+  return [of](const PyCdem& s) {
+    const Model& md = s.read();
+    const auto n = static_cast<std::size_t>(md.block_count());
+    const auto at = [&](std::size_t b) { return (md.*of)(static_cast<int>(b)); };
+    if constexpr (std::is_same_v<T, Vec2>)
+      return points_array(n, at);
+    else
+      return column<T>(n, at);
+  };
+}
+
 // The active elements (of one block, or all with block < 0).
 std::vector<const cdem::Element*> active_elements(const Model& m, int block) {
   if (block >= m.block_count()) throw py::index_error("block index out of range");
@@ -172,38 +187,14 @@ void bind_cdem(py::module_& m) {
                              "The element bound min_e 2 / omega_max(e), s.")
       // --- blocks ---
       .def_property_readonly("block_count", [](const PyCdem& s) { return s.read().block_count(); })
-      .def_property_readonly(
-          "positions",
-          [](const PyCdem& s) {
-            const Model& md = s.read();
-            return points_array(static_cast<std::size_t>(md.block_count()),
-                                [&](std::size_t b) { return md.block_mean_position(static_cast<int>(b)); });
-          },
-          "(n, 2) each block's mass-weighted mean node position, m (copy).")
-      .def_property_readonly(
-          "velocities",
-          [](const PyCdem& s) {
-            const Model& md = s.read();
-            return points_array(static_cast<std::size_t>(md.block_count()),
-                                [&](std::size_t b) { return md.block_velocity(static_cast<int>(b)); });
-          },
-          "(n, 2) each block's momentum / mass, m/s (copy).")
-      .def_property_readonly(
-          "displacements",
-          [](const PyCdem& s) {
-            const Model& md = s.read();
-            return points_array(static_cast<std::size_t>(md.block_count()),
-                                [&](std::size_t b) { return md.block_displacement(static_cast<int>(b)); });
-          },
-          "(n, 2) each block's mean position minus its initial value, m (copy).")
-      .def_property_readonly(
-          "masses",
-          [](const PyCdem& s) {
-            const Model& md = s.read();
-            return column<double>(static_cast<std::size_t>(md.block_count()),
-                                  [&](std::size_t b) { return md.block_mass(static_cast<int>(b)); });
-          },
-          "(n,) block masses, kg/m (copy).")
+      .def_property_readonly("positions", per_block(&Model::block_mean_position),
+                             "(n, 2) each block's mass-weighted mean node position, m (copy).")
+      .def_property_readonly("velocities", per_block(&Model::block_velocity),
+                             "(n, 2) each block's momentum / mass, m/s (copy).")
+      .def_property_readonly("displacements", per_block(&Model::block_displacement),
+                             "(n, 2) each block's mean position minus its initial value, m (copy).")
+      .def_property_readonly("masses", per_block(&Model::block_mass),
+                             "(n,) block masses, kg/m (copy).")
       // --- nodes and elements ---
       .def_property_readonly("node_count", [](const PyCdem& s) { return s.read().node_count(); })
       .def_property_readonly(

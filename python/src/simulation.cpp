@@ -99,26 +99,34 @@ py::array state_view(const py::object& self, Row row) {
   return read_only_view(n > 0 ? row(sim, 0) : nullptr, n, Cols, Cols, self);
 }
 
-// Per-block rows of a state vector: rows[i] = f(i).
+// A property getter: the per-block rows f(sim, i) of the simulation, (n, Cols)
+// (a copy).
 template <int Cols, class F>
-py::array_t<double> per_block(const Simulation& s, F f) {
-  const int n = s.block_count();
-  py::array_t<double> a = new_array(n, Cols);
-  auto w = a.mutable_unchecked<2>();
-  for (int i = 0; i < n; ++i) {
-    const auto row = f(i);
-    for (int c = 0; c < Cols; ++c) w(i, c) = row[c];
-  }
-  return a;
+auto per_block(F f) {
+  return [f](const PySimulation& s) {
+    const Simulation& sim = s.read();
+    const int n = sim.block_count();
+    py::array_t<double> a = new_array(n, Cols);
+    auto w = a.mutable_unchecked<2>();
+    for (int i = 0; i < n; ++i) {
+      const auto row = f(sim, i);
+      for (int c = 0; c < Cols; ++c) w(i, c) = row[c];
+    }
+    return a;
+  };
 }
 
+// A property getter: the per-block values f(sim, i), (n,) (a copy).
 template <class F>
-py::array_t<double> per_block_scalar(const Simulation& s, F f) {
-  const int n = s.block_count();
-  py::array_t<double> a(n);
-  auto w = a.mutable_unchecked<1>();
-  for (int i = 0; i < n; ++i) w(i) = f(i);
-  return a;
+auto per_block_scalar(F f) {
+  return [f](const PySimulation& s) {
+    const Simulation& sim = s.read();
+    const int n = sim.block_count();
+    py::array_t<double> a(n);
+    auto w = a.mutable_unchecked<1>();
+    for (int i = 0; i < n; ++i) w(i) = f(sim, i);
+    return a;
+  };
 }
 
 // The contacts of the last force evaluation as arrays (one row a contact).
@@ -259,58 +267,37 @@ void bind_simulation(py::module_& m) {
                              "Polygons: the scene's blocks, then one per boundary segment.")
       .def_property_readonly("scene_block_count", [](const PySimulation& s) { return s.read().scene_block_count(); })
       // --- state, copies ---
-      .def_property_readonly(
-          "centroids", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block<2>(sim, [&](int i) { const Vec2 c = sim.centroid(i); return std::array<double, 2>{c.x, c.y}; });
-          }, "(n, 2) block centroids, m (copy).")
-      .def_property_readonly(
-          "velocities", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block<2>(sim, [&](int i) { return std::array<double, 2>{sim.velocity(i)[0], sim.velocity(i)[1]}; });
-          }, "(n, 2) centroid velocities, m/s (copy).")
-      .def_property_readonly(
-          "spins", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block_scalar(sim, [&](int i) { return sim.velocity(i)[2]; });
-          }, "(n,) angular velocities, rad/s (copy).")
-      .def_property_readonly(
-          "rotations", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block_scalar(sim, [&](int i) { return sim.displacement(i)[2]; });
-          }, "(n,) rotations accumulated since t = 0, rad (copy).")
-      .def_property_readonly(
-          "velocity_dofs", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block<6>(sim, [&](int i) { return sim.velocity(i); });
-          }, "(n, 6) velocity DOFs (u0, v0, r0, ex, ey, gxy rates) (copy).")
-      .def_property_readonly(
-          "displacements", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block<6>(sim, [&](int i) { return sim.displacement(i); });
-          }, "(n, 6) displacement DOFs accumulated since t = 0 (copy).")
-      .def_property_readonly(
-          "stresses", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block<3>(sim, [&](int i) { return sim.stress(i); });
-          }, "(n, 3) stresses (sx, sy, txy), Pa (copy).")
-      .def_property_readonly(
-          "masses", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block_scalar(sim, [&](int i) {
-              return i >= sim.scene_block_count() || sim.fixed(i) ? 0.0 : sim.mass(i);
-            });
-          }, "(n,) masses, kg/m (0 for fixed blocks and boundaries, as run.json) (copy).")
-      .def_property_readonly(
-          "areas", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block_scalar(sim, [&](int i) { return sim.area(i); });
-          }, "(n,) areas, m^2 (copy).")
-      .def_property_readonly(
-          "potential_lengths", [](const PySimulation& s) {
-            const Simulation& sim = s.read();
-            return per_block_scalar(sim, [&](int i) { return sim.potential_length(i); });
-          }, "(n,) H of each block's potential, m (copy).")
+      .def_property_readonly("centroids",
+                             per_block<2>([](const auto& sim, int i) {
+                               const Vec2 c = sim.centroid(i);
+                               return std::array<double, 2>{c.x, c.y};
+                             }),
+                             "(n, 2) block centroids, m (copy).")
+      .def_property_readonly("velocities",
+                             per_block<2>([](const auto& sim, int i) {
+                               return std::array<double, 2>{sim.velocity(i)[0], sim.velocity(i)[1]};
+                             }),
+                             "(n, 2) centroid velocities, m/s (copy).")
+      .def_property_readonly("spins", per_block_scalar([](const auto& sim, int i) { return sim.velocity(i)[2]; }),
+                             "(n,) angular velocities, rad/s (copy).")
+      .def_property_readonly("rotations",
+                             per_block_scalar([](const auto& sim, int i) { return sim.displacement(i)[2]; }),
+                             "(n,) rotations accumulated since t = 0, rad (copy).")
+      .def_property_readonly("velocity_dofs", per_block<6>([](const auto& sim, int i) { return sim.velocity(i); }),
+                             "(n, 6) velocity DOFs (u0, v0, r0, ex, ey, gxy rates) (copy).")
+      .def_property_readonly("displacements", per_block<6>([](const auto& sim, int i) { return sim.displacement(i); }),
+                             "(n, 6) displacement DOFs accumulated since t = 0 (copy).")
+      .def_property_readonly("stresses", per_block<3>([](const auto& sim, int i) { return sim.stress(i); }),
+                             "(n, 3) stresses (sx, sy, txy), Pa (copy).")
+      .def_property_readonly("masses", per_block_scalar([](const auto& sim, int i) {
+                               return i >= sim.scene_block_count() || sim.fixed(i) ? 0.0 : sim.mass(i);
+                             }),
+                             "(n,) masses, kg/m (0 for fixed blocks and boundaries, as run.json) (copy).")
+      .def_property_readonly("areas", per_block_scalar([](const auto& sim, int i) { return sim.area(i); }),
+                             "(n,) areas, m^2 (copy).")
+      .def_property_readonly("potential_lengths",
+                             per_block_scalar([](const auto& sim, int i) { return sim.potential_length(i); }),
+                             "(n,) H of each block's potential, m (copy).")
       .def_property_readonly(
           "fixed", [](const PySimulation& s) {
             const Simulation& sim = s.read();
