@@ -2,7 +2,7 @@
 # and FIGS before the include). One rule for every driver's data set, one per
 # figure.
 #
-# A driver <drv> named in DRIVERS runs as $(BIN)/<drv> --out $(OUT): it
+# A driver <drv> named in REPORT_DRIVERS runs as $(BIN)/<drv> --out $(OUT): it
 # writes $(OUT)/data/<drv>/ and $(OUT)/claims/; the stamp
 # $(OUT)/data/<drv>/.done is touched only after it succeeds, so a failed run
 # is retried next time (drivers write every file atomically (CsvWriter), so a
@@ -10,8 +10,8 @@
 # re-ran, even a driver with no figure (the Makefile's
 # $(wildcard $(OUT)/claims/*.csv) is expanded before the drivers run, so it
 # misses claim files created in the same run). Their rules stand at the end,
-# once DRIVERS is complete.
-DRIVERS :=
+# once REPORT_DRIVERS is complete.
+REPORT_DRIVERS :=
 
 # $(call figure,<png>,<script>,<drv>,<helpers>) draws $(OUT)/figures/<png>.png
 # with figures/<script>.py from <drv>'s data; <helpers> names the modules
@@ -20,16 +20,16 @@ DRIVERS :=
 #   $(OUT)/figures/<png>.png: $(OUT)/data/<drv>/.done figures/<script>.py figures/<helper>_common.py ...
 #   	$(PY) figures/<script>.py $(OUT)/data/<drv> $@
 #   FIGS += $(OUT)/figures/<png>.png
-#   DRIVERS += <drv>
+#   REPORT_DRIVERS += <drv>
 #
-# A new driver takes one such line per figure, or DRIVERS += <drv> alone when
+# A new driver takes one such line per figure, or REPORT_DRIVERS += <drv> alone when
 # it has no figure. Figures whose script takes more arguments have their rules
 # written out (collapse, S1).
 define figure_rules
 $(OUT)/figures/$(1).png: $(OUT)/data/$(3)/.done figures/$(2).py $(patsubst %,figures/%_common.py,$(4))
 	$(PY) figures/$(2).py $(OUT)/data/$(3) $$@
 FIGS += $(OUT)/figures/$(1).png
-DRIVERS += $(3)
+REPORT_DRIVERS += $(3)
 endef
 figure = $(eval $(call figure_rules,$(1),$(2),$(3),$(4)))
 
@@ -105,7 +105,7 @@ $(call figure,fig22_toppling,fig22_toppling,toppling_slumping,blocks potential p
 
 # --- S1: work precision, error against run time --------------------------
 # One figure per study case; the case is the script's third argument.
-DRIVERS += work_precision
+REPORT_DRIVERS += work_precision
 S1_CASES := figS1a_two_squares:4.1 figS1b_incline:4.3 figS1c_resting_block:resting figS1d_triangles:5.2 \
             figS1e_bouncing_block:5.1 figS1f_small_edge:5.3 figS1g_free_rotation:free figS1h_damped_flight:damped
 S1_FIGS := $(foreach c,$(S1_CASES),$(OUT)/figures/$(word 1,$(subst :, ,$(c))).png)
@@ -118,13 +118,13 @@ FIGS += $(S1_FIGS)
 $(call figure,figS2_stability_maps,figS2_stability_maps,stability_maps,potential paper)
 
 # --- S3: extreme cases (table in the report; no figure) ---------------------
-DRIVERS += extreme_cases
+REPORT_DRIVERS += extreme_cases
 
 # --- S3: penetration map (guard on and off over speed, kn and dt) ------------
 $(call figure,figS3_penetration_map,figS3_penetration_map,penetration_map,potential paper)
 
-# --- Every driver's run (DRIVERS is complete here) ---------------------------
-DRIVER_STAMPS := $(patsubst %,$(OUT)/data/%/.done,$(sort $(DRIVERS)))
+# --- Every driver's run (REPORT_DRIVERS is complete here) ---------------------------
+DRIVER_STAMPS := $(patsubst %,$(OUT)/data/%/.done,$(sort $(REPORT_DRIVERS)))
 $(DRIVER_STAMPS): $(OUT)/data/%/.done: $(BIN)/%
 	$(BIN)/$* --out $(OUT)
 	@touch $@
