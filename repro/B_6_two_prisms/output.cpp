@@ -168,36 +168,35 @@ void FigureFiles::commit(const Result& r) {
   repro::write_table(dir_ + "events.csv", kEventColumns, events);
 }
 
+// The columns both refinement studies have: the mesh, the step, and j's
+// velocities and the separation, empty where `has_data` says the point has
+// none (a stopped run).
+template <class Point>
+std::vector<repro::Column<Point>> refinement_columns(bool (*has_data)(const Point&)) {
+  const auto data = [has_data](double Point::*f) {
+    return [has_data, f](const Point& p) { return repro::cell_if(has_data(p), p.*f); };
+  };
+  return {repro::field("divisions", &Point::divisions), repro::field("dt", &Point::dt),
+          {"vj_block_average", data(&Point::vj)}, {"vj_node_at_0.34", data(&Point::node_vj_fig14c)},
+          {"t_sep", data(&Point::t_sep)}};
+}
+
 void write_mesh_study(const std::string& path, const std::vector<MeshPoint>& mesh) {
-  repro::write_table<MeshPoint>(
-      path,
-      {repro::field("divisions", &MeshPoint::divisions),
-       repro::field("dt", &MeshPoint::dt),
-       repro::field("vj_block_average", &MeshPoint::vj),
-       repro::field("vj_node_at_0.34", &MeshPoint::node_vj_fig14c),
-       repro::field("t_sep", &MeshPoint::t_sep)},
-      mesh,
+  repro::write_table(
+      path, refinement_columns<MeshPoint>([](const MeshPoint&) { return true; }), mesh,
       {std::string("Paper B Sect. 6, two prisms on finer meshes, dt scaled with the element size (c dt / h fixed); ") +
        kRebuilt});
 }
 
 void write_submodel_mesh_study(const std::string& path, const std::vector<SubMeshPoint>& pts) {
-  // A stopped run's fields are no data: empty cells.
-  const auto data = [](double SubMeshPoint::*field) {
-    return [field](const SubMeshPoint& p) { return repro::cell_if(p.stopped.empty(), p.*field); };
-  };
-  repro::write_table<SubMeshPoint>(
-      path,
-      {repro::field("divisions", &SubMeshPoint::divisions),
-       repro::field("dt", &SubMeshPoint::dt),
-       {"vj_block_average", data(&SubMeshPoint::vj)},
-       {"vj_node_at_0.34", data(&SubMeshPoint::node_vj_fig14c)},
-       {"t_sep", data(&SubMeshPoint::t_sep)},
-       {"momentum_drift", data(&SubMeshPoint::momentum)},
-       {"stopped", [](const SubMeshPoint& p) { return p.stopped.empty() ? "" : "stopped"; }}},
-      pts,
-      {std::string("Paper B Sect. 5 as written (sub-model) on the refinement study's meshes, dt scaled with the "
-                   "element size; ") + kRebuilt});
+  const auto finished = [](const SubMeshPoint& p) { return p.stopped.empty(); };
+  std::vector<repro::Column<SubMeshPoint>> columns = refinement_columns<SubMeshPoint>(finished);
+  columns.push_back(
+      {"momentum_drift", [](const SubMeshPoint& p) { return repro::cell_if(p.stopped.empty(), p.momentum); }});
+  columns.push_back({"stopped", [](const SubMeshPoint& p) { return p.stopped.empty() ? "" : "stopped"; }});
+  repro::write_table(path, columns, pts,
+                     {std::string("Paper B Sect. 5 as written (sub-model) on the refinement study's meshes, dt scaled "
+                                  "with the element size; ") + kRebuilt});
 }
 
 void write_contact_mass(const std::string& path, const std::vector<MassPoint>& pts, double coarse_loss) {

@@ -2,7 +2,7 @@
 // stiff contact (kn 1e10 Pa), 1 mm apart, at dt = F x the predicted
 // critical step (--fraction F, default 3). Writes data/guard_stop/series.csv
 // after every step. Expected: the solver's guard stops the run during the
-// impact; the rows written so far are committed (all finite: CsvWriter
+// impact; the rows written so far are committed (all finite: the table
 // refuses NaN and the guard stops before a non-finite state is reported),
 // the solver's message (step, time, block, pair, what was exceeded,
 // dt/dt_crit) goes to stderr and to data/guard_stop/stop.txt, and the exit
