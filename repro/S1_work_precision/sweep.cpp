@@ -1,5 +1,6 @@
 // S1 work precision: every case at every dt, one monitored run for the
-// errors and timed unmonitored runs for the cost; the curves' observed
+// errors and timed unmonitored runs for the cost (none with --timing-repeats
+// 0: the monitored run's time then); the curves' observed
 // orders (repro::stab::observed_order).
 #include <algorithm>
 #include <atomic>
@@ -24,8 +25,9 @@ int repeats_for(double seconds) { return seconds < 0.05 ? 9 : seconds < 0.2 ? 5 
 
 // What the wall_s/cpu_s columns are the median of.
 std::string timing_words(const SweepOptions& o) {
-  std::string w = o.max_repeats >= 9 ? "3 to 9 unmonitored runs (more for short runs)"
-                  : o.max_repeats <= 1 ? "one unmonitored run"
+  std::string w = o.max_repeats >= 9  ? "3 to 9 unmonitored runs (more for short runs)"
+                  : o.max_repeats == 0 ? "the monitored run itself (no timed run: its observers' work included)"
+                  : o.max_repeats == 1 ? "one unmonitored run"
                                        : "up to " + std::to_string(o.max_repeats) + " unmonitored runs";
   if (o.jobs > 1) w += ", " + std::to_string(o.jobs) + " cases at a time";
   return w;
@@ -43,6 +45,11 @@ CaseRuns run_case(const Case& c, int max_repeats) {
   CaseRuns out;
   try {
     for (double dt : c.dts) {
+      if (max_repeats == 0) {  // no timed run: the monitored run's own time, its observers included
+        out.times.push_back(repro::stab::median_time(1, [&] { out.res.push_back(monitored_run(c, dt)); }));
+        if (!out.res.back().ok) out.times.back() = repro::stab::Timing{};
+        continue;
+      }
       out.res.push_back(monitored_run(c, dt));
       out.times.push_back(out.res.back().ok ? timed_run(c.sc, dt, max_repeats) : repro::stab::Timing{});
     }
