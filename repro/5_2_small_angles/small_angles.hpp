@@ -11,7 +11,7 @@
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
 #include "repro/common/cli.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 #include "repro/common/sim_output.hpp"
 
 namespace small_angles {
@@ -28,7 +28,33 @@ struct Result {
   double seconds = 0.0;
 };
 
-inline Result run(const dda::paper::SmallAngleTriangles& st, repro::CsvWriter* traces, repro::CsvWriter* snaps) {
+// One row of traces.csv: the apexes and centroids of both triangles, the
+// point-symmetry error, the energies and the overlap at one moment.
+struct Trace {
+  double time;
+  Vec2 apex0, apex1, c0, c1;
+  double asymmetry, total_energy, contact_energy, overlap_thickness;
+};
+inline std::vector<repro::Column<Trace>> trace_columns() {
+  return {{"time", [](const Trace& t) { return t.time; }},
+          {"apex0_x", [](const Trace& t) { return t.apex0.x; }},
+          {"apex0_y", [](const Trace& t) { return t.apex0.y; }},
+          {"apex1_x", [](const Trace& t) { return t.apex1.x; }},
+          {"apex1_y", [](const Trace& t) { return t.apex1.y; }},
+          {"c0_x", [](const Trace& t) { return t.c0.x; }},
+          {"c0_y", [](const Trace& t) { return t.c0.y; }},
+          {"c1_x", [](const Trace& t) { return t.c1.x; }},
+          {"c1_y", [](const Trace& t) { return t.c1.y; }},
+          {"asymmetry", [](const Trace& t) { return t.asymmetry; }},
+          {"total_energy", [](const Trace& t) { return t.total_energy; }},
+          {"contact_energy", [](const Trace& t) { return t.contact_energy; }},
+          {"overlap_thickness", [](const Trace& t) { return t.overlap_thickness; }}};
+}
+
+// Runs the triangles; every fifth step's Trace goes to `traces` and the first
+// and last block outlines to `snaps`, if given.
+inline Result run(const dda::paper::SmallAngleTriangles& st, repro::TableWriter<Trace>* traces,
+                  repro::TableWriter<repro::VertexRow>* snaps) {
   const repro::Progress clock("run");
   dda::Simulation sim(st.scene);
   dda::paper::RunMonitor mon(sim, 0, 1);
@@ -39,8 +65,7 @@ inline Result run(const dda::paper::SmallAngleTriangles& st, repro::CsvWriter* t
     if (traces && sim.step_count() % 5 == 0) {
       const Vec2 p0 = sim.polygon(0).vertex(st.apex[0]), p1 = sim.polygon(1).vertex(st.apex[1]);
       const dda::Energy e = sim.energy();
-      traces->row({sim.time(), p0.x, p0.y, p1.x, p1.y, sim.centroid(0).x, sim.centroid(0).y, sim.centroid(1).x,
-                   sim.centroid(1).y, a, e.total(), e.contact,
+      traces->row({sim.time(), p0, p1, sim.centroid(0), sim.centroid(1), a, e.total(), e.contact,
                    dda::paper::overlap_thickness(sim.polygon(0), sim.polygon(1))});
     }
   };
