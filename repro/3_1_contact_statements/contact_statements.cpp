@@ -28,6 +28,12 @@ using repro::explain_fail;
 using repro::Root;
 using repro::Scope;
 
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "contact_statements", "3.1-3.2 contact statements",
+    "Paper A Sects. 3.1.2 and 3.2.1: the entrance-block criterion and the force as the energy gradient, on "
+    "random convex pairs."};
+
 namespace {
 
 constexpr int kPairs = 4000;
@@ -85,25 +91,21 @@ void write_gradient(const std::string& path, const std::vector<GradientSample>& 
                                    "depth: the intersection polygon's inscribed diameter, m"});
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::vector<contact_statements::Pair> pairs = contact_statements::random_pairs(kPairs, kSeed);
+  std::vector<repro::Claim> claims;
+  add_claim(claims, contact_statements::entrance_row(pairs),
+            "repro_controls: 3.1.2 entrance block: FAIL when A is not reflected", Scope::kPaper);
+  std::vector<GradientSample> exact, paper;
+  force_rows(pairs, claims, exact, paper);
+  write_gradient(d.out + "/data/contact_statements/gradient.csv", exact, paper);
+  for (const repro::Claim& c : claims)
+    d.progress(c.claim + ": " + (c.pass ? "PASS" : "FAIL") + " (" + c.measured + ")");
+  repro::write_claims(repro::claims_path(d.out, "3_1_contact_statements"), claims);
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"contact_statements", "3.1-3.2 contact statements",
-       "Paper A Sects. 3.1.2 and 3.2.1: the entrance-block criterion and the force as the energy gradient, on "
-       "random convex pairs."},
-      {}, [](const repro::Driver& d) {
-        const std::vector<contact_statements::Pair> pairs = contact_statements::random_pairs(kPairs, kSeed);
-        std::vector<repro::Claim> claims;
-        add_claim(claims, contact_statements::entrance_row(pairs),
-                  "repro_controls: 3.1.2 entrance block: FAIL when A is not reflected", Scope::kPaper);
-        std::vector<GradientSample> exact, paper;
-        force_rows(pairs, claims, exact, paper);
-        write_gradient(d.out + "/data/contact_statements/gradient.csv", exact, paper);
-        for (const repro::Claim& c : claims)
-          d.progress(c.claim + ": " + (c.pass ? "PASS" : "FAIL") + " (" + c.measured + ")");
-        repro::write_claims(repro::claims_path(d.out, "3_1_contact_statements"), claims);
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

@@ -164,14 +164,9 @@ inline repro::Claim integration_row(const char* section, const std::string& stat
                                     std::string paper, std::string measured, std::string tolerance, bool pass,
                                     const char* key_exact, const char* key_paper) {
   const bool exact = rule == dda::Integration::kExactEnvelope;
-  return {section,
-          statement + (exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)"),
-          std::move(paper),
-          std::move(measured),
-          std::move(tolerance),
-          pass,
-          repro::Kind::kCheck,
-          exact ? key_exact : key_paper};
+  const char* how = exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)";
+  return {section, statement + how, std::move(paper), std::move(measured), std::move(tolerance), pass,
+          repro::Kind::kCheck, exact ? key_exact : key_paper};
 }
 
 inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integration rule,

@@ -53,6 +53,12 @@
 
 using namespace potential_fields;
 
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "potential_fields", "potential_fields",
+    "Paper A Sect. 3.2.2 (Figs. 4b, 5): the potential fields phi = kn d_exit / H (Eq. 12) of "
+    "the paper's polygons."};
+
 namespace {
 
 // (a) Fig. 4b: the convex polygon with small edges.
@@ -154,27 +160,23 @@ void h_rows(std::vector<Claim>& claims) {
   }
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::string dir = d.out + "/data/potential_fields";
+  std::vector<Claim> claims;
+  fig4b(d, dir, claims);
+  fig5(d, dir, claims);
+  h_rows(claims);
+  repro::write_claims(repro::claims_path(d.out, "3_2_2_potential_fields"), claims);
+  int passed = 0, checks = 0;
+  for (const Claim& c : claims) {
+    checks += c.kind == repro::Kind::kCheck ? 1 : 0;
+    passed += c.kind == repro::Kind::kCheck && c.pass ? 1 : 0;
+  }
+  d.progress("claims: " + std::to_string(passed) + " of " + std::to_string(checks) + " checks pass");
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(argc, argv,
-                            {"potential_fields", "potential_fields",
-                             "Paper A Sect. 3.2.2 (Figs. 4b, 5): the potential fields phi = kn d_exit / H (Eq. 12) of "
-                             "the paper's polygons."},
-                            {}, [](const repro::Driver& d) {
-                              const std::string dir = d.out + "/data/potential_fields";
-                              std::vector<Claim> claims;
-                              fig4b(d, dir, claims);
-                              fig5(d, dir, claims);
-                              h_rows(claims);
-                              repro::write_claims(repro::claims_path(d.out, "3_2_2_potential_fields"), claims);
-                              int passed = 0, checks = 0;
-                              for (const Claim& c : claims) {
-                                checks += c.kind == repro::Kind::kCheck ? 1 : 0;
-                                passed += c.kind == repro::Kind::kCheck && c.pass ? 1 : 0;
-                              }
-                              d.progress("claims: " + std::to_string(passed) + " of " + std::to_string(checks) +
-                                         " checks pass");
-                              return 0;
-                            });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

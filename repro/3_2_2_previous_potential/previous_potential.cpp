@@ -43,6 +43,11 @@ using namespace previous_potential;
 // The Fig. 4b polygon is potential_fields::small_edge_polygon (shared).
 using potential_fields::small_edge_polygon;
 
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "previous_potential", "previous_potential",
+    "Paper A Sect. 3.2.2 (Fig. 4a): the previous sub-polygon potential beside the shortest-exit one."};
+
 namespace {
 
 // Fig. 4a's files: the grid scan, the outline and the sub-polygons.
@@ -74,32 +79,29 @@ FieldScan write_figure(const std::string& dir, const std::vector<Vec2>& pts, con
   return field;
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::vector<Vec2> pts = small_edge_polygon();
+  const dda::Polygon poly = dda::make_polygon(pts.data(), static_cast<int>(pts.size()));
+  const SubPolygons sp = sub_polygons(poly);
+  const double r_in = dda::inscribed_circle(poly).radius;
+  d.progress("d* = " + format_short(sp.depth, 4) + " m, inscribed radius " + format_short(r_in, 4) + " m");
+  const FieldScan field = write_figure(d.out + "/data/previous_potential", pts, poly, sp);
+  d.progress("undefined fraction " + format_short(field.undefined(), 3));
+
+  // A regular hexagon as the control: d* = inscribed radius, nothing undefined.
+  const double hex_ratio = depth_ratio(regular_hexagon());
+
+  // Sect. 5.3: does the impact on the 0.01 m edge reach deeper than d*?
+  const Impact impact = impact_depth(dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge));
+
+  repro::write_claims(
+      repro::claims_path(d.out, "3_2_2_previous_potential"),
+      {undefined_row(field, sp.depth, r_in), hexagon_row(hex_ratio), mismatch_row(field), impact_row(impact)});
+  d.progress("done");
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"previous_potential", "previous_potential",
-       "Paper A Sect. 3.2.2 (Fig. 4a): the previous sub-polygon potential beside the shortest-exit one."},
-      {}, [](const repro::Driver& d) {
-        const std::vector<Vec2> pts = small_edge_polygon();
-        const dda::Polygon poly = dda::make_polygon(pts.data(), static_cast<int>(pts.size()));
-        const SubPolygons sp = sub_polygons(poly);
-        const double r_in = dda::inscribed_circle(poly).radius;
-        d.progress("d* = " + format_short(sp.depth, 4) + " m, inscribed radius " + format_short(r_in, 4) + " m");
-        const FieldScan field = write_figure(d.out + "/data/previous_potential", pts, poly, sp);
-        d.progress("undefined fraction " + format_short(field.undefined(), 3));
-
-        // A regular hexagon as the control: d* = inscribed radius, nothing undefined.
-        const double hex_ratio = depth_ratio(regular_hexagon());
-
-        // Sect. 5.3: does the impact on the 0.01 m edge reach deeper than d*?
-        const Impact impact = impact_depth(dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge));
-
-        repro::write_claims(repro::claims_path(d.out, "3_2_2_previous_potential"),
-                            {undefined_row(field, sp.depth, r_in), hexagon_row(hex_ratio), mismatch_row(field),
-                             impact_row(impact)});
-        d.progress("done");
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

@@ -18,25 +18,29 @@
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/common/common.hpp"
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"symmetric_stack", "4.2 symmetric stack",
-       "Paper A Sect. 4.2 (Figs. 9-10): a polygon hitting a symmetric polygonal system."},
-      {}, [](const repro::Driver& d) {
-        const dda::paper::SymmetricStack st = dda::paper::symmetric_stack();
-        repro::TableWriter<symmetric_stack::Trace> traces(
-            d.out + "/data/symmetric_stack/traces.csv",
-            symmetric_stack::trace_columns(static_cast<int>(st.scene.blocks.size())),
-            {"Paper A Sect. 4.2, geometry reconstructed (Fig. 9 lost)"});
-        repro::TableWriter<repro::VertexRow> snaps(d.out + "/data/symmetric_stack/snapshots.csv",
-                                                   repro::snapshot_columns());
-        const symmetric_stack::Result r = symmetric_stack::run(st, &traces, &snaps);
-        traces.commit();
-        snaps.commit();
-        d.progress("done: largest mirror asymmetry " + repro::format_short(r.worst_position, 3) + " m, " +
-                   repro::format_short(r.worst_rotation, 3) + " rad");
-        repro::write_claims(repro::claims_path(d.out, "4_2_symmetric_stack"), {symmetric_stack::row(r)});
-        return 0;
-      });
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {"symmetric_stack", "4.2 symmetric stack",
+                                 "Paper A Sect. 4.2 (Figs. 9-10): a polygon hitting a symmetric polygonal system."};
+
+namespace {
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const dda::paper::SymmetricStack st = dda::paper::symmetric_stack();
+  repro::TableWriter<symmetric_stack::Trace> traces(
+      d.out + "/data/symmetric_stack/traces.csv",
+      symmetric_stack::trace_columns(static_cast<int>(st.scene.blocks.size())),
+      {"Paper A Sect. 4.2, geometry reconstructed (Fig. 9 lost)"});
+  repro::TableWriter<repro::VertexRow> snaps(d.out + "/data/symmetric_stack/snapshots.csv", repro::snapshot_columns());
+  const symmetric_stack::Result r = symmetric_stack::run(st, &traces, &snaps);
+  traces.commit();
+  snaps.commit();
+  d.progress("done: largest mirror asymmetry " + repro::format_short(r.worst_position, 3) + " m, " +
+             repro::format_short(r.worst_rotation, 3) + " rad");
+  repro::write_claims(repro::claims_path(d.out, "4_2_symmetric_stack"), {symmetric_stack::row(r)});
+  return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

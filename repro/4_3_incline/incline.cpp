@@ -23,6 +23,7 @@
 // Output: data/incline/sliding.csv (Fig. 12), sliding_start_up.csv (the start-up
 // option's curves), claims/4_3_incline.csv.
 #include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,15 @@ using incline::kPi;
 using incline::Run;
 using incline::run;
 using repro::format_short;
+
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "incline", "4.3 incline",
+    "Paper A Sect. 4.3 (Figs. 11-12, geometry reconstructed): a block sliding on a 30-degree incline."};
+
+// Its options besides --out.
+const std::initializer_list<repro::OptionHelp> kOptions = {
+    {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true}};
 
 namespace {
 
@@ -211,32 +221,27 @@ void touching_row(dda::FrictionUpdate update, Claims& claims) {
       "slides, so this start is not the paper's case");
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const bool return_mapping = d.whole("--return-mapping", 0) != 0;
+  const dda::FrictionUpdate update = return_mapping ? dda::FrictionUpdate::kReturnMapping : dda::FrictionUpdate::kPaper;
+  // The mode of each curve, in a comment line the figure reads.
+  const std::string update_text =
+      std::string("friction update: ") + (return_mapping ? "return mapping (not the paper's)" : "the paper's Eq. 26");
+  Claims claims;
+  paper_cases(d, update, update_text, claims);
+  rest_rows(d, update, claims);
+  creep_rows(claims);
+  stick_lead_row(claims);
+  stiffer_rows(update, claims);
+  touching_row(update, claims);
+  if (return_mapping)
+    for (repro::Claim& c : claims) c.claim += " [RETURN MAPPING: friction update not the paper's Eq. 26]";
+  repro::write_claims(repro::claims_path(d.out, "4_3_incline"), claims);
+  d.progress("done");
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"incline", "4.3 incline",
-       "Paper A Sect. 4.3 (Figs. 11-12, geometry reconstructed): a block sliding on a 30-degree incline."},
-      {{"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true}},
-      [](const repro::Driver& d) {
-        const bool return_mapping = d.whole("--return-mapping", 0) != 0;
-        const dda::FrictionUpdate update =
-            return_mapping ? dda::FrictionUpdate::kReturnMapping : dda::FrictionUpdate::kPaper;
-        // The mode of each curve, in a comment line the figure reads.
-        const std::string update_text = std::string("friction update: ") +
-                                        (return_mapping ? "return mapping (not the paper's)" : "the paper's Eq. 26");
-        Claims claims;
-        paper_cases(d, update, update_text, claims);
-        rest_rows(d, update, claims);
-        creep_rows(claims);
-        stick_lead_row(claims);
-        stiffer_rows(update, claims);
-        touching_row(update, claims);
-        if (return_mapping)
-          for (repro::Claim& c : claims) c.claim += " [RETURN MAPPING: friction update not the paper's Eq. 26]";
-        repro::write_claims(repro::claims_path(d.out, "4_3_incline"), claims);
-        d.progress("done");
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, kOptions, reproduce); }

@@ -41,6 +41,11 @@ using small_edges::add_claims;
 using small_edges::Result;
 using small_edges::run;
 
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "small_edges", "5.3 small edges",
+    "Paper A Sect. 5.3 (Figs. 17-18, geometry reconstructed): a polygon with small edges."};
+
 namespace {
 
 // Cases 1 and 2 (Fig. 18): their traces and snapshots under `dir`, their rows
@@ -83,19 +88,16 @@ void friction_case(const repro::Driver& d, std::vector<repro::Claim>& claims) {
   d.progress("case 2 with friction: energy growth " + format_short(r.stats.energy_growth, 3));
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  std::vector<repro::Claim> claims;
+  paper_cases(d, d.out + "/data/small_edges", claims);
+  friction_case(d, claims);
+  repro::write_claims(repro::claims_path(d.out, "5_3_small_edges"), claims);
+  d.progress("done");
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"small_edges", "5.3 small edges",
-       "Paper A Sect. 5.3 (Figs. 17-18, geometry reconstructed): a polygon with small edges."},
-      {}, [](const repro::Driver& d) {
-        std::vector<repro::Claim> claims;
-        paper_cases(d, d.out + "/data/small_edges", claims);
-        friction_case(d, claims);
-        repro::write_claims(repro::claims_path(d.out, "5_3_small_edges"), claims);
-        d.progress("done");
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

@@ -52,6 +52,10 @@
 #include "repro/5_4_extreme_geometry/extreme_geometry.hpp"
 #include "repro/common/common.hpp"
 
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {"extreme_geometry", "5.4 extreme geometry",
+                                 "Beyond Paper A Sect. 5: the Sect. 5 scenes with ever smaller angles and edges."};
+
 namespace {
 using dda::Vec2;
 using repro::format_short;
@@ -155,33 +159,30 @@ void add_rows(const Runs& r, double& total, std::vector<repro::Claim>& claims) {
     claims.push_back(*option);
   }
 }
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  repro::TableWriter<Runs> table(
+      d.out + "/data/extreme_geometry/table.csv", table_columns(),
+      {"Beyond Paper A Sect. 5 (reconstructed scenes). parameter: B height (5.1, m), apex angle (5.2, deg), "
+       "small edge (5.3, m); dt_crit: Simulation::predicted_critical_step (solver's a-priori bound); "
+       "dt_crit_strain: smallest Simulation::strain_critical_step of the free blocks",
+       "paper_*: the paper's dt with the solver's guards; for runs that are not clean, diagnoses d1: dt = "
+       "min(paper dt, 0.5 dt_crit) with the step-motion guard off; d2: d1 with the exact integration; d3: d1 "
+       "with dt / 10. asymmetry -1: scene not symmetric"});
+  std::vector<repro::Claim> claims;
+  double total = 0.0;
+  for (const Case& c : make_cases()) {
+    const Runs r = run_case(c);
+    table.row(r);
+    add_rows(r, total, claims);
+    d.progress(c.label + ": " + (r.paper.clean ? "clean" : "NOT clean: " + r.why.brief));
+  }
+  table.commit();
+  repro::write_claims(repro::claims_path(d.out, "5_4_extreme_geometry"), claims);
+  d.progress("done: " + pm(total) + " s of simulation");
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"extreme_geometry", "5.4 extreme geometry",
-       "Beyond Paper A Sect. 5: the Sect. 5 scenes with ever smaller angles and edges."},
-      {}, [](const repro::Driver& d) {
-        repro::TableWriter<Runs> table(
-            d.out + "/data/extreme_geometry/table.csv", table_columns(),
-            {"Beyond Paper A Sect. 5 (reconstructed scenes). parameter: B height (5.1, m), apex angle (5.2, deg), "
-             "small edge (5.3, m); dt_crit: Simulation::predicted_critical_step (solver's a-priori bound); "
-             "dt_crit_strain: smallest Simulation::strain_critical_step of the free blocks",
-             "paper_*: the paper's dt with the solver's guards; for runs that are not clean, diagnoses d1: dt = "
-             "min(paper dt, 0.5 dt_crit) with the step-motion guard off; d2: d1 with the exact integration; d3: d1 "
-             "with dt / 10. asymmetry -1: scene not symmetric"});
-        std::vector<repro::Claim> claims;
-        double total = 0.0;
-        for (const Case& c : make_cases()) {
-          const Runs r = run_case(c);
-          table.row(r);
-          add_rows(r, total, claims);
-          d.progress(c.label + ": " + (r.paper.clean ? "clean" : "NOT clean: " + r.why.brief));
-        }
-        table.commit();
-        repro::write_claims(repro::claims_path(d.out, "5_4_extreme_geometry"), claims);
-        d.progress("done: " + pm(total) + " s of simulation");
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

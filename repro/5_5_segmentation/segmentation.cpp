@@ -60,6 +60,10 @@ using namespace segmentation;
 using dda::Vec2;
 using repro::format_short;
 
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {"segmentation", "5.5 segmentation",
+                                 "Beyond Paper A Sect. 3.2.3: is the segmentation of Eq. 16 exact?"};
+
 namespace {
 
 using Claims = std::vector<repro::Claim>;
@@ -199,30 +203,27 @@ void trajectory_rows(const repro::Driver& d, const std::string& dir, Claims& cla
                           rows);
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::string dir = d.out + "/data/segmentation";
+  Claims claims;
+  contact_scans(d, dir, claims);  // 1. contacts of the Sect. 4-5 runs
+  {                               // 2. fuzzed pairs
+    const repro::Progress clock("fuzz");
+    const int accepted = fuzz(dir, claims);
+    d.progress("fuzz: " + std::to_string(accepted) + " pairs in " + format_short(clock.elapsed_seconds(), 3) + " s");
+  }
+  // 4. the rectangle's middle segment
+  const Errors rect = rectangle_case(kRectangleDepth);
+  claims.push_back(rectangle_row(kRectangleDepth, rect));
+  d.progress("rectangle case: force error " + format_short(rect.mode[0].force, 3));
+  trajectory_rows(d, dir, claims);                         // 3. trajectories with each rule
+  repro::default_scope(claims, repro::Scope::kExtension);  // a study beyond the paper, every row
+  repro::write_claims(repro::claims_path(d.out, "5_5_segmentation"), claims);
+  d.progress("done");
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"segmentation", "5.5 segmentation", "Beyond Paper A Sect. 3.2.3: is the segmentation of Eq. 16 exact?"}, {},
-      [](const repro::Driver& d) {
-        const std::string dir = d.out + "/data/segmentation";
-        Claims claims;
-        contact_scans(d, dir, claims);  // 1. contacts of the Sect. 4-5 runs
-        {                               // 2. fuzzed pairs
-          const repro::Progress clock("fuzz");
-          const int accepted = fuzz(dir, claims);
-          d.progress("fuzz: " + std::to_string(accepted) + " pairs in " + format_short(clock.elapsed_seconds(), 3) +
-                     " s");
-        }
-        // 4. the rectangle's middle segment
-        const Errors rect = rectangle_case(kRectangleDepth);
-        claims.push_back(rectangle_row(kRectangleDepth, rect));
-        d.progress("rectangle case: force error " + format_short(rect.mode[0].force, 3));
-        trajectory_rows(d, dir, claims);                         // 3. trajectories with each rule
-        repro::default_scope(claims, repro::Scope::kExtension);  // a study beyond the paper, every row
-        repro::write_claims(repro::claims_path(d.out, "5_5_segmentation"), claims);
-        d.progress("done");
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

@@ -46,6 +46,7 @@
 #include "repro/6_1_collapse/collapse.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -55,6 +56,19 @@
 
 using namespace collapse61;
 using repro::format_short;
+
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "collapse", "6.1 collapse",
+    "Paper A Sect. 6.1 (Figs. 19-20, geometry reconstructed): frictional collapse of a jointed rock mass, cases 1 "
+    "and 2."};
+
+// Its options besides --out.
+const std::initializer_list<repro::OptionHelp> kOptions = {
+    {"--duration", "S", "simulated seconds per case (default 7.5: the paper's)", false},
+    repro::kThreadsOption,
+    {"--case", "N", "1 or 2: that case only, without the renumbered reruns (default 0: both)", true},
+    repro::kExactRotationOption};
 
 namespace {
 
@@ -98,6 +112,9 @@ void run_rows(const std::vector<CaseResult>& runs, double full, const std::strin
   }
 }
 
+// "a vs b" to `digits` significant digits: case 1's value beside case 2's.
+std::string vs(double a, double b, int digits) { return format_short(a, digits) + " vs " + format_short(b, digits); }
+
 // The paper's statement at two of Fig. 20's snapshots: faster collapse and
 // further runout with the lower friction.
 void paper_rows(const CaseResult& c1, const CaseResult& c2, double duration, const std::string& run_note,
@@ -115,33 +132,30 @@ void paper_rows(const CaseResult& c1, const CaseResult& c2, double duration, con
   for (double t : kPaperTimes) {
     if (t > duration + 1e-9) continue;
     fronts += (fronts.empty() ? "" : "; ") + std::string("t = ") + time_tag(t) +
-              " s: " + format_short(c1.at(t).front_x, 4) + " vs " + format_short(c2.at(t).front_x, 4) + " m";
+              " s: " + vs(c1.at(t).front_x, c2.at(t).front_x, 4) + " m";
   }
   repro::add_claim(
       claims,
       {"6.1", "lower joint friction collapses faster (case 1: 15 deg vs case 2: 30 deg)" + run_note,
        kLowerFrictionQuote + "a/b at 2.5 s)",
-       "at t = " + time_tag(p1.t) + " s mean centroid drop " + format_short(p1.mean_drop, 3) + " vs " +
-           format_short(p2.mean_drop, 3) + " m, front " + format_short(p1.front_x, 4) + " vs " +
-           format_short(p2.front_x, 4) + " m; case 1's front ahead or level in " + std::to_string(lead.ahead) + " of " +
-           std::to_string(lead.compared) + " samples after 0.5 s (" + fronts + ")",
+       "at t = " + time_tag(p1.t) + " s mean centroid drop " + vs(p1.mean_drop, p2.mean_drop, 3) + " m, front " +
+           vs(p1.front_x, p2.front_x, 4) + " m; case 1's front ahead or level in " + std::to_string(lead.ahead) +
+           " of " + std::to_string(lead.compared) + " samples after 0.5 s (" + fronts + ")",
        "case 1's mean drop > 1.1 x case 2's and its front > case 2's + 2.5 m at 2.5 s", collapses_faster(p1, p2)},
       control(kControlFaster), repro::Scope::kPaper);
   const Sample& e1 = c1.at(duration);
   const Sample& e2 = c2.at(duration);
-  repro::add_claim(
-      claims,
-      {"6.1", "lower joint friction runs out further and with a larger runout mass" + run_note,
-       kLowerFrictionQuote + "e/f at 7.5 s)",
-       "at t = " + time_tag(e1.t) + " s: front (farthest vertex) " + format_short(e1.front_x, 4) + " vs " +
-           format_short(e2.front_x, 4) + " m, farthest centroid " + format_short(e1.front_cx, 4) + " vs " +
-           format_short(e2.front_cx, 4) + " m, largest centroid travel " + format_short(e1.max_travel, 4) + " vs " +
-           format_short(e2.max_travel, 4) + " m, runout mass (centroid beyond x = 20 m) " +
-           format_short(100.0 * e1.runout_mass, 3) + " % vs " + format_short(100.0 * e2.runout_mass, 3) +
-           " %, mean drop " + format_short(e1.mean_drop, 3) + " vs " + format_short(e2.mean_drop, 3) + " m",
-       "case 1's front > case 2's + 2.5 m (one joint spacing) and its runout mass > case 2's",
-       runs_out_further(e1, e2)},
-      control(kControlRunout), repro::Scope::kPaper);
+  repro::add_claim(claims,
+                   {"6.1", "lower joint friction runs out further and with a larger runout mass" + run_note,
+                    kLowerFrictionQuote + "e/f at 7.5 s)",
+                    "at t = " + time_tag(e1.t) + " s: front (farthest vertex) " + vs(e1.front_x, e2.front_x, 4) +
+                        " m, farthest centroid " + vs(e1.front_cx, e2.front_cx, 4) + " m, largest centroid travel " +
+                        vs(e1.max_travel, e2.max_travel, 4) + " m, runout mass (centroid beyond x = 20 m) " +
+                        format_short(100.0 * e1.runout_mass, 3) + " % vs " + format_short(100.0 * e2.runout_mass, 3) +
+                        " %, mean drop " + vs(e1.mean_drop, e2.mean_drop, 3) + " m",
+                    "case 1's front > case 2's + 2.5 m (one joint spacing) and its runout mass > case 2's",
+                    runs_out_further(e1, e2)},
+                   control(kControlRunout), repro::Scope::kPaper);
 }
 
 // Round-off sensitivity: the runout ordering in every numbering.
@@ -169,54 +183,45 @@ void renumbered_row(const Ends& ends, const std::string& run_note, Claims& claim
       control(kControlRenumbered), repro::Scope::kExtension);
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const double full = dda::paper::collapse(kFrictions[0]).scene.duration;
+  const double duration = d.number("--duration", full);
+  const int threads = d.whole("--threads", 1);
+  const int only = d.whole("--case", 0);
+  const dda::RotationUpdate rotation = repro::rotation_option(d.argc, d.argv);
+  if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
+  if (only < 0 || only > 2) throw std::invalid_argument("--case must be 1 or 2");
+  const std::string dir = d.out + "/data/collapse";
+
+  std::vector<CaseResult> runs;
+  for (int k = 1; k <= 2; ++k)
+    if (only == 0 || only == k) runs.push_back(run_case(k, scene(kFrictions[k - 1], duration, rotation), threads, dir));
+  write_summary(dir, runs);
+  write_boundaries(dir);
+
+  // Round-off sensitivity: both cases again with the blocks renumbered.
+  const bool renumber = runs.size() == 2;
+  Ends ends;
+  if (renumber) {
+    for (int c = 0; c < 2; ++c) ends[0][c] = runs[static_cast<std::size_t>(c)].series.back();
+    for (int axis = 0; axis < 2; ++axis)
+      for (int c = 0; c < 2; ++c)
+        ends[axis + 1][c] = rerun_renumbered(c + 1, scene(kFrictions[c], duration, rotation), threads, axis);
+    write_renumbered(dir, ends);
+  }
+
+  const bool short_run = duration < full - 1e-9;
+  const std::string run_note = (short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "") +
+                               (rotation == dda::RotationUpdate::kExact ? repro::kExactRotationNote : "");
+  Claims claims;
+  run_rows(runs, full, run_note, claims);
+  if (runs.size() == 2) paper_rows(runs[0], runs[1], duration, run_note, claims);
+  if (renumber) renumbered_row(ends, run_note, claims);
+  repro::write_claims(repro::claims_path(d.out, "6_1_collapse"), claims);
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"collapse", "6.1 collapse",
-       "Paper A Sect. 6.1 (Figs. 19-20, geometry reconstructed): frictional collapse of a jointed rock mass, cases 1 "
-       "and 2."},
-      {{"--duration", "S", "simulated seconds per case (default 7.5: the paper's)", false},
-       {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
-       {"--case", "N", "1 or 2: that case only, without the renumbered reruns (default 0: both)", true},
-       repro::kExactRotationOption},
-      [](const repro::Driver& d) {
-        const double full = dda::paper::collapse(kFrictions[0]).scene.duration;
-        const double duration = d.number("--duration", full);
-        const int threads = d.whole("--threads", 1);
-        const int only = d.whole("--case", 0);
-        const dda::RotationUpdate rotation = repro::rotation_option(d.argc, d.argv);
-        if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
-        if (only < 0 || only > 2) throw std::invalid_argument("--case must be 1 or 2");
-        const std::string dir = d.out + "/data/collapse";
-
-        std::vector<CaseResult> runs;
-        for (int k = 1; k <= 2; ++k)
-          if (only == 0 || only == k)
-            runs.push_back(run_case(k, scene(kFrictions[k - 1], duration, rotation), threads, dir));
-        write_summary(dir, runs);
-        write_boundaries(dir);
-
-        // Round-off sensitivity: both cases again with the blocks renumbered.
-        const bool renumber = runs.size() == 2;
-        Ends ends;
-        if (renumber) {
-          for (int c = 0; c < 2; ++c) ends[0][c] = runs[static_cast<std::size_t>(c)].series.back();
-          for (int axis = 0; axis < 2; ++axis)
-            for (int c = 0; c < 2; ++c)
-              ends[axis + 1][c] = rerun_renumbered(c + 1, scene(kFrictions[c], duration, rotation), threads, axis);
-          write_renumbered(dir, ends);
-        }
-
-        const bool short_run = duration < full - 1e-9;
-        const std::string run_note = (short_run ? " [SHORT RUN: --duration " + format_short(duration, 3) + " s]" : "") +
-                                     (rotation == dda::RotationUpdate::kExact ? repro::kExactRotationNote : "");
-        Claims claims;
-        run_rows(runs, full, run_note, claims);
-        if (runs.size() == 2) paper_rows(runs[0], runs[1], duration, run_note, claims);
-        if (renumber) renumbered_row(ends, run_note, claims);
-        repro::write_claims(repro::claims_path(d.out, "6_1_collapse"), claims);
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, kOptions, reproduce); }

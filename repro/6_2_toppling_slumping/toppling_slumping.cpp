@@ -45,6 +45,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -56,6 +57,18 @@
 #include "repro/common/integrator_options.hpp"
 #include "repro/common/rock_run.hpp"
 #include "repro/common/vtk_output.hpp"
+
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "toppling_slumping", "6.2 toppling/slumping",
+    "Paper A Sect. 6.2 (Figs. 21-22, geometry reconstructed): toppling and slumping of a jointed valley slope."};
+
+// Its options besides --out.
+const std::initializer_list<repro::OptionHelp> kOptions = {
+    {"--duration", "S", "simulated seconds (default 3.5: the paper's)", false},
+    repro::kThreadsOption,
+    {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true},
+    repro::kExactRotationOption};
 
 namespace {
 using namespace topple;
@@ -201,36 +214,29 @@ void write_summary(const std::string& path, const std::string& note, const Model
                           runs, {note, "run 0: the model; 1: joints locked (80 deg); 2: each slope one block"});
 }
 
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
+  const double duration = d.number("--duration", full.scene.duration);
+  const int threads = d.whole("--threads", 1);
+  if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
+  const bool return_mapping = d.whole("--return-mapping", 0) != 0;
+  dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping(full.min_area, duration);
+  if (return_mapping) ts.scene.contact.friction_update = dda::FrictionUpdate::kReturnMapping;
+  ts.scene.rotation_update = repro::rotation_option(d.argc, d.argv);
+  const std::string dir = d.out + "/data/toppling_slumping";
+  const std::string note = "Paper A Sect. 6.2, geometry reconstructed (Fig. 21 lost)";
+
+  ModelRun m = run_model(d, ts, duration, threads, dir, note);
+  m.full_duration = full.scene.duration;
+  m.return_mapping = return_mapping;
+  const Controls controls = run_controls(ts, threads, return_mapping);
+  repro::write_boundaries(dir + "/boundaries.csv", ts.scene.boundaries);
+  write_summary(dir + "/summary.csv", note, m, controls);
+  repro::write_claims(repro::claims_path(d.out, "6_2_toppling_slumping"), rows(m, controls));
+  return 0;
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
-  return repro::driver_main(
-      argc, argv,
-      {"toppling_slumping", "6.2 toppling/slumping",
-       "Paper A Sect. 6.2 (Figs. 21-22, geometry reconstructed): toppling and slumping of a jointed valley slope."},
-      {{"--duration", "S", "simulated seconds (default 3.5: the paper's)", false},
-       {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
-       {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true},
-       repro::kExactRotationOption},
-      [](const repro::Driver& d) {
-        const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
-        const double duration = d.number("--duration", full.scene.duration);
-        const int threads = d.whole("--threads", 1);
-        if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
-        const bool return_mapping = d.whole("--return-mapping", 0) != 0;
-        dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping(full.min_area, duration);
-        if (return_mapping) ts.scene.contact.friction_update = dda::FrictionUpdate::kReturnMapping;
-        ts.scene.rotation_update = repro::rotation_option(d.argc, d.argv);
-        const std::string dir = d.out + "/data/toppling_slumping";
-        const std::string note = "Paper A Sect. 6.2, geometry reconstructed (Fig. 21 lost)";
-
-        ModelRun m = run_model(d, ts, duration, threads, dir, note);
-        m.full_duration = full.scene.duration;
-        m.return_mapping = return_mapping;
-        const Controls controls = run_controls(ts, threads, return_mapping);
-        repro::write_boundaries(dir + "/boundaries.csv", ts.scene.boundaries);
-        write_summary(dir + "/summary.csv", note, m, controls);
-        repro::write_claims(repro::claims_path(d.out, "6_2_toppling_slumping"), rows(m, controls));
-        return 0;
-      });
-}
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, kOptions, reproduce); }
