@@ -1,4 +1,5 @@
-// Paper B Sect. 6, two prisms: the data files of the driver.
+// Paper B Sect. 6, two prisms: the data files of the driver, each declared
+// as a column table.
 #include "repro/B_6_two_prisms/output.hpp"
 
 #include <cmath>
@@ -6,26 +7,84 @@
 namespace prisms {
 namespace {
 
-std::vector<std::string> history_header() {
-  return {"time",        "ux_i",         "ux_j",    "vx_i",           "vx_j",
-          "vx_max_j",    "momentum_x",   "kinetic", "strain",         "total_energy",
-          "impact_loss", "remap_change", "clones",  "patch_elements", "patch_substeps",
-          // the energy account (Model::energy_account), J/m
-          "energy_initial", "gravity", "touch_loss", "touch_loss_eq5", "refine_loss", "deletion_loss", "energy_other"};
+using Model = dda::cdem::Model;
+
+// history.csv's columns: the block motion, the energies and the energy
+// account (Model::energy_account, J/m) of one step.
+std::vector<repro::Column<HistoryRow>> history_columns() {
+  return {{"time", [](const HistoryRow& h) { return h.m->time(); }},
+          {"ux_i", [](const HistoryRow& h) { return h.m->block_displacement(0).x; }},
+          {"ux_j", [](const HistoryRow& h) { return h.m->block_displacement(1).x; }},
+          {"vx_i", [](const HistoryRow& h) { return h.m->block_velocity(0).x; }},
+          {"vx_j", [](const HistoryRow& h) { return h.m->block_velocity(1).x; }},
+          {"vx_max_j", [](const HistoryRow& h) { return h.m->block_max_velocity_x(1); }},
+          {"momentum_x", [](const HistoryRow& h) { return h.m->momentum().x; }},
+          {"kinetic", [](const HistoryRow& h) { return h.e.kinetic; }},
+          {"strain", [](const HistoryRow& h) { return h.e.strain; }},
+          {"total_energy", [](const HistoryRow& h) { return h.e.total(); }},
+          {"impact_loss", [](const HistoryRow& h) { return h.m->impact_energy_loss(); }},
+          {"remap_change", [](const HistoryRow& h) { return h.m->remap_energy_change(); }},
+          {"clones", [](const HistoryRow& h) { return h.m->clones().size(); }},
+          {"patch_elements", [](const HistoryRow& h) { return h.m->active_elements(true); }},
+          {"patch_substeps", [](const HistoryRow& h) { return h.m->patch_substeps(); }},
+          {"energy_initial", [](const HistoryRow& h) { return h.a.initial; }},
+          {"gravity", [](const HistoryRow& h) { return h.a.gravity; }},
+          {"touch_loss", [](const HistoryRow& h) { return h.a.touch_loss; }},
+          {"touch_loss_eq5", [](const HistoryRow& h) { return h.a.touch_loss_eq5; }},
+          {"refine_loss", [](const HistoryRow& h) { return h.a.refine_loss; }},
+          {"deletion_loss", [](const HistoryRow& h) { return h.a.deletion_loss; }},
+          {"energy_other", [](const HistoryRow& h) { return h.a.other; }}};
 }
 
-void write_snapshot(repro::CsvWriter& tris, repro::CsvWriter& clones, int id, const std::string& label,
-                    const dda::cdem::Snapshot& s) {
-  for (const auto& t : s.tris)
-    tris.row(std::vector<std::string>{std::to_string(id), repro::format_full(s.time), label, std::to_string(t.block),
-                                      t.fine ? "1" : "0", repro::format_full(t.x[0].x), repro::format_full(t.x[0].y),
-                                      repro::format_full(t.x[1].x), repro::format_full(t.x[1].y),
-                                      repro::format_full(t.x[2].x), repro::format_full(t.x[2].y),
-                                      repro::format_full(t.velocity.x), repro::format_full(t.velocity.y)});
-  for (const dda::Vec2& p : s.clone_points)
-    clones.row(std::vector<std::string>{std::to_string(id), repro::format_full(s.time), label, repro::format_full(p.x),
-                                        repro::format_full(p.y)});
+// snapshots.csv: one row per triangle of a snapshot.
+struct ShotTri {
+  int id;
+  double time;
+  std::string label;
+  dda::cdem::Snapshot::Tri t;
+};
+std::vector<repro::Column<ShotTri>> tri_columns() {
+  const auto corner = [](int k, bool y) {
+    return [k, y](const ShotTri& s) { return y ? s.t.x[k].y : s.t.x[k].x; };
+  };
+  return {{"snapshot", [](const ShotTri& s) { return s.id; }},
+          {"time", [](const ShotTri& s) { return s.time; }},
+          {"label", [](const ShotTri& s) { return s.label; }},
+          {"block", [](const ShotTri& s) { return s.t.block; }},
+          {"fine", [](const ShotTri& s) { return s.t.fine; }},
+          {"x0", corner(0, false)}, {"y0", corner(0, true)},
+          {"x1", corner(1, false)}, {"y1", corner(1, true)},
+          {"x2", corner(2, false)}, {"y2", corner(2, true)},
+          {"vx", [](const ShotTri& s) { return s.t.velocity.x; }},
+          {"vy", [](const ShotTri& s) { return s.t.velocity.y; }}};
 }
+
+// clones.csv: one row per clone point of a snapshot.
+struct ShotClone {
+  int id;
+  double time;
+  std::string label;
+  dda::Vec2 p;
+};
+const std::vector<repro::Column<ShotClone>> kCloneColumns = {
+    {"snapshot", [](const ShotClone& s) { return s.id; }},
+    {"time", [](const ShotClone& s) { return s.time; }},
+    {"label", [](const ShotClone& s) { return s.label; }},
+    {"x", [](const ShotClone& s) { return s.p.x; }},
+    {"y", [](const ShotClone& s) { return s.p.y; }}};
+
+// events.csv: a touch or a separation, its details as text.
+struct Event {
+  std::string kind;
+  double time;
+  std::string a, b, c, d;
+};
+const std::vector<repro::Column<Event>> kEventColumns = {{"kind", [](const Event& e) { return e.kind; }},
+                                                         {"time", [](const Event& e) { return e.time; }},
+                                                         {"detail_a", [](const Event& e) { return e.a; }},
+                                                         {"detail_b", [](const Event& e) { return e.b; }},
+                                                         {"detail_c", [](const Event& e) { return e.c; }},
+                                                         {"detail_d", [](const Event& e) { return e.d; }}};
 
 // Snapshot times: Fig. 13 (start, touch), Fig. 14 a-c, Fig. 15 a-b; and
 // the last step before the first separation ("last step with the clone").
@@ -54,93 +113,106 @@ std::string subdivision_mode_text(const dda::cdem::CdemOptions& o) {
 }
 
 History::History(const std::string& path, const std::string& title, const dda::cdem::CdemOptions& opt)
-    : csv_(path, history_header(), {title + kRebuilt, "subdivision mode: " + subdivision_mode_text(opt)}) {}
+    : table_(path, history_columns(), {title + kRebuilt, "subdivision mode: " + subdivision_mode_text(opt)}) {}
 
-void History::row(const dda::cdem::Model& m) {
-  const dda::cdem::CdemEnergy e = m.energy();
-  const dda::cdem::CdemEnergyAccount a = m.energy_account();
-  csv_.row({m.time(), m.block_displacement(0).x, m.block_displacement(1).x, m.block_velocity(0).x,
-            m.block_velocity(1).x, m.block_max_velocity_x(1), m.momentum().x, e.kinetic, e.strain, e.total(),
-            m.impact_energy_loss(), m.remap_energy_change(), static_cast<double>(m.clones().size()),
-            static_cast<double>(m.active_elements(true)), static_cast<double>(m.patch_substeps()), a.initial,
-            a.gravity, a.touch_loss, a.touch_loss_eq5, a.refine_loss, a.deletion_loss, a.other});
-}
+void History::row(const Model& m) { table_.row({&m, m.energy(), m.energy_account()}); }
+
+struct FigureFiles::Shots {
+  repro::TableWriter<ShotTri> tris;
+  repro::TableWriter<ShotClone> clones;
+  int next_id = 0;
+  // Writes snapshot `s` under `label` with the next id.
+  void write(const std::string& label, const dda::cdem::Snapshot& s) {
+    const int id = next_id++;
+    for (const auto& t : s.tris) tris.row({id, s.time, label, t});
+    for (const dda::Vec2& p : s.clone_points) clones.row({id, s.time, label, p});
+  }
+};
 
 FigureFiles::FigureFiles(const std::string& dir, const dda::cdem::CdemOptions& opt)
     : dir_(dir),
       hist_(dir + "history.csv", "Paper B Sect. 6, two prisms, clone node + subdivision; ", opt),
-      tris_(dir + "snapshots.csv",
-            {"snapshot", "time", "label", "block", "fine", "x0", "y0", "x1", "y1", "x2", "y2", "vx", "vy"},
-            {kRebuilt, "subdivision mode: " + subdivision_mode_text(opt)}),
-      clones_(dir + "clones.csv", {"snapshot", "time", "label", "x", "y"}) {}
+      shots_(new Shots{{dir + "snapshots.csv", tri_columns(), {kRebuilt, "subdivision mode: " + subdivision_mode_text(opt)}},
+                       {dir + "clones.csv", kCloneColumns}}) {}
 
-void FigureFiles::on_step(const dda::cdem::Model& m) {
+FigureFiles::~FigureFiles() = default;
+
+void FigureFiles::on_step(const Model& m) {
   if (before_separation_ && !m.separations().empty()) {
     before_separation_ = false;
-    write_snapshot(tris_, clones_, shot_id_++,
-                   "last step with the clone: " + repro::format_short(previous_.time, 5) + " s", previous_);
+    shots_->write("last step with the clone: " + repro::format_short(previous_.time, 5) + " s", previous_);
   }
   if (before_separation_) previous_ = m.snapshot();
   hist_.row(m);
   while (next_shot_ < kShotCount && std::fabs(m.time() - kShots[next_shot_].time) < 0.5 * m.dt())
-    write_snapshot(tris_, clones_, shot_id_++, kShots[next_shot_++].label, m.snapshot());
+    shots_->write(kShots[next_shot_++].label, m.snapshot());
   if (m.touches().size() != touches_.size()) touches_ = m.touches();
   if (m.separations().size() != separations_.size()) separations_ = m.separations();
 }
 
 void FigureFiles::commit(const Result& r) {
   using repro::format_short;
-  write_snapshot(tris_, clones_, shot_id_++, "Fig. 13: touch " + format_short(r.touch.time, 6) + " s",
-                 r.touch.snapshot.at(0));
-  repro::CsvWriter events(dir_ + "events.csv", {"kind", "time", "detail_a", "detail_b", "detail_c", "detail_d"});
+  shots_->write("Fig. 13: touch " + format_short(r.touch.time, 6) + " s", r.touch.snapshot.at(0));
+  std::vector<Event> events;
   for (const auto& t : touches_)
-    events.row(std::vector<std::string>{"touch", repro::format_full(t.time), "dt1=" + format_short(t.dt1, 6),
-                                        "dt2=" + format_short(t.dt2, 6), "k=" + std::to_string(t.subdivision),
-                                        "loss=" + format_short(t.energy_loss, 6)});
+    events.push_back({"touch", t.time, "dt1=" + format_short(t.dt1, 6), "dt2=" + format_short(t.dt2, 6),
+                      "k=" + std::to_string(t.subdivision), "loss=" + format_short(t.energy_loss, 6)});
   for (const auto& s : separations_)
-    events.row(std::vector<std::string>{"separation", repro::format_full(s.time),
-                                        s.criterion == dda::cdem::SeparationCriterion::kTension ? "tension" : "shear",
-                                        "Fn=" + format_short(s.normal_force, 6), "Fs=" + format_short(s.shear_force, 6),
-                                        "limit=" + format_short(s.limit, 6)});
+    events.push_back({"separation", s.time,
+                      s.criterion == dda::cdem::SeparationCriterion::kTension ? "tension" : "shear",
+                      "Fn=" + format_short(s.normal_force, 6), "Fs=" + format_short(s.shear_force, 6),
+                      "limit=" + format_short(s.limit, 6)});
   hist_.commit();
-  tris_.commit();
-  clones_.commit();
-  events.commit();
+  shots_->tris.commit();
+  shots_->clones.commit();
+  repro::write_table(dir_ + "events.csv", kEventColumns, events);
+}
+
+// The columns both refinement studies have: the mesh, the step, and j's
+// velocities and the separation, empty where `has_data` says the point has
+// none (a stopped run).
+template <class Point>
+std::vector<repro::Column<Point>> refinement_columns(bool (*has_data)(const Point&)) {
+  const auto data = [has_data](double Point::*f) {
+    return [has_data, f](const Point& p) { return repro::cell_if(has_data(p), p.*f); };
+  };
+  return {repro::field("divisions", &Point::divisions), repro::field("dt", &Point::dt),
+          {"vj_block_average", data(&Point::vj)}, {"vj_node_at_0.34", data(&Point::node_vj_fig14c)},
+          {"t_sep", data(&Point::t_sep)}};
 }
 
 void write_mesh_study(const std::string& path, const std::vector<MeshPoint>& mesh) {
-  repro::CsvWriter csv(path, {"divisions", "dt", "vj_block_average", "vj_node_at_0.34", "t_sep"},
-                       {std::string("Paper B Sect. 6, two prisms on finer meshes, dt scaled with the element "
-                                    "size (c dt / h fixed); ") + kRebuilt});
-  for (const MeshPoint& p : mesh) csv.row({static_cast<double>(p.divisions), p.dt, p.vj, p.node_vj_fig14c, p.t_sep});
-  csv.commit();
+  repro::write_table(
+      path, refinement_columns<MeshPoint>([](const MeshPoint&) { return true; }), mesh,
+      {std::string("Paper B Sect. 6, two prisms on finer meshes, dt scaled with the element size (c dt / h fixed); ") +
+       kRebuilt});
 }
 
 void write_submodel_mesh_study(const std::string& path, const std::vector<SubMeshPoint>& pts) {
-  repro::CsvWriter csv(path,
-                       {"divisions", "dt", "vj_block_average", "vj_node_at_0.34", "t_sep", "momentum_drift", "stopped"},
-                       {std::string("Paper B Sect. 5 as written (sub-model) on the refinement study's meshes, dt "
-                                    "scaled with the element size; ") + kRebuilt});
-  for (const SubMeshPoint& p : pts) {
-    const bool ok = p.stopped.empty();  // a stopped run's fields are no data
-    auto num = [&](double x) { return ok ? repro::format_full(x) : std::string(); };
-    csv.row(std::vector<std::string>{std::to_string(p.divisions), repro::format_full(p.dt), num(p.vj),
-                                     num(p.node_vj_fig14c), num(p.t_sep), num(p.momentum), ok ? "" : "stopped"});
-  }
-  csv.commit();
+  const auto finished = [](const SubMeshPoint& p) { return p.stopped.empty(); };
+  std::vector<repro::Column<SubMeshPoint>> columns = refinement_columns<SubMeshPoint>(finished);
+  columns.push_back(
+      {"momentum_drift", [](const SubMeshPoint& p) { return repro::cell_if(p.stopped.empty(), p.momentum); }});
+  columns.push_back({"stopped", [](const SubMeshPoint& p) { return p.stopped.empty() ? "" : "stopped"; }});
+  repro::write_table(path, columns, pts,
+                     {std::string("Paper B Sect. 5 as written (sub-model) on the refinement study's meshes, dt scaled "
+                                  "with the element size; ") + kRebuilt});
 }
 
 void write_contact_mass(const std::string& path, const std::vector<MassPoint>& pts, double coarse_loss) {
-  repro::CsvWriter csv(path,
-                       {"contact_point_mass", "k", "mass_main", "mass_target", "loss", "loss_eq5", "loss_over_coarse"},
-                       {"Paper B Sect. 4.1: one touch of the prisms with the contact points' mass set through "
-                        "the subdivision k (CdemOptions::contact_point_mass); masses kg/m, losses J/m; "
-                        "loss_over_coarse: against the touch of coarse nodes (no subdivision); " +
-                        std::string(kRebuilt)});
-  for (const MassPoint& p : pts)
-    csv.row({p.target, static_cast<double>(p.k), p.mass_main, p.mass_target, p.loss, p.loss_eq5,
-             p.loss / coarse_loss});
-  csv.commit();
+  repro::write_table<MassPoint>(
+      path,
+      {repro::field("contact_point_mass", &MassPoint::target),
+       repro::field("k", &MassPoint::k),
+       repro::field("mass_main", &MassPoint::mass_main),
+       repro::field("mass_target", &MassPoint::mass_target),
+       repro::field("loss", &MassPoint::loss),
+       repro::field("loss_eq5", &MassPoint::loss_eq5),
+       {"loss_over_coarse", [coarse_loss](const MassPoint& p) { return p.loss / coarse_loss; }}},
+      pts,
+      {"Paper B Sect. 4.1: one touch of the prisms with the contact points' mass set through the subdivision k "
+       "(CdemOptions::contact_point_mass); masses kg/m, losses J/m; loss_over_coarse: against the touch of coarse "
+       "nodes (no subdivision); " + std::string(kRebuilt)});
 }
 
 }  // namespace prisms

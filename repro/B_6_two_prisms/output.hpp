@@ -2,12 +2,14 @@
 // snapshots, clones, events: Figs. 13-16; the refinement and contact-mass
 // tables).
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dda/cdem/model.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/table.hpp"
 
 namespace prisms {
 
@@ -15,15 +17,22 @@ namespace prisms {
 // line "subdivision mode: ..." (the figures label the curves with it).
 std::string subdivision_mode_text(const dda::cdem::CdemOptions& o);
 
+// One step of a run as history.csv reads it: the model and its energies.
+struct HistoryRow {
+  const dda::cdem::Model* m;
+  dda::cdem::CdemEnergy e;
+  dda::cdem::CdemEnergyAccount a;
+};
+
 // history.csv's rows: one per step (Fig. 16, with the energy account).
 class History {
  public:
   History(const std::string& path, const std::string& title, const dda::cdem::CdemOptions& opt);
   void row(const dda::cdem::Model& m);
-  void commit() { csv_.commit(); }
+  void commit() { table_.commit(); }
 
  private:
-  repro::CsvWriter csv_;
+  repro::TableWriter<HistoryRow> table_;
 };
 
 // The main run's files: history.csv, snapshots.csv and clones.csv at the
@@ -31,15 +40,16 @@ class History {
 class FigureFiles {
  public:
   FigureFiles(const std::string& dir, const dda::cdem::CdemOptions& opt);
+  ~FigureFiles();
   void on_step(const dda::cdem::Model& m);  // after construction and after every step
   void commit(const Result& r);             // adds the touch snapshot, writes events.csv
 
  private:
   std::string dir_;
   History hist_;
-  repro::CsvWriter tris_, clones_;
+  struct Shots;  // snapshots.csv and clones.csv (output.cpp)
+  std::unique_ptr<Shots> shots_;
   std::size_t next_shot_ = 0;
-  int shot_id_ = 0;
   dda::cdem::Snapshot previous_;
   bool before_separation_ = true;
   std::vector<dda::cdem::TouchRecord> touches_;

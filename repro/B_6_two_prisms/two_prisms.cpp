@@ -35,7 +35,7 @@
 // refinement: touch time, energy,
 // momentum, j's velocities and cost, in rows of their own; the sub-model on
 // the refinement study's meshes in mesh_study_submodel.csv.
-#include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,7 +44,7 @@
 #include "repro/B_6_two_prisms/output.hpp"
 #include "repro/B_6_two_prisms/two_prisms.hpp"
 #include "repro/common/common.hpp"
-#include "repro/common/options.hpp"
+#include "repro/common/driver.hpp"
 
 namespace {
 const char* kDriver = "B_6_two_prisms";
@@ -56,24 +56,16 @@ dda::cdem::CdemScene prisms_scene(int divisions, double dt, const dda::cdem::Cde
   s.dt = dt;
   return s;
 }
-}  // namespace
 
-int main(int argc, char** argv) try {
+// Every run of the driver with `divisions` and `dt`: the data files under
+// `dir` and the claim rows.
+std::vector<repro::Claim> run_all(int divisions, double dt, const std::string& dir, const repro::Progress& progress) {
   using repro::format_short;
-  repro::check_command_line(argc, argv, "Paper B Sect. 6 (Figs. 12-16): two triangular prisms colliding.",
-                            {{"--divisions", "N", "mesh divisions per block edge (default 2: the paper's example here)", true},
-                             {"--dt", "S", "time step, s (default 5e-4: the paper's)", false}});
-  const int divisions = repro::option_int(argc, argv, "--divisions", prisms::kPaperDivisions);
-  const double dt = repro::option_number(argc, argv, "--dt", prisms::kPaperDt);
-  if (divisions < 1 || !(dt > 0.0)) throw std::invalid_argument("--divisions must be >= 1 and --dt > 0");
   // Rows of a run off the paper's mesh or dt say so.
   const std::string run_note =
       divisions == prisms::kPaperDivisions && dt == prisms::kPaperDt
           ? std::string()
           : " [NOT THE PAPER'S SETTINGS: --divisions " + std::to_string(divisions) + ", --dt " + format_short(dt) + "]";
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("B-6 two prisms");
-  const std::string dir = out + "/data/" + kDriver + "/";
 
   // The main run, Sect. 5 as written (the default, SubdivisionMode::kSubModel): Figs. 13-16.
   dda::cdem::CdemOptions opt;
@@ -141,10 +133,23 @@ int main(int argc, char** argv) try {
   for (repro::Claim& c : claims) c.claim += run_note;
   // The mesh-refinement rows (the study's own meshes and steps).
   for (const repro::Claim& c : prisms::mesh_rows(mesh)) claims.push_back(c);
-  repro::write_claims(repro::claims_path(out, kDriver), claims);
-  progress("done");
-  return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "B_6_two_prisms: error: %s\n", e.what());
-  return 1;
+  return claims;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return repro::driver_main(
+      argc, argv, {kDriver, "B-6 two prisms", "Paper B Sect. 6 (Figs. 12-16): two triangular prisms colliding."},
+      {{"--divisions", "N", "mesh divisions per block edge (default 2: the paper's example here)", true},
+       {"--dt", "S", "time step, s (default 5e-4: the paper's)", false}},
+      [](const repro::Driver& d) {
+        const int divisions = d.whole("--divisions", prisms::kPaperDivisions);
+        const double dt = d.number("--dt", prisms::kPaperDt);
+        if (divisions < 1 || !(dt > 0.0)) throw std::invalid_argument("--divisions must be >= 1 and --dt > 0");
+        const std::vector<repro::Claim> claims = run_all(divisions, dt, d.out + "/data/" + kDriver + "/", d.progress);
+        repro::write_claims(repro::claims_path(d.out, kDriver), claims);
+        d.progress("done");
+        return 0;
+      });
 }

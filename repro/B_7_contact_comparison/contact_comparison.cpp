@@ -40,67 +40,78 @@
 #include "repro/B_7_contact_comparison/output.hpp"
 #include "repro/B_7_contact_comparison/penalty_baseline.hpp"
 #include "repro/common/common.hpp"
-#include "repro/common/options.hpp"
+#include "repro/common/driver.hpp"
 
 namespace {
 using namespace compare;
 const char* kDriver = "B_7_contact_comparison";
-}  // namespace
 
-int main(int argc, char** argv) {
-  repro::check_command_line(
-      argc, argv, "Paper A against Paper B: both contact models on the same collisions.",
-      {{"--prisms-divisions", "N", "CDEM mesh divisions of the prisms (default 2: Paper B's example here)", true},
-       {"--squares-divisions", "N", "CDEM mesh divisions of the squares' fan triangles (default 4)", true},
-       {"--prisms-dt", "S", "base dt of the prisms' sweep, s (default 5e-4: Paper B's; the sweep halves it)", false},
-       {"--squares-dt", "S", "base dt of the squares' sweep, s (default 1e-4: Paper A's)", false}});
-  Settings set;
-  set.prism_divisions = repro::option_int(argc, argv, "--prisms-divisions", set.prism_divisions);
-  set.square_divisions = repro::option_int(argc, argv, "--squares-divisions", set.square_divisions);
-  set.prisms_dt = repro::option_number(argc, argv, "--prisms-dt", set.prisms_dt);
-  set.squares_dt = repro::option_number(argc, argv, "--squares-dt", set.squares_dt);
-  if (set.prism_divisions < 1 || set.square_divisions < 1 || !(set.prisms_dt > 0.0) || !(set.squares_dt > 0.0)) {
-    std::fprintf(stderr, "B_7_contact_comparison: divisions must be >= 1 and time steps > 0\n");
-    return 2;
-  }
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("B-7 contact comparison");
-  const std::string dir = out + "/data/" + kDriver + "/";
-
-  // The runs: A, B, B0 over each scene's dt sweep, then P (the node-to-edge
-  // penalty baseline on the CST blocks, penalty_baseline.cpp).
-  const std::vector<SceneDef> scenes = scene_defs(set);
+// Every run: A, B, B0 over each scene's dt sweep, then P (the node-to-edge
+// penalty baseline on the CST blocks, penalty_baseline.cpp).
+struct Runs {
+  std::vector<SceneDef> scenes;
   std::vector<Result> results;
   std::map<std::string, History> histories;
-  for (const SceneDef& def : scenes) {
+  PenaltyRuns penalty;
+};
+Runs run_all(const Settings& set, const repro::Progress& progress) {
+  Runs runs;
+  runs.scenes = scene_defs(set);
+  for (const SceneDef& def : runs.scenes) {
     for (const std::string model : {"A", "B", "B0"}) {
-      const std::vector<Result> sweep = run_sweep(def, model, &histories[def.name + "/" + model]);
+      const std::vector<Result> sweep = run_sweep(def, model, &runs.histories[def.name + "/" + model]);
       for (const Result& r : sweep)
         progress(def.name + " " + model + " dt " + format_short(r.dt) + ": " + format_short(r.wall, 3) + " s, v_j " +
                  format_short(r.v_j, 6) + ", dE " + format_short(r.energy_err_end, 3));
-      results.insert(results.end(), sweep.begin(), sweep.end());
+      runs.results.insert(runs.results.end(), sweep.begin(), sweep.end());
     }
   }
-  // P: the node-to-edge penalty baseline on the CST blocks (penalty_baseline.cpp).
-  const PenaltyRuns penalty_runs = run_penalty_baseline(scenes, results, histories, progress);
+  runs.penalty = run_penalty_baseline(runs.scenes, runs.results, runs.histories, progress);
+  return runs;
+}
 
-  write_data(dir, results, histories);
-
-  // The rows: per scene A against B and B0, A's kn dependence on the prisms
-  // (kn x 1, 10, 100 at the base dt; B has no such parameter), P's rows.
+// The rows: per scene A against B and B0, A's kn dependence on the prisms
+// (kn x 1, 10, 100 at the base dt; B has no such parameter), P's rows.
+std::vector<repro::Claim> claim_rows(const Settings& set, const Runs& runs) {
+  const std::vector<SceneDef>& scenes = runs.scenes;
   std::vector<repro::Claim> claims;
   for (const SceneDef& def : scenes)
-    for (const repro::Claim& c : scene_rows(def, results, histories)) claims.push_back(c);
+    for (const repro::Claim& c : scene_rows(def, runs.results, runs.histories)) claims.push_back(c);
   claims.push_back(kn_row(scenes.front(), kn_sweep(scenes.front(), {1.0, 10.0, 100.0}),
-                          pick(results, "prisms", "B").front()));
-  add_penalty_rows(scenes, results, penalty_runs, claims);
+                          pick(runs.results, "prisms", "B").front()));
+  add_penalty_rows(scenes, runs.results, runs.penalty, claims);
   if (!set.is_default())  // rows of a run off the default meshes or time steps say so
     for (repro::Claim& c : claims)
       c.claim += " [NOT THE DEFAULT SETTINGS: prisms " + std::to_string(set.prism_divisions) + " divisions, dt " +
                  format_short(set.prisms_dt) + " s; squares " + std::to_string(set.square_divisions) +
                  " divisions, dt " + format_short(set.squares_dt) + " s]";
   repro::default_scope(claims, repro::Scope::kExtension);  // a comparison neither paper makes, every row
-  repro::write_claims(repro::claims_path(out, kDriver), claims);
-  progress("done");
-  return 0;
+  return claims;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  return repro::driver_main(
+      argc, argv,
+      {kDriver, "B-7 contact comparison", "Paper A against Paper B: both contact models on the same collisions."},
+      {{"--prisms-divisions", "N", "CDEM mesh divisions of the prisms (default 2: Paper B's example here)", true},
+       {"--squares-divisions", "N", "CDEM mesh divisions of the squares' fan triangles (default 4)", true},
+       {"--prisms-dt", "S", "base dt of the prisms' sweep, s (default 5e-4: Paper B's; the sweep halves it)", false},
+       {"--squares-dt", "S", "base dt of the squares' sweep, s (default 1e-4: Paper A's)", false}},
+      [](const repro::Driver& d) {
+        Settings set;
+        set.prism_divisions = d.whole("--prisms-divisions", set.prism_divisions);
+        set.square_divisions = d.whole("--squares-divisions", set.square_divisions);
+        set.prisms_dt = d.number("--prisms-dt", set.prisms_dt);
+        set.squares_dt = d.number("--squares-dt", set.squares_dt);
+        if (set.prism_divisions < 1 || set.square_divisions < 1 || !(set.prisms_dt > 0.0) || !(set.squares_dt > 0.0)) {
+          std::fprintf(stderr, "%s: divisions must be >= 1 and time steps > 0\n", kDriver);
+          return 2;
+        }
+        const Runs runs = run_all(set, d.progress);
+        write_data(d.out + "/data/" + kDriver + "/", runs.results, runs.histories);
+        repro::write_claims(repro::claims_path(d.out, kDriver), claim_rows(set, runs));
+        d.progress("done");
+        return 0;
+      });
 }

@@ -43,49 +43,52 @@
 // the wall time; a stopped run has its error and no values), traces.csv
 // (contact stress against time after the touch for one run of each model);
 // claims in <out>/claims/B_8_bar_waves.csv.
-#include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "repro/B_8_bar_waves/bar_waves.hpp"
 #include "repro/B_8_bar_waves/output.hpp"
 #include "repro/common/common.hpp"
-#include "repro/common/options.hpp"
+#include "repro/common/driver.hpp"
 
 namespace {
 const char* kDriver = "B_8_bar_waves";
+
+// One run's progress line.
+std::string summary(const bars::Run& r) {
+  using bars::pct;
+  using repro::format_short;
+  return r.model + " " + r.series + " ny " + std::to_string(r.ny) + " dt " + format_short(r.dt) + " kn " +
+         format_short(r.kn) + ": " + format_short(r.wall, 3) + " s, " +
+         (r.ok() ? "T " + pct(r.duration_err) + ", stress " + pct(r.stress_err) + ", plateau " + pct(r.plateau_err) +
+                       ", exchange " + pct(r.exchange_err) + ", dE " + format_short(r.energy_end, 3) + ", growth " +
+                       format_short(r.energy_growth, 3)
+                 : "STOPPED: " + r.stopped);
+}
 }  // namespace
 
-int main(int argc, char** argv) try {
-  using namespace bars;
-  repro::check_command_line(
-      argc, argv, "Beyond both papers: two elastic bars head on against 1D wave theory (CDEM B, B0; Paper A's DDA).",
-      {{"--max-ny", "N", "finest CDEM mesh: elements across the width (default 16; powers of 2 from 1)", true}});
-  const int max_ny = repro::option_int(argc, argv, "--max-ny", 16);
-  if (max_ny < 1) throw std::invalid_argument("--max-ny must be >= 1");
-  const std::string run_note = max_ny == 16 ? "" : " [NOT THE DEFAULT: --max-ny " + std::to_string(max_ny) + "]";
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("B-8 bar waves");
-  const Setup s;
+int main(int argc, char** argv) {
+  return repro::driver_main(
+      argc, argv,
+      {kDriver, "B-8 bar waves",
+       "Beyond both papers: two elastic bars head on against 1D wave theory (CDEM B, B0; Paper A's DDA)."},
+      {{"--max-ny", "N", "finest CDEM mesh: elements across the width (default 16; powers of 2 from 1)", true}},
+      [](const repro::Driver& d) {
+        using namespace bars;
+        const int max_ny = d.whole("--max-ny", 16);
+        if (max_ny < 1) throw std::invalid_argument("--max-ny must be >= 1");
+        const std::string run_note = max_ny == 16 ? "" : " [NOT THE DEFAULT: --max-ny " + std::to_string(max_ny) + "]";
+        const Setup s;
 
-  // The runs: B and B0 on the mesh series and the dt series, A on its dt and kn series.
-  auto note = [&](const Run& r) {
-    progress(r.model + " " + r.series + " ny " + std::to_string(r.ny) + " dt " + format_short(r.dt) + " kn " +
-             format_short(r.kn) + ": " + format_short(r.wall, 3) + " s, " +
-             (r.ok() ? "T " + pct(r.duration_err) + ", stress " + pct(r.stress_err) + ", plateau " +
-                           pct(r.plateau_err) + ", exchange " + pct(r.exchange_err) + ", dE " +
-                           format_short(r.energy_end, 3) + ", growth " + format_short(r.energy_growth, 3)
-                     : "STOPPED: " + r.stopped));
-  };
-  const Study study = run_study(s, max_ny, note);
-  write_runs(out + "/data/" + kDriver + "/", s, study);
+        // The runs: B and B0 on the mesh series and the dt series, A on its dt and kn series.
+        const Study study = run_study(s, max_ny, [&d](const Run& r) { d.progress(summary(r)); });
+        write_runs(d.out + "/data/" + kDriver + "/", s, study);
 
-  std::vector<repro::Claim> claims = rows(study.runs, s, run_note);
-  repro::default_scope(claims, repro::Scope::kExtension);  // beyond both papers: 1D wave theory, every row
-  repro::write_claims(repro::claims_path(out, kDriver), claims);
-  progress("done");
-  return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "B_8_bar_waves: error: %s\n", e.what());
-  return 1;
+        std::vector<repro::Claim> claims = rows(study.runs, s, run_note);
+        repro::default_scope(claims, repro::Scope::kExtension);  // beyond both papers: 1D wave theory, every row
+        repro::write_claims(repro::claims_path(d.out, kDriver), claims);
+        d.progress("done");
+        return 0;
+      });
 }

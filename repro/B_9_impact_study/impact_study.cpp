@@ -24,57 +24,67 @@
 // outcome, penetration, separation, energy, loss vs Eq. 5, restitution,
 // impulses and the law's prediction, the per-criterion verdicts); claims in
 // <out>/claims/B_9_impact_study.csv.
-#include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "repro/B_9_impact_study/impact_study.hpp"
 #include "repro/B_9_impact_study/output.hpp"
 #include "repro/common/common.hpp"
-#include "repro/common/options.hpp"
+#include "repro/common/driver.hpp"
 
 namespace {
 const char* kDriver = "B_9_impact_study";
-}  // namespace
 
-int main(int argc, char** argv) try {
-  repro::check_command_line(argc, argv,
-                            "Beyond Paper B: impact study of its two-scale contact (two 1 m squares, angle x "
-                            "speed x friction x subdivision).",
-                            {{"--dt", "S", "time step, s (default 2e-5: 0.28 of the squares' critical step)", false}});
-  const double dt = repro::option_number(argc, argv, "--dt", impact::kDt);
-  if (!(dt > 0.0)) throw std::invalid_argument("--dt must be > 0");
-  const std::string note = dt == impact::kDt ? std::string() : " [NOT THE DEFAULT dt: " + repro::format_short(dt) + " s]";
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("B-9 impact study");
 
+// Every cell of the three grids at `dt`, written to `path` as it runs; the
+// results by grid: the paper's method, the Coulomb option, the sub-model.
+struct Results {
+  std::vector<impact::CellResult> paper, option, submodel;
+};
+Results run_cells(double dt, const std::string& path, const repro::Progress& progress) {
   // The paper's method, then the same grid with the Coulomb touch option;
   // then Paper B Sect. 5's sub-model on the subdivision-on cells.
   std::vector<impact::Cell> cells = impact::grid(false);
   for (const impact::Cell& c : impact::grid(true)) cells.push_back(c);
   for (const impact::Cell& c : impact::submodel_grid()) cells.push_back(c);
 
-  impact::CellsCsv csv(out + "/data/" + kDriver + "/cells.csv", dt);
-  std::vector<impact::CellResult> results, option_results, submodel_results;
+  impact::CellsCsv csv(path, dt);
+  Results res;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const impact::CellResult r = impact::run_cell(cells[i], dt);
-    (cells[i].submodel ? submodel_results : cells[i].coulomb ? option_results : results).push_back(r);
+    (cells[i].submodel ? res.submodel : cells[i].coulomb ? res.option : res.paper).push_back(r);
     if (!r.ok) progress("cell " + impact::cell_name(r.cell) + " stopped: " + r.outcome);
     if ((i + 1) % 30 == 0 || i + 1 == cells.size())
       progress(std::to_string(i + 1) + " of " + std::to_string(cells.size()) + " cells");
     csv.row(r);
   }
   csv.commit();
+  return res;
+}
+}  // namespace
 
-  std::vector<repro::Claim> claims = impact::rows(results, note, option_results);
-  for (const repro::Claim& c : impact::submodel_rows(submodel_results, results, note)) claims.push_back(c);
-  for (const repro::Claim& c : impact::cost_rows(results, option_results, submodel_results, dt, note))
-    claims.push_back(c);
-  repro::default_scope(claims, repro::Scope::kExtension);  // beyond the paper; the option rows say so themselves
-  repro::write_claims(repro::claims_path(out, kDriver), claims);
-  progress("done");
-  return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "B_9_impact_study: error: %s\n", e.what());
-  return 1;
+int main(int argc, char** argv) {
+  return repro::driver_main(
+      argc, argv,
+      {kDriver, "B-9 impact study",
+       "Beyond Paper B: impact study of its two-scale contact (two 1 m squares, angle x speed x friction x "
+       "subdivision)."},
+      {{"--dt", "S", "time step, s (default 2e-5: 0.28 of the squares' critical step)", false}},
+      [](const repro::Driver& d) {
+        const double dt = d.number("--dt", impact::kDt);
+        if (!(dt > 0.0)) throw std::invalid_argument("--dt must be > 0");
+        const std::string note =
+            dt == impact::kDt ? std::string() : " [NOT THE DEFAULT dt: " + repro::format_short(dt) + " s]";
+        const Results res = run_cells(dt, d.out + "/data/" + kDriver + "/cells.csv", d.progress);
+
+        std::vector<repro::Claim> claims = impact::rows(res.paper, note, res.option);
+        for (const repro::Claim& c : impact::submodel_rows(res.submodel, res.paper, note)) claims.push_back(c);
+        for (const repro::Claim& c : impact::cost_rows(res.paper, res.option, res.submodel, dt, note))
+          claims.push_back(c);
+        repro::default_scope(claims, repro::Scope::kExtension);  // beyond the paper; the option rows say so themselves
+        repro::write_claims(repro::claims_path(d.out, kDriver), claims);
+        d.progress("done");
+        return 0;
+      });
 }

@@ -1,4 +1,4 @@
-// The impact study's data file, cells.csv.
+// The impact study's data file, cells.csv, declared as a column table.
 #include "repro/B_9_impact_study/output.hpp"
 
 #include <cmath>
@@ -7,38 +7,74 @@
 namespace impact {
 namespace {
 
-// A number as CSV text; empty if not finite (a stopped run's state is no data).
-std::string num(double x) { return std::isfinite(x) ? repro::format_full(x) : std::string(); }
-std::string yes(bool b) { return b ? "y" : "n"; }
+using Column = repro::Column<CellResult>;
+
+// A number cell; empty if not finite (a stopped run's state is no data).
+repro::Cell num(double x) { return repro::cell_if(std::isfinite(x), x); }
+// A column of a result's number; of a criterion's verdict as y / n.
+Column number(const char* name, double CellResult::*field) {
+  return {name, [field](const CellResult& r) { return num(r.*field); }};
+}
+Column verdict(const char* name, bool (*criterion)(const CellResult&)) {
+  return {name, [criterion](const CellResult& r) { return criterion(r) ? "y" : "n"; }};
+}
+Column yes(const char* name, bool CellResult::*field) {
+  return {name, [field](const CellResult& r) { return r.*field ? "y" : "n"; }};
+}
+
+std::vector<Column> columns() {
+  return {{"angle_deg", [](const CellResult& r) { return num(r.cell.angle_deg); }},
+          {"speed", [](const CellResult& r) { return num(r.cell.speed); }},
+          {"mu", [](const CellResult& r) { return num(r.cell.mu); }},
+          {"subdivision", [](const CellResult& r) { return subdivision_name(r.cell); }},
+          {"touch_impact", [](const CellResult& r) { return r.cell.coulomb ? "coulomb" : "paper"; }},
+          repro::field("outcome", &CellResult::outcome),
+          number("gap", &CellResult::gap),
+          repro::field("touches", &CellResult::touches),
+          repro::field("separations", &CellResult::separations),
+          repro::field("slips", &CellResult::slips),
+          number("max_depth", &CellResult::max_depth),
+          number("min_centre_dx", &CellResult::min_centre_dx),
+          yes("pass_through", &CellResult::pass_through),
+          yes("separated", &CellResult::separated),
+          {"t_sep", [](const CellResult& r) { return r.t_sep >= 0.0 ? num(r.t_sep) : repro::Cell(""); }},
+          number("ke0", &CellResult::ke0),
+          number("ke_growth", &CellResult::ke_growth),
+          number("total_growth", &CellResult::total_growth),
+          number("touch_loss", &CellResult::touch_loss),
+          number("touch_loss_eq5", &CellResult::touch_loss_eq5),
+          number("touch_loss_eq5_group", &CellResult::touch_loss_eq5_group),
+          number("total_loss", &CellResult::total_loss),
+          number("block_eq5", &CellResult::block_eq5),
+          number("restitution", &CellResult::e),
+          number("jn", &CellResult::jn),
+          number("jt", &CellResult::jt),
+          {"jt_over_jn",
+           [](const CellResult& r) { return std::isfinite(r.jn) && r.jn > 0.0 ? num(r.jt / r.jn) : repro::Cell(""); }},
+          number("jt_law", &CellResult::jt_law),
+          {"law_regime", [](const CellResult& r) { return r.law_sticks ? "stick" : "slide"; }},
+          number("omega_a", &CellResult::omega_a),
+          number("omega_b", &CellResult::omega_b),
+          number("slip0", &CellResult::slip0),
+          number("slip_end", &CellResult::slip_end),
+          verdict("ok_pass_through", no_pass_through),
+          verdict("ok_energy", energy_never_grows),
+          verdict("ok_separation", separates),
+          verdict("ok_touch_loss", touch_loss_within_eq5),
+          verdict("ok_total_loss", total_loss_within_block_eq5),
+          verdict("ok_coulomb", obeys_coulomb),
+          verdict("ok_rigid_law", matches_rigid_law),
+          number("wall_s", &CellResult::wall)};
+}
 
 }  // namespace
 
 CellsCsv::CellsCsv(const std::string& path, double dt)
-    : csv_(path,
-           {"angle_deg", "speed", "mu", "subdivision", "touch_impact", "outcome", "gap", "touches", "separations",
-            "slips", "max_depth", "min_centre_dx", "pass_through", "separated", "t_sep", "ke0", "ke_growth",
-            "total_growth", "touch_loss", "touch_loss_eq5", "touch_loss_eq5_group", "total_loss", "block_eq5",
-            "restitution", "jn", "jt", "jt_over_jn", "jt_law", "law_regime", "omega_a", "omega_b", "slip0",
-            "slip_end", "ok_pass_through", "ok_energy", "ok_separation", "ok_touch_loss", "ok_total_loss",
-            "ok_coulomb", "ok_rigid_law", "wall_s"},
-           {"Beyond Paper B: oblique impacts of two 1 m squares (Paper B material, 2 divisions, dt " +
-            repro::format_short(dt) + " s); angle from the contact normal; impulses on B, N s/m; energies J/m; "
-            "outcome 'ok' or the solver's stop message (a stopped run's state is reported where finite); touch_impact "
-            "'paper' (Eq. 4) or 'coulomb' (option TouchImpact::kCoulomb, beyond the paper: the same grid again)"}) {}
-
-void CellsCsv::row(const CellResult& r) {
-  const Cell& c = r.cell;
-  const bool has_jn = std::isfinite(r.jn) && r.jn > 0.0;
-  csv_.row(std::vector<std::string>{
-      num(c.angle_deg), num(c.speed), num(c.mu), subdivision_name(c), c.coulomb ? "coulomb" : "paper", r.outcome,
-      num(r.gap), std::to_string(r.touches), std::to_string(r.separations), std::to_string(r.slips),
-      num(r.max_depth), num(r.min_centre_dx), yes(r.pass_through), yes(r.separated),
-      r.t_sep >= 0.0 ? num(r.t_sep) : "", num(r.ke0), num(r.ke_growth), num(r.total_growth), num(r.touch_loss),
-      num(r.touch_loss_eq5), num(r.touch_loss_eq5_group), num(r.total_loss), num(r.block_eq5), num(r.e), num(r.jn),
-      num(r.jt), has_jn ? num(r.jt / r.jn) : "", num(r.jt_law), r.law_sticks ? "stick" : "slide", num(r.omega_a),
-      num(r.omega_b), num(r.slip0), num(r.slip_end), yes(no_pass_through(r)), yes(energy_never_grows(r)),
-      yes(separates(r)), yes(touch_loss_within_eq5(r)), yes(total_loss_within_block_eq5(r)), yes(obeys_coulomb(r)),
-      yes(matches_rigid_law(r)), num(r.wall)});
-}
+    : table_(path, columns(),
+             {"Beyond Paper B: oblique impacts of two 1 m squares (Paper B material, 2 divisions, dt " +
+              repro::format_short(dt) + " s); angle from the contact normal; impulses on B, N s/m; energies J/m; "
+              "outcome 'ok' or the solver's stop message (a stopped run's state is reported where finite); "
+              "touch_impact 'paper' (Eq. 4) or 'coulomb' (option TouchImpact::kCoulomb, beyond the paper: the same "
+              "grid again)"}) {}
 
 }  // namespace impact

@@ -6,17 +6,18 @@
 
 #include "repro/B_9_impact_study/impact_study.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/table.hpp"
 
 namespace impact {
 
 class CellsCsv {
  public:
   CellsCsv(const std::string& path, double dt);
-  void row(const CellResult& r);
-  void commit() { csv_.commit(); }
+  void row(const CellResult& r) { table_.row(r); }
+  void commit() { table_.commit(); }
 
  private:
-  repro::CsvWriter csv_;
+  repro::TableWriter<CellResult> table_;
 };
 
 }  // namespace impact

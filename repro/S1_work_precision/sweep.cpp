@@ -21,7 +21,6 @@ using repro::format_short;
 // Timed runs per dt: 3, more for short runs where timer noise and the load
 // of a shared machine weigh more (a median of 5 or 9).
 int repeats_for(double seconds) { return seconds < 0.05 ? 9 : seconds < 0.2 ? 5 : 3; }
-std::string num(double x) { return repro::format_full(x); }
 
 // What the wall_s/cpu_s columns are the median of.
 std::string timing_words(const SweepOptions& o) {
@@ -132,12 +131,10 @@ repro::stab::Timing timed_run(const dda::Scene& sc, double dt, int max_repeats) 
 std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::string& dir, References& references,
                                 const repro::Progress& progress, const SweepOptions& options) {
   const std::vector<CaseRuns> case_runs = run_cases(cases, options, progress);
-  repro::CsvWriter runs(dir + "/runs.csv",
-                        {"scene", "option", "measure", "dt", "dt_over_crit_start", "dt_over_crit_max", "wall_s",
-                         "cpu_s", "error", "local_order", "status"},
-                        {"S1 work precision: error (relative, or m where the measure says so) against the median "
-                         "wall time (steady_clock) and CPU time of " + timing_words(options) +
-                         "; empty error: the run stopped (status says why)"});
+  repro::TableWriter<RunRow> runs(dir + "/runs.csv", kRunColumns,
+                                  {"S1 work precision: error (relative, or m where the measure says so) against the "
+                                   "median wall time (steady_clock) and CPU time of " + timing_words(options) +
+                                   "; empty error: the run stopped (status says why)"});
   std::vector<CurveSummary> curves;
   for (std::size_t ci = 0; ci < cases.size(); ++ci) {
     const Case& c = cases[ci];
@@ -191,11 +188,7 @@ std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::strin
         double local = std::numeric_limits<double>::quiet_NaN();
         if (k > 0 && err[m][k] > floors[m] && err[m][k - 1] > floors[m])
           local = std::log(err[m][k] / err[m][k - 1]) / std::log(c.dts[k] / c.dts[k - 1]);
-        runs.row(std::vector<std::string>{
-            c.scene, c.option, names[m], num(c.dts[k]), num(r.ratio0), r.ok ? num(r.ratio_max) : "",
-            r.ok ? num(times[k].wall) : "", r.ok ? num(times[k].cpu) : "", r.ok ? num(err[m][k]) : "",
-            std::isfinite(local) ? num(local) : "",
-            r.ok ? "ok" : "stopped: " + r.message});
+        runs.row({c, names[m], c.dts[k], r, times[k], err[m][k], local});
         if (std::fabs(c.dts[k] - c.paper_dt) < 1e-12 * c.paper_dt) {
           cs.error_at_paper = r.ok ? err[m][k] : -1.0;
           cs.wall_at_paper = r.ok ? times[k].wall : -1.0;
@@ -213,21 +206,7 @@ std::vector<CurveSummary> sweep(const std::vector<Case>& cases, const std::strin
   }
   runs.commit();
 
-  repro::CsvWriter orders(dir + "/orders.csv",
-                          {"scene", "option", "measure", "reference", "order", "fit_points", "fit_dt_lo", "fit_dt_hi",
-                           "order_all_stable",
-                           "error_at_paper_dt", "wall_at_paper_dt", "cpu_at_paper_dt", "paper_dt_over_crit",
-                           "largest_stable_dt_over_crit", "note"});
-  for (const CurveSummary& cs : curves)
-    orders.row(std::vector<std::string>{
-        cs.scene, cs.option, cs.measure, cs.reference, cs.order.valid() ? num(cs.order.p) : "",
-        std::to_string(cs.order.used), cs.order.valid() ? num(cs.order.dt_lo) : "",
-        cs.order.valid() ? num(cs.order.dt_hi) : "", cs.order_all.valid() ? num(cs.order_all.p) : "",
-        cs.error_at_paper >= 0.0 ? num(cs.error_at_paper) : "",
-        cs.wall_at_paper >= 0.0 ? num(cs.wall_at_paper) : "", cs.cpu_at_paper >= 0.0 ? num(cs.cpu_at_paper) : "",
-        num(cs.ratio_at_paper), num(cs.largest_stable_ratio),
-        cs.order.note});
-  orders.commit();
+  repro::write_table(dir + "/orders.csv", kOrderColumns, curves);
   return curves;
 }
 

@@ -61,30 +61,31 @@
 
 #include "repro/S1_work_precision/work_precision.hpp"
 #include "repro/common/common.hpp"
-#include "repro/common/options.hpp"
+#include "repro/common/driver.hpp"
 
 int main(int argc, char** argv) {
-  repro::check_command_line(
-      argc, argv, "Work-precision: error against run time for every scene with a reference.",
+  return repro::driver_main(
+      argc, argv,
+      {"work_precision", "S1 work precision", "Work-precision: error against run time for every scene with a reference."},
       {{"--timing-repeats", "N", "timed runs per dt at most (default 9: 3 to 9 by run length; the errors and "
                                  "verdicts do not depend on it)", true},
-       {"--jobs", "N", "cases run at once, one thread each (default 1; more makes the timings share cores)", true}});
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("S1 work precision");
-  const std::vector<s1::Case> cases = s1::all_cases();
-  s1::SweepOptions options;
-  options.max_repeats = static_cast<int>(repro::option_int(argc, argv, "--timing-repeats", options.max_repeats));
-  options.jobs = static_cast<int>(repro::option_int(argc, argv, "--jobs", options.jobs));
-  if (options.max_repeats < 1 || options.jobs < 1) {
-    std::fprintf(stderr, "work_precision: --timing-repeats and --jobs need a whole number of at least 1\n");
-    return 2;
-  }
-  s1::References references;
-  const std::vector<s1::CurveSummary> curves =
-      s1::sweep(cases, out + "/data/work_precision", references, progress, options);
-  std::vector<repro::Claim> claims = s1::claim_rows(curves, references);
-  repro::default_scope(claims, repro::Scope::kSuite);  // integrator orders and work-precision: the suite's own
-  repro::write_claims(repro::claims_path(out, "S1_work_precision"), claims);
-  progress("done");
-  return 0;
+       {"--jobs", "N", "cases run at once, one thread each (default 1; more makes the timings share cores)", true}},
+      [](const repro::Driver& d) {
+        const std::vector<s1::Case> cases = s1::all_cases();
+        s1::SweepOptions options;
+        options.max_repeats = d.whole("--timing-repeats", options.max_repeats);
+        options.jobs = d.whole("--jobs", options.jobs);
+        if (options.max_repeats < 1 || options.jobs < 1) {
+          std::fprintf(stderr, "work_precision: --timing-repeats and --jobs need a whole number of at least 1\n");
+          return 2;
+        }
+        s1::References references;
+        const std::vector<s1::CurveSummary> curves =
+            s1::sweep(cases, d.out + "/data/work_precision", references, d.progress, options);
+        std::vector<repro::Claim> claims = s1::claim_rows(curves, references);
+        repro::default_scope(claims, repro::Scope::kSuite);  // integrator orders and work-precision: the suite's own
+        repro::write_claims(repro::claims_path(d.out, "S1_work_precision"), claims);
+        d.progress("done");
+        return 0;
+      });
 }

@@ -17,6 +17,7 @@
 #include "repro/S_common/stability.hpp"
 #include "repro/common/claims.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/table.hpp"
 
 namespace s1 {
 
@@ -102,6 +103,19 @@ struct CurveSummary {
   double max_error = 0.0;             // over every dt that ran through
   std::string first_failure;          // message of the smallest dt that stopped
 };
+
+// The data files' columns (tables.cpp): runs.csv, one row per measure of a
+// case at one dt; orders.csv, one row per curve.
+struct RunRow {
+  const Case& c;
+  const std::string& measure;
+  double dt;
+  const RunOut& r;
+  const repro::stab::Timing& t;
+  double error, local;  // local: the order from the previous dt (NaN: none)
+};
+extern const std::vector<repro::Column<RunRow>> kRunColumns;
+extern const std::vector<repro::Column<CurveSummary>> kOrderColumns;
 
 // Converged trajectories by "scene | option" (reference-run samples).
 using References = std::vector<std::pair<std::string, std::vector<std::vector<double>>>>;

@@ -41,6 +41,7 @@
 #include "repro/S2_stability_maps/studies.hpp"
 #include "repro/S_common/stability.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/driver.hpp"
 
 namespace {
 using repro::format_short;
@@ -113,24 +114,23 @@ std::string map_rows(const MapScene& m, const MapSummary& s, std::vector<repro::
 }  // namespace
 
 int main(int argc, char** argv) {
-  repro::check_command_line(argc, argv, "Stability maps and a check of the critical time step.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("S2 stability maps");
-  const std::string dir = out + "/data/stability_maps";
-  std::vector<repro::Claim> claims;
+  return repro::driver_main(
+      argc, argv, {"stability_maps", "S2 stability maps", "Stability maps and a check of the critical time step."}, {},
+      [](const repro::Driver& d) {
+        const std::string dir = d.out + "/data/stability_maps";
+        std::vector<repro::Claim> claims;
 
-  // 1. dt_crit check: resting contacts, linearised vs empirical vs the solver.
-  dt_crit_rows(dt_crit_check(dir), claims);
-  progress("dt_crit check done");
+        // 1. dt_crit check: resting contacts, linearised vs empirical vs the solver.
+        dt_crit_rows(dt_crit_check(dir), claims);
+        d.progress("dt_crit check done");
 
-  // 2. Maps: the two squares, the bouncing block with each H rule.
-  for (const MapScene& m : {two_squares_map(), bouncing_map(dda::HRule::kMinMaxEdge),
-                            bouncing_map(dda::HRule::kInscribedRadius)}) {
-    const std::string summary = map_rows(m, map_study(m, dir), claims);
-    progress(m.title + ": " + summary);
-  }
-  repro::default_scope(claims, repro::Scope::kSuite);  // the suite's own stability study, every row
-  repro::write_claims(repro::claims_path(out, "S2_stability_maps"), claims);
-  progress("done");
-  return 0;
+        // 2. Maps: the two squares, the bouncing block with each H rule.
+        for (const MapScene& m : {two_squares_map(), bouncing_map(dda::HRule::kMinMaxEdge),
+                                  bouncing_map(dda::HRule::kInscribedRadius)})
+          d.progress(m.title + ": " + map_rows(m, map_study(m, dir), claims));
+        repro::default_scope(claims, repro::Scope::kSuite);  // the suite's own stability study, every row
+        repro::write_claims(repro::claims_path(d.out, "S2_stability_maps"), claims);
+        d.progress("done");
+        return 0;
+      });
 }

@@ -47,91 +47,130 @@
 
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/driver.hpp"
+#include "repro/common/table.hpp"
 
 using namespace s3;
 
-int main(int argc, char** argv) {
-  repro::check_command_line(argc, argv, "Extreme cases at the paper's dt and at 0.5 x the predicted critical step.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("S3 extreme cases");
-  const std::string dir = out + "/data/extreme_cases";
-  std::vector<repro::Claim> claims;
-  repro::CsvWriter table(
-      dir + "/table.csv",
-      {"case", "parameter", "dt_setting", "dt", "dt_over_crit_start", "dt_over_crit_max", "class", "momentum_error",
-       "energy_error", "vx_A", "vx_B", "vx_A_expected", "vx_B_expected", "velocity_error", "deepest_overlap",
-       "t_deep_penetration", "t_softening", "t_wrong_way_force", "t_centroids_swapped", "message"},
+namespace {
+
+// One row of table.csv: a case run at one dt setting.
+struct Row {
+  const Extreme& e;
+  std::string setting;
+  const Outcome& o;
+};
+using Column = repro::Column<Row>;
+Column outcome(const char* name, double Outcome::*field) {
+  return {name, [field](const Row& r) { return r.o.*field; }};
+}
+// A value of a run that ended normally (empty after a guard stop).
+Column finished(const char* name, double Outcome::*field) {
+  return {name, [field](const Row& r) { return repro::cell_if(r.o.message.empty(), r.o.*field); }};
+}
+// A time, -1 if it never happened.
+Column when(const char* name, double Outcome::*field) {
+  return {name, [field](const Row& r) { return r.o.*field >= 0.0 ? r.o.*field : -1.0; }};
+}
+const std::vector<Column> kColumns = {
+    {"case", [](const Row& r) { return r.e.name; }},
+    {"parameter", [](const Row& r) { return r.e.parameter; }},
+    {"dt_setting", [](const Row& r) { return r.setting; }},
+    outcome("dt", &Outcome::dt),
+    outcome("dt_over_crit_start", &Outcome::ratio0),
+    outcome("dt_over_crit_max", &Outcome::ratio_max),
+    {"class", [](const Row& r) { return r.o.class_name(); }},
+    outcome("momentum_error", &Outcome::momentum_error),
+    finished("energy_error", &Outcome::energy_error),
+    finished("vx_A", &Outcome::va),
+    finished("vx_B", &Outcome::vb),
+    {"vx_A_expected", [](const Row& r) { return r.e.va_expected; }},
+    {"vx_B_expected", [](const Row& r) { return r.e.vb_expected; }},
+    finished("velocity_error", &Outcome::velocity_error),
+    outcome("deepest_overlap", &Outcome::overlap),
+    when("t_deep_penetration", &Outcome::t_deep),
+    when("t_softening", &Outcome::t_soft),
+    when("t_wrong_way_force", &Outcome::t_wrong),
+    when("t_centroids_swapped", &Outcome::t_swap),
+    {"message", [](const Row& r) { return r.o.message; }}};
+
+// What a row's run measured, in words.
+std::string measured(const Extreme& e, const Outcome& o) {
+  std::string m = std::string(o.class_name()) + " at dt = " + format_short(o.dt, 3) + " s (dt/dt_crit " +
+                  format_short(o.ratio0, 3) + " at start, max " + format_short(o.ratio_max, 3) + ")";
+  if (o.message.empty())
+    m += "; v_A = " + format_short(o.va, 5) + " (expected " + format_short(e.va_expected, 5) + "), v_B = " +
+         format_short(o.vb, 5) + " (expected " + format_short(e.vb_expected, 5) + ") m/s; momentum error " +
+         format_short(o.momentum_error, 3) + ", energy error " + format_short(o.energy_error, 3) +
+         "; deepest overlap " + format_short(o.overlap, 3) + " of the smaller block";
+  else
+    m += "; stopped: " + o.message;
+  if (o.t_deep >= 0.0) m += "; deep penetration detected at t = " + format_short(o.t_deep, 4) + " s";
+  if (o.t_soft >= 0.0) m += "; force falls while the overlap grows from t = " + format_short(o.t_soft, 4) + " s";
+  if (o.t_wrong >= 0.0) m += "; wrong-way force at t = " + format_short(o.t_wrong, 4) + " s";
+  if (o.t_swap >= 0.0) m += "; centroids swapped at t = " + format_short(o.t_swap, 4) + " s";
+  return m;
+}
+
+// 1-4. Every case at the paper's dt and, where the solver stops there or
+// dt exceeds dt_crit, at 0.5 x the predicted dt_crit: table.csv, one row each.
+void case_rows(const std::string& dir, const repro::Progress& progress, std::vector<repro::Claim>& claims) {
+  repro::TableWriter<Row> table(
+      dir + "/table.csv", kColumns,
       {"Extreme cases (Sect. 4.1 material, kn 10 MPa unless stated). Energy error after the run, relative to the "
        "initial kinetic energy; velocity error relative to the impact speed; deepest overlap = thickness of the "
        "intersection polygon / the smaller block's inscribed diameter; times -1: never; softening: the overlap "
        "grows while the normal force falls"});
-  auto opt = [](double t) { return t >= 0.0 ? num(t) : std::string("-1"); };
   for (const Extreme& e : cases()) {
     std::vector<std::pair<std::string, Outcome>> runs{{"paper dt 1e-4 s", run(e, 0.0)}};
     if (runs.back().second.cls == RunClass::kBlowUp || runs.back().second.ratio0 > 1.0)
       runs.push_back({"0.5 x predicted dt_crit", run(e, 0.5)});
     for (const auto& [setting, o] : runs) {
-      table.row(std::vector<std::string>{
-          e.name, e.parameter, setting, num(o.dt), num(o.ratio0), num(o.ratio_max), o.class_name(),
-          num(o.momentum_error), o.message.empty() ? num(o.energy_error) : "", o.message.empty() ? num(o.va) : "",
-          o.message.empty() ? num(o.vb) : "", num(e.va_expected), num(e.vb_expected),
-          o.message.empty() ? num(o.velocity_error) : "", num(o.overlap), opt(o.t_deep), opt(o.t_soft), opt(o.t_wrong),
-          opt(o.t_swap), o.message});
-      std::string measured = std::string(o.class_name()) + " at dt = " + format_short(o.dt, 3) +
-                             " s (dt/dt_crit " + format_short(o.ratio0, 3) + " at start, max " +
-                             format_short(o.ratio_max, 3) + ")";
-      if (o.message.empty())
-        measured += "; v_A = " + format_short(o.va, 5) + " (expected " + format_short(e.va_expected, 5) +
-                    "), v_B = " + format_short(o.vb, 5) + " (expected " + format_short(e.vb_expected, 5) +
-                    ") m/s; momentum error " + format_short(o.momentum_error, 3) + ", energy error " +
-                    format_short(o.energy_error, 3) + "; deepest overlap " + format_short(o.overlap, 3) +
-                    " of the smaller block";
-      else
-        measured += "; stopped: " + o.message;
-      if (o.t_deep >= 0.0) measured += "; deep penetration detected at t = " + format_short(o.t_deep, 4) + " s";
-      if (o.t_soft >= 0.0)
-        measured += "; force falls while the overlap grows from t = " + format_short(o.t_soft, 4) + " s";
-      if (o.t_wrong >= 0.0) measured += "; wrong-way force at t = " + format_short(o.t_wrong, 4) + " s";
-      if (o.t_swap >= 0.0) measured += "; centroids swapped at t = " + format_short(o.t_swap, 4) + " s";
+      table.row({e, setting, o});
       // Expectation per case: s3::row_verdict.
       const auto [pass, tolerance] = row_verdict(e, o);
       claims.push_back({"S3 / " + e.name, e.parameter + " (" + setting + ")", "extreme case (not in the paper)",
-                        measured, tolerance, pass});
+                        measured(e, o), tolerance, pass});
       claims.back().control = kRowControl;
     }
     progress(e.name + ", " + e.parameter + ": done");
   }
   table.commit();
+}
 
-  // ---- 5. guards: a too-large dt is stopped with a full message; the rows
-  // written before the stop stay valid.
-  {
-    const dda::Scene s = guard_scene(3.0);
-    dda::Simulation sim(s);
-    repro::CsvWriter series(dir + "/guard_series.csv", {"time", "x_A", "x_B", "vx_A", "vx_B", "total_energy"},
-                            {"two squares, kn 1e10 Pa, dt = 3 x predicted dt_crit: the rows before the guard stop"});
-    std::string message;
-    try {
-      while (sim.time() < s.duration) {
-        sim.step();
-        series.row({sim.time(), sim.centroid(0).x, sim.centroid(1).x, sim.velocity(0)[0], sim.velocity(1)[0],
-                    sim.energy().total()});
-      }
-    } catch (const dda::SimulationError& err) {
-      message = err.what();
-    }
-    series.commit();  // every row is finite: CsvWriter refuses NaN and the guard stops first
-    claims.push_back({"S3 / guards", "a run at 3 x dt_crit stops with a message naming step, time, block, pair, "
-                                     "what was exceeded and dt/dt_crit; the rows written before it are kept",
-                      "not in the papers: fail loudly, never write NaN results as data",
-                      (message.empty() ? std::string("no stop") : "message: " + message) + "; " +
-                          std::to_string(series.rows()) + " finite rows kept",
-                      "all six items in the message, >= 1 row kept",
-                      guard_stop_complete(message, static_cast<long>(series.rows()))});
-    claims.back().control = repro::control_test(kControlGuardStop);
-  }
-  repro::default_scope(claims, repro::Scope::kSuite);  // the suite's guards, every row
-  repro::write_claims(repro::claims_path(out, "S3_extreme_cases"), claims);
-  progress("done");
-  return 0;
+// 5. Guards: a too-large dt is stopped with a full message; the rows
+// written before the stop stay valid (guard_series.csv).
+repro::Claim guard_row(const std::string& dir) {
+  const dda::Scene s = guard_scene(3.0);
+  dda::Simulation sim(s);
+  const Series series =
+      guarded_series(sim, s.duration, dir + "/guard_series.csv",
+                     "two squares, kn 1e10 Pa, dt = 3 x predicted dt_crit: the rows before the guard stop");
+  repro::Claim row{"S3 / guards", "a run at 3 x dt_crit stops with a message naming step, time, block, pair, "
+                                  "what was exceeded and dt/dt_crit; the rows written before it are kept",
+                   "not in the papers: fail loudly, never write NaN results as data",
+                   (series.message.empty() ? std::string("no stop") : "message: " + series.message) + "; " +
+                       std::to_string(series.rows) + " finite rows kept",
+                   "all six items in the message, >= 1 row kept",
+                   guard_stop_complete(series.message, static_cast<long>(series.rows))};
+  row.control = repro::control_test(kControlGuardStop);
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return repro::driver_main(
+      argc, argv,
+      {"extreme_cases", "S3 extreme cases", "Extreme cases at the paper's dt and at 0.5 x the predicted critical step."},
+      {}, [](const repro::Driver& d) {
+        const std::string dir = d.out + "/data/extreme_cases";
+        std::vector<repro::Claim> claims;
+        case_rows(dir, d.progress, claims);
+        claims.push_back(guard_row(dir));
+        repro::default_scope(claims, repro::Scope::kSuite);  // the suite's guards, every row
+        repro::write_claims(repro::claims_path(d.out, "S3_extreme_cases"), claims);
+        d.progress("done");
+        return 0;
+      });
 }

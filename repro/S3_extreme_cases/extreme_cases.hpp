@@ -74,4 +74,15 @@ dda::Scene guard_scene(double dt_fraction);
 bool guard_stop_complete(const std::string& message, long rows_kept);
 inline constexpr const char* kControlGuardStop = "S3 guard stop: FAIL below the critical step and on a bare message";
 
+// A guarded run's series: `sim` stepped to `duration`, after every step one
+// row (time, x_A, x_B, vx_A, vx_B, total_energy) written to `path`. A guard
+// stop (dda::SimulationError) ends the run; the rows written so far are
+// committed either way, all finite (the table refuses NaN and the guard
+// stops before a non-finite state is reported).
+struct Series {
+  std::string message;  // the guard's stop message; empty: the run finished
+  std::size_t rows = 0;
+};
+Series guarded_series(dda::Simulation& sim, double duration, const std::string& path, const std::string& comment);
+
 }  // namespace s3

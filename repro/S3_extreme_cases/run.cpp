@@ -5,6 +5,7 @@
 #include "dda/overlap.hpp"
 #include "dda/potential.hpp"
 #include "repro/S3_extreme_cases/extreme_cases.hpp"
+#include "repro/common/table.hpp"
 
 namespace s3 {
 namespace {
@@ -74,6 +75,30 @@ Outcome run(const Extreme& e, double dt_fraction) {
     o.cls = RunClass::kEnergyGrowth;
   }
   return o;
+}
+
+Series guarded_series(dda::Simulation& sim, double duration, const std::string& path, const std::string& comment) {
+  using S = dda::Simulation;
+  repro::TableWriter<S> table(path,
+                              {{"time", [](const S& m) { return m.time(); }},
+                               {"x_A", [](const S& m) { return m.centroid(0).x; }},
+                               {"x_B", [](const S& m) { return m.centroid(1).x; }},
+                               {"vx_A", [](const S& m) { return m.velocity(0)[0]; }},
+                               {"vx_B", [](const S& m) { return m.velocity(1)[0]; }},
+                               {"total_energy", [](const S& m) { return m.energy().total(); }}},
+                              {comment});
+  Series series;
+  try {
+    while (sim.time() < duration) {
+      sim.step();
+      table.row(sim);
+    }
+  } catch (const dda::SimulationError& err) {
+    series.message = err.what();
+  }
+  table.commit();
+  series.rows = table.row_count();
+  return series;
 }
 
 }  // namespace s3

@@ -227,13 +227,10 @@ Linearized linearized_critical_step(const dda::Simulation& sim) {
 }
 
 const char* class_name(RunClass c) {
-  switch (c) {
-    case RunClass::kStable: return "stable";
-    case RunClass::kEnergyGrowth: return "energy growth > 1%";
-    case RunClass::kFlipThrough: return "flip-through";
-    case RunClass::kBlowUp: return "blow-up";
-  }
-  return "?";
+  // In RunClass's order.
+  static const char* const kNames[] = {"stable", "energy growth > 1%", "flip-through", "blow-up"};
+  const auto i = static_cast<std::size_t>(c);
+  return i < sizeof(kNames) / sizeof(kNames[0]) ? kNames[i] : "?";
 }
 
 bool deep_penetration(const dda::Polygon& a, const dda::Polygon& b) {

@@ -36,11 +36,21 @@ struct Cell {
   bool is_text = false;
 };
 
+// A number cell where the row has the value, an empty cell where it has
+// none (a stopped run's fields are no data): present ? value : "".
+inline Cell cell_if(bool present, double value) { return present ? Cell(value) : Cell(""); }
+
 template <class Row>
 struct Column {
   std::string name;
   std::function<Cell(const Row&)> cell;
 };
+
+// The column of a member of the row: field("dt", &Run::dt) reads run.dt.
+template <class Row, class T>
+Column<Row> field(std::string name, T Row::*member) {
+  return {std::move(name), [member](const Row& r) { return Cell(r.*member); }};
+}
 
 template <class Row>
 std::vector<std::string> column_names(const std::vector<Column<Row>>& columns) {

@@ -270,6 +270,29 @@ TEST_CASE("a column table writes the columns' names and each row's cells", "[tab
   CHECK(slurp(numbers) == slurp(scratch("table/same.csv")));
 }
 
+TEST_CASE("cell_if leaves the cell empty where the row has no value", "[table]") {
+  struct Row {
+    bool ok;
+    double x;
+  };
+  const std::string path = scratch("table/optional.csv");
+  repro::write_table<Row>(path, {{"x", [](const Row& r) { return repro::cell_if(r.ok, r.x); }}},
+                          std::vector<Row>{{true, 0.25}, {false, std::nan("")}, {true, -3.0}});
+  CHECK(slurp(path) == "x\n0.25\n\n-3\n");
+}
+
+TEST_CASE("field reads a member of the row as its cell", "[table]") {
+  struct Row {
+    std::string name;
+    double x;
+    long n;
+  };
+  const std::string path = scratch("table/fields.csv");
+  repro::write_table<Row>(path, {repro::field("name", &Row::name), repro::field("x", &Row::x), repro::field("n", &Row::n)},
+                          std::vector<Row>{{"a", 0.5, 7}, {"b", -0.125, 0}});
+  CHECK(slurp(path) == "name,x,n\na,0.5,7\nb,-0.125,0\n");
+}
+
 TEST_CASE("a column table refuses a non-finite cell, naming its column, and writes nothing", "[table]") {
   struct Row {
     std::string name;
