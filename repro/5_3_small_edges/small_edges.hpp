@@ -40,20 +40,20 @@ struct Result {
 // the energy and the penetration at one moment of case `case_id`.
 struct Trace {
   int case_id;
-  double time;
-  Vec2 vertex, centroid;
+  double time, vertex_x, vertex_y, centroid_x, centroid_y;
   double total_energy, overlap_thickness, vertex_depth;
 };
 inline std::vector<repro::Column<Trace>> trace_columns() {
-  return {{"case", [](const Trace& t) { return t.case_id; }},
-          {"time", [](const Trace& t) { return t.time; }},
-          {"vertex_x", [](const Trace& t) { return t.vertex.x; }},
-          {"vertex_y", [](const Trace& t) { return t.vertex.y; }},
-          {"centroid_x", [](const Trace& t) { return t.centroid.x; }},
-          {"centroid_y", [](const Trace& t) { return t.centroid.y; }},
-          {"total_energy", [](const Trace& t) { return t.total_energy; }},
-          {"overlap_thickness", [](const Trace& t) { return t.overlap_thickness; }},
-          {"vertex_depth", [](const Trace& t) { return t.vertex_depth; }}};
+  using repro::field;
+  return {field("case", &Trace::case_id),
+          field("time", &Trace::time),
+          field("vertex_x", &Trace::vertex_x),
+          field("vertex_y", &Trace::vertex_y),
+          field("centroid_x", &Trace::centroid_x),
+          field("centroid_y", &Trace::centroid_y),
+          field("total_energy", &Trace::total_energy),
+          field("overlap_thickness", &Trace::overlap_thickness),
+          field("vertex_depth", &Trace::vertex_depth)};
 }
 
 // One row of snapshots.csv: a snapshot row (repro::snapshot_columns) of case
@@ -84,7 +84,8 @@ inline Result run(const dda::paper::SmallEdgeImpact& si, int case_id, repro::Tab
     if (!traces || sim.step_count() % 5 != 0) return;
     const Vec2 v = sim.polygon(si.upper).vertex(si.contact_vertex);
     const dda::Energy e = sim.energy();
-    traces->row({case_id, sim.time(), v, sim.centroid(si.upper), e.total(),
+    const Vec2 c = sim.centroid(si.upper);
+    traces->row({case_id, sim.time(), v.x, v.y, c.x, c.y, e.total(),
                  dda::paper::overlap_thickness(sim.polygon(si.lower), sim.polygon(si.upper)),
                  dda::paper::vertex_depth(sim.polygon(si.lower), sim.polygon(si.upper))});
   };

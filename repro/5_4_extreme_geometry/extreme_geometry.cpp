@@ -97,15 +97,14 @@ std::vector<repro::Column<Runs>> table_columns() {
       {"dt_crit_strain", [](const Runs& r) { return r.paper.dt_strain; }},
       {"cause", [](const Runs& r) { return r.why.text; }},
       {"cause_brief", [](const Runs& r) { return r.why.brief; }}};
-  const std::vector<repro::Column<Outcome>> outcome = {
-      {"dt", [](const Outcome& o) { return o.dt; }},
-      {"clean", [](const Outcome& o) { return o.clean; }},
-      {"verdict", [](const Outcome& o) { return o.verdict; }},
-      {"energy_error", [](const Outcome& o) { return o.energy_error; }},
-      {"asymmetry", [](const Outcome& o) { return o.asymmetry; }},
-      {"overlap_thickness", [](const Outcome& o) { return o.thickness; }},
-      {"vertex_depth", [](const Outcome& o) { return o.depth; }},
-      {"seconds", [](const Outcome& o) { return o.seconds; }}};
+  const std::vector<repro::Column<Outcome>> outcome = {repro::field("dt", &Outcome::dt),
+                                                       repro::field("clean", &Outcome::clean),
+                                                       repro::field("verdict", &Outcome::verdict),
+                                                       repro::field("energy_error", &Outcome::energy_error),
+                                                       repro::field("asymmetry", &Outcome::asymmetry),
+                                                       repro::field("overlap_thickness", &Outcome::thickness),
+                                                       repro::field("vertex_depth", &Outcome::depth),
+                                                       repro::field("seconds", &Outcome::seconds)};
   const std::pair<const char*, Outcome Runs::*> runs[] = {
       {"paper", &Runs::paper}, {"d1", &Runs::d1}, {"d2", &Runs::d2}, {"d3", &Runs::d3}};
   for (const auto& [name, run] : runs)

@@ -55,16 +55,11 @@ struct Files {
   repro::FrameFiles frames;
   Files(const std::string& cdir, const std::string& note)
       : series(cdir + "/series.csv",
-               {{"time", [](const Sample& s) { return s.t; }},
-                {"front_x", [](const Sample& s) { return s.front_x; }},
-                {"front_cx", [](const Sample& s) { return s.front_cx; }},
-                {"mean_drop", [](const Sample& s) { return s.mean_drop; }},
-                {"max_travel", [](const Sample& s) { return s.max_travel; }},
-                {"runout_mass", [](const Sample& s) { return s.runout_mass; }},
-                {"E_kinetic", [](const Sample& s) { return s.kinetic; }},
-                {"E_gravity", [](const Sample& s) { return s.gravity; }},
-                {"E_total", [](const Sample& s) { return s.total; }},
-                {"dt_over_dt_crit", [](const Sample& s) { return s.dt_ratio; }}},
+               {repro::field("time", &Sample::t), repro::field("front_x", &Sample::front_x),
+                repro::field("front_cx", &Sample::front_cx), repro::field("mean_drop", &Sample::mean_drop),
+                repro::field("max_travel", &Sample::max_travel), repro::field("runout_mass", &Sample::runout_mass),
+                repro::field("E_kinetic", &Sample::kinetic), repro::field("E_gravity", &Sample::gravity),
+                repro::field("E_total", &Sample::total), repro::field("dt_over_dt_crit", &Sample::dt_ratio)},
                {note}),
         frames(cdir, note) {}
 };

@@ -87,13 +87,12 @@ struct SeriesRow {
 };
 std::vector<repro::Column<SeriesRow>> series_columns() {
   std::vector<repro::Column<SeriesRow>> columns = {{"time", [](const SeriesRow& r) { return r.time; }}};
-  const std::vector<repro::Column<SideState>> side = {
-      {"outward_rotation", [](const SideState& s) { return s.outward_rotation; }},
-      {"abs_rotation", [](const SideState& s) { return s.abs_rotation; }},
-      {"base_slip", [](const SideState& s) { return s.base_slip; }},
-      {"centroid_downdip", [](const SideState& s) { return s.centroid_downdip; }},
-      {"rotation_travel", [](const SideState& s) { return s.rotation_travel; }},
-      {"toppled_share", [](const SideState& s) { return s.toppled_share; }}};
+  const std::vector<repro::Column<SideState>> side = {repro::field("outward_rotation", &SideState::outward_rotation),
+                                                      repro::field("abs_rotation", &SideState::abs_rotation),
+                                                      repro::field("base_slip", &SideState::base_slip),
+                                                      repro::field("centroid_downdip", &SideState::centroid_downdip),
+                                                      repro::field("rotation_travel", &SideState::rotation_travel),
+                                                      repro::field("toppled_share", &SideState::toppled_share)};
   for (SideState SeriesRow::*which : {&SeriesRow::left, &SeriesRow::right})
     for (const repro::Column<SideState>& c : side)
       columns.push_back({(which == &SeriesRow::left ? "left_" : "right_") + c.name,
