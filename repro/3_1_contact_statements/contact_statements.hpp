@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dda/contact.hpp"
@@ -157,6 +158,17 @@ struct GradientSample {
   double error = 0.0;     // |f + grad E| / |grad E|
 };
 
+// A row of a statement checked under integration `rule`: the claim names the
+// integration, the key is the exact or the paper row's.
+inline repro::Claim integration_row(const char* section, const std::string& statement, dda::Integration rule,
+                                    std::string paper, std::string measured, std::string tolerance, bool pass,
+                                    const char* key_exact, const char* key_paper) {
+  const bool exact = rule == dda::Integration::kExactEnvelope;
+  const char* how = exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)";
+  return {section, statement + how, std::move(paper), std::move(measured), std::move(tolerance), pass,
+          repro::Kind::kCheck, exact ? key_exact : key_paper};
+}
+
 inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integration rule,
                                  Variant variant = Variant::kAsPublished, std::vector<GradientSample>* samples = nullptr) {
   constexpr double kStep = 1e-5;           // m, central-difference step
@@ -184,17 +196,15 @@ inline repro::Claim gradient_row(const std::vector<Pair>& pairs, dda::Integratio
     beyond += e > kTolerance;
     ++used;
   }
-  const bool exact = rule == dda::Integration::kExactEnvelope;
-  return {"3.2.1",
-          std::string("the normal force on CP is the negative gradient of the contact energy (Eqs. 10-11), ") +
-              (exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)"),
-          "'the integral of potential on an edge can be computed accurately piece by piece' (Sect. 3.2.3), for the "
-          "force of Eqs. 10-11",
-          std::to_string(used) + " random overlapping convex pairs (IP area >= 1e-3 m^2): largest |f + grad E| / "
-              "|grad E| " + repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 "
-              "(grad E: central difference of the exact contact energy, step 1e-5 m)",
-          "|f + grad E| / |grad E| < 1e-6 on every pair, at least 300 pairs", used >= 300 && beyond == 0,
-          repro::Kind::kCheck, exact ? kKeyGradientExact : kKeyGradientPaper};
+  return integration_row(
+      "3.2.1", "the normal force on CP is the negative gradient of the contact energy (Eqs. 10-11), ", rule,
+      "'the integral of potential on an edge can be computed accurately piece by piece' (Sect. 3.2.3), for the "
+      "force of Eqs. 10-11",
+      std::to_string(used) + " random overlapping convex pairs (IP area >= 1e-3 m^2): largest |f + grad E| / "
+          "|grad E| " + repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 "
+          "(grad E: central difference of the exact contact energy, step 1e-5 m)",
+      "|f + grad E| / |grad E| < 1e-6 on every pair, at least 300 pairs", used >= 300 && beyond == 0,
+      kKeyGradientExact, kKeyGradientPaper);
 }
 
 // Eq. 20: the moment about pg, -dE/dtheta for CP turned about pg by a
@@ -223,17 +233,15 @@ inline repro::Claim moment_row(const std::vector<Pair>& pairs, dda::Integration 
     beyond += e > kTolerance;
     ++used;
   }
-  const bool exact = rule == dda::Integration::kExactEnvelope;
-  return {"3.2.4",
-          std::string("the contact force acts on a line through pg: its moment about pg vanishes (Eq. 20), ") +
-              (exact ? "exact integration (not the paper's)" : "the paper's segmentation (Sect. 3.2.3)"),
-          "'the acting line lng along which the moment of total normal contact force is zero' (Sect. 3.2.4, Eq. 20); "
-          "pg lies on it",
-          std::to_string(used) + " random overlapping convex pairs: largest |M_pg| / (|f| sqrt(IP area)) " +
-              repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 (M_pg = -dE/dtheta "
-              "for CP turned about pg, central difference of the exact contact energy, step 1e-6 rad)",
-          "|M_pg| / (|f| sqrt(IP area)) < 1e-6 on every pair, at least 300 pairs", used >= 300 && beyond == 0,
-          repro::Kind::kCheck, exact ? kKeyMomentExact : kKeyMomentPaper};
+  return integration_row(
+      "3.2.4", "the contact force acts on a line through pg: its moment about pg vanishes (Eq. 20), ", rule,
+      "'the acting line lng along which the moment of total normal contact force is zero' (Sect. 3.2.4, Eq. 20); "
+      "pg lies on it",
+      std::to_string(used) + " random overlapping convex pairs: largest |M_pg| / (|f| sqrt(IP area)) " +
+          repro::format_short(worst, 3) + ", " + std::to_string(beyond) + " pairs beyond 1e-6 (M_pg = -dE/dtheta "
+          "for CP turned about pg, central difference of the exact contact energy, step 1e-6 rad)",
+      "|M_pg| / (|f| sqrt(IP area)) < 1e-6 on every pair, at least 300 pairs", used >= 300 && beyond == 0,
+      kKeyMomentExact, kKeyMomentPaper);
 }
 
 }  // namespace contact_statements

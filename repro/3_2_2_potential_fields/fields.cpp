@@ -32,23 +32,34 @@ Grid make_grid(const std::vector<Vec2>& pts) {
 void write_grid(const std::string& path, const Grid& g, std::vector<std::string> comments) {
   comments.push_back("grid nx=" + std::to_string(g.nx) + " ny=" + std::to_string(g.ny) + " spacing_m=" +
                      repro::format_full(g.h) + "; rows y-major (x varies fastest); phi in Pa, lengths in m");
-  repro::CsvWriter w(path, {"x", "y", "inside", "d_exit", "phi"}, comments);
+  struct Point {
+    int i, j;
+  };
+  const auto at = [&g](Point p) { return g.at(p.i, p.j); };
+  const auto k = [&g](Point p) { return g.idx(p.i, p.j); };
+  std::vector<Point> points;
   for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const Vec2 p = g.at(i, j);
-      const std::size_t k = g.idx(i, j);
-      w.row({p.x, p.y, g.inside[k] ? 1.0 : 0.0, g.d_exit[k], g.phi[k]});
-    }
-  w.commit();
+    for (int i = 0; i < g.nx; ++i) points.push_back({i, j});
+  repro::write_table<Point>(path,
+                            {{"x", [&](Point p) { return at(p).x; }},
+                             {"y", [&](Point p) { return at(p).y; }},
+                             {"inside", [&](Point p) { return g.inside[k(p)] != 0; }},
+                             {"d_exit", [&](Point p) { return g.d_exit[k(p)]; }},
+                             {"phi", [&](Point p) { return g.phi[k(p)]; }}},
+                            points, comments);
 }
 
 void write_outline(const std::string& path, const std::vector<Vec2>& pts, const std::vector<std::string>& comments) {
-  repro::CsvWriter w(path, {"vertex", "x", "y", "edge_length"}, comments);
-  for (std::size_t i = 0; i < pts.size(); ++i)
-    w.row({static_cast<double>(i), pts[i].x, pts[i].y, dda::distance(pts[i], pts[(i + 1) % pts.size()])});
-  w.commit();
+  std::vector<std::size_t> vertices(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) vertices[i] = i;
+  repro::write_table<std::size_t>(
+      path,
+      {{"vertex", [](std::size_t i) { return i; }},
+       {"x", [&pts](std::size_t i) { return pts[i].x; }},
+       {"y", [&pts](std::size_t i) { return pts[i].y; }},
+       {"edge_length", [&pts](std::size_t i) { return dda::distance(pts[i], pts[(i + 1) % pts.size()]); }}},
+      vertices, comments);
 }
-
 
 // Max |phi| at points sampled along every edge (vertices included).
 double boundary_max_abs(const std::vector<Vec2>& pts, const Field& phi) {

@@ -30,7 +30,6 @@
 // Output: data/previous_potential/fig04a_grid.csv, outline.csv,
 // subpolygons.csv; claims/3_2_2_previous_potential.csv.
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -44,37 +43,51 @@ using namespace previous_potential;
 // The Fig. 4b polygon is potential_fields::small_edge_polygon (shared).
 using potential_fields::small_edge_polygon;
 
-int main(int argc, char** argv) try {
-  repro::check_command_line(argc, argv, "Paper A Sect. 3.2.2 (Fig. 4a): the previous sub-polygon potential beside the shortest-exit one.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("previous_potential");
-  const std::string dir = out + "/data/previous_potential";
-  const std::vector<Vec2> pts = small_edge_polygon();
-  const dda::Polygon poly = dda::make_polygon(pts.data(), static_cast<int>(pts.size()));
-  const SubPolygons sp = sub_polygons(poly);
-  const double r_in = dda::inscribed_circle(poly).radius;
-  progress("d* = " + format_short(sp.depth, 4) + " m, inscribed radius " + format_short(r_in, 4) + " m");
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "previous_potential", "previous_potential",
+    "Paper A Sect. 3.2.2 (Fig. 4a): the previous sub-polygon potential beside the shortest-exit one."};
 
+namespace {
+
+// Fig. 4a's files: the grid scan, the outline and the sub-polygons.
+FieldScan write_figure(const std::string& dir, const std::vector<Vec2>& pts, const dda::Polygon& poly,
+                       const SubPolygons& sp) {
   const std::vector<std::string> notes = {
       "Paper A Sect. 3.2.2 Fig. 4a: 'previous sub-polygon' potential, RECONSTRUCTED from the paper's words (sub-polygon "
       "of an edge = edge + end bisectors + common inward offset depth d* where the first edge vanishes; undefined "
       "deeper); kn = 1 Pa, H = 1 m",
       "RECONSTRUCTED polygon (same as Fig. 4b of the potential_fields driver); d* = " + repro::format_full(sp.depth) +
           " m"};
-  repro::CsvWriter grid(dir + "/fig04a_grid.csv",
-                        {"x", "y", "inside", "defined", "subpolygon", "phi_previous", "phi_current"}, notes);
+  repro::TableWriter<GridPoint> grid(dir + "/fig04a_grid.csv", grid_columns(), notes);
   const FieldScan field = scan_field(poly, sp, &grid);
   grid.commit();
-  repro::CsvWriter outline(dir + "/outline.csv", {"vertex", "x", "y", "edge_length"}, notes);
-  for (int k = 0; k < poly.count; ++k)
-    outline.row({static_cast<double>(k), poly.vertex(k).x, poly.vertex(k).y, dda::length(poly.edge(k))});
-  outline.commit();
-  repro::CsvWriter subs(dir + "/subpolygons.csv", {"subpolygon", "vertex", "x", "y"}, notes);
+  potential_fields::write_outline(dir + "/outline.csv", pts, notes);
+  struct SubVertex {
+    std::size_t sub, vertex;
+  };
+  std::vector<SubVertex> vertices;
   for (std::size_t k = 0; k < sp.sub.size(); ++k)
-    for (std::size_t v = 0; v < sp.sub[k].size(); ++v)
-      subs.row({static_cast<double>(k), static_cast<double>(v), sp.sub[k][v].x, sp.sub[k][v].y});
-  subs.commit();
-  progress("undefined fraction " + format_short(field.undefined(), 3));
+    for (std::size_t v = 0; v < sp.sub[k].size(); ++v) vertices.push_back({k, v});
+  const auto at = [&sp](const SubVertex& s) { return sp.sub[s.sub][s.vertex]; };
+  repro::write_table<SubVertex>(dir + "/subpolygons.csv",
+                                {{"subpolygon", [](const SubVertex& s) { return s.sub; }},
+                                 {"vertex", [](const SubVertex& s) { return s.vertex; }},
+                                 {"x", [&at](const SubVertex& s) { return at(s).x; }},
+                                 {"y", [&at](const SubVertex& s) { return at(s).y; }}},
+                                vertices, notes);
+  return field;
+}
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::vector<Vec2> pts = small_edge_polygon();
+  const dda::Polygon poly = dda::make_polygon(pts.data(), static_cast<int>(pts.size()));
+  const SubPolygons sp = sub_polygons(poly);
+  const double r_in = dda::inscribed_circle(poly).radius;
+  d.progress("d* = " + format_short(sp.depth, 4) + " m, inscribed radius " + format_short(r_in, 4) + " m");
+  const FieldScan field = write_figure(d.out + "/data/previous_potential", pts, poly, sp);
+  d.progress("undefined fraction " + format_short(field.undefined(), 3));
 
   // A regular hexagon as the control: d* = inscribed radius, nothing undefined.
   const double hex_ratio = depth_ratio(regular_hexagon());
@@ -82,12 +95,13 @@ int main(int argc, char** argv) try {
   // Sect. 5.3: does the impact on the 0.01 m edge reach deeper than d*?
   const Impact impact = impact_depth(dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge));
 
-  const std::vector<repro::Claim> claims = {undefined_row(field, sp.depth, r_in), hexagon_row(hex_ratio),
-                                            mismatch_row(field), impact_row(impact)};
-  repro::write_claims(repro::claims_path(out, "3_2_2_previous_potential"), claims);
-  progress("done");
+  repro::write_claims(
+      repro::claims_path(d.out, "3_2_2_previous_potential"),
+      {undefined_row(field, sp.depth, r_in), hexagon_row(hex_ratio), mismatch_row(field), impact_row(impact)});
+  d.progress("done");
   return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "previous_potential: error: %s\n", e.what());
-  return 1;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

@@ -15,7 +15,7 @@
 #include "dda/robustness_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 
 namespace previous_potential {
 
@@ -88,10 +88,28 @@ struct FieldScan {
   }
 };
 
+// One grid point of fig04a_grid.csv: inside the polygon or not, the
+// sub-polygon holding it (-1: none, the previous potential undefined) and
+// both potentials.
+struct GridPoint {
+  Vec2 p;
+  bool inside;
+  int owner;
+  double phi_previous, phi_current;
+};
+inline std::vector<repro::Column<GridPoint>> grid_columns() {
+  return {{"x", [](const GridPoint& g) { return g.p.x; }},
+          {"y", [](const GridPoint& g) { return g.p.y; }},
+          {"inside", [](const GridPoint& g) { return g.inside; }},
+          {"defined", [](const GridPoint& g) { return g.owner >= 0; }},
+          {"subpolygon", [](const GridPoint& g) { return g.owner; }},
+          {"phi_previous", [](const GridPoint& g) { return g.phi_previous; }},
+          {"phi_current", [](const GridPoint& g) { return g.phi_current; }}};
+}
+
 // Scans a kGridCells grid over poly (y outer, x inner, as the potential_fields
-// driver); rows "x,y,inside,defined,subpolygon,phi_previous,phi_current" to
-// grid if given.
-inline FieldScan scan_field(const dda::Polygon& poly, const SubPolygons& sp, repro::CsvWriter* grid) {
+// driver); its points go to `grid` if given.
+inline FieldScan scan_field(const dda::Polygon& poly, const SubPolygons& sp, repro::TableWriter<GridPoint>* grid) {
   const dda::Aabb box = dda::bounds(poly);
   const double span = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y), margin = 0.04 * span;
   const double h = (span + 2 * margin) / kGridCells;
@@ -115,8 +133,7 @@ inline FieldScan scan_field(const dda::Polygon& poly, const SubPolygons& sp, rep
       f.inside += in ? 1 : 0;
       f.defined += owner >= 0 ? 1 : 0;
       if (owner >= 0) f.mismatch = std::max(f.mismatch, std::fabs(phi_prev - phi_cur));
-      if (grid)
-        grid->row({p.x, p.y, in ? 1.0 : 0.0, owner >= 0 ? 1.0 : 0.0, static_cast<double>(owner), phi_prev, phi_cur});
+      if (grid) grid->row({p, in, owner, phi_prev, phi_cur});
     }
   return f;
 }

@@ -13,17 +13,24 @@
 #include "repro/4_1_two_squares/two_squares.hpp"
 #include "repro/common/common.hpp"
 
-int main(int argc, char** argv) {
-  repro::check_command_line(argc, argv, "Paper A Sect. 4.1 (Figs. 7-8): collision of two identical squares.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("4.1 two squares");
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {"two_squares", "4.1 two squares",
+                                 "Paper A Sect. 4.1 (Figs. 7-8): collision of two identical squares."};
+
+namespace {
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
   const dda::Scene scene = dda::paper::two_squares();
-  repro::CsvWriter csv(out + "/data/two_squares/velocity.csv",
-                       {"time", "vx_A", "vx_B", "momentum_x", "kinetic", "strain", "contact", "total_energy"});
-  const two_squares::Result r = two_squares::run(scene, &csv);
-  csv.commit();
-  progress("done: v_A = " + repro::format_short(r.va) + ", v_B = " + repro::format_short(r.vb));
-  const std::vector<repro::Claim> claims = two_squares::claims(r);
-  repro::write_claims(repro::claims_path(out, "4_1_two_squares"), claims);
+  repro::TableWriter<two_squares::Sample> velocity(d.out + "/data/two_squares/velocity.csv",
+                                                   two_squares::velocity_columns());
+  const two_squares::Result r = two_squares::run(scene, &velocity);
+  velocity.commit();
+  d.progress("done: v_A = " + repro::format_short(r.va) + ", v_B = " + repro::format_short(r.vb));
+  repro::write_claims(repro::claims_path(d.out, "4_1_two_squares"), two_squares::claims(r));
   return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

@@ -10,7 +10,7 @@
 
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 
 namespace two_squares {
 
@@ -28,18 +28,32 @@ struct Result {
   double t_first = -1.0, t_last = -1.0; // first and last step with a contact, s
 };
 
+// One row of Fig. 8's series (velocity.csv).
+struct Sample {
+  double time, vx_a, vx_b, momentum_x;
+  dda::Energy energy;
+};
+inline std::vector<repro::Column<Sample>> velocity_columns() {
+  return {{"time", [](const Sample& s) { return s.time; }},
+          {"vx_A", [](const Sample& s) { return s.vx_a; }},
+          {"vx_B", [](const Sample& s) { return s.vx_b; }},
+          {"momentum_x", [](const Sample& s) { return s.momentum_x; }},
+          {"kinetic", [](const Sample& s) { return s.energy.kinetic; }},
+          {"strain", [](const Sample& s) { return s.energy.strain; }},
+          {"contact", [](const Sample& s) { return s.energy.contact; }},
+          {"total_energy", [](const Sample& s) { return s.energy.total(); }}};
+}
+
 // Runs `scene` (block 0 = A, block 1 = B) to its duration; rows of Fig. 8 go
-// to `csv` if given.
-inline Result run(const dda::Scene& scene, repro::CsvWriter* csv) {
+// to `table` if given.
+inline Result run(const dda::Scene& scene, repro::TableWriter<Sample>* table) {
   dda::Simulation sim(scene);
   Result r;
   const double p0 = sim.momentum().x;
   const double e0 = sim.energy().total();
   auto record = [&] {
     const dda::Energy e = sim.energy();
-    if (csv)
-      csv->row({sim.time(), sim.velocity(0)[0], sim.velocity(1)[0], sim.momentum().x, e.kinetic, e.strain,
-                e.contact, e.total()});
+    if (table) table->row({sim.time(), sim.velocity(0)[0], sim.velocity(1)[0], sim.momentum().x, e});
     r.worst_energy = std::max(r.worst_energy, std::fabs(e.total() - e0) / e0);
   };
   record();

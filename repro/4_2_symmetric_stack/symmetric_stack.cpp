@@ -18,27 +18,29 @@
 #include "repro/4_2_symmetric_stack/symmetric_stack.hpp"
 #include "repro/common/common.hpp"
 
-int main(int argc, char** argv) {
-  repro::check_command_line(argc, argv, "Paper A Sect. 4.2 (Figs. 9-10): a polygon hitting a symmetric polygonal system.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("4.2 symmetric stack");
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {"symmetric_stack", "4.2 symmetric stack",
+                                 "Paper A Sect. 4.2 (Figs. 9-10): a polygon hitting a symmetric polygonal system."};
+
+namespace {
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
   const dda::paper::SymmetricStack st = dda::paper::symmetric_stack();
-  const int n = static_cast<int>(st.scene.blocks.size());
-  std::vector<std::string> header = {"time"};
-  for (int i = 0; i < n; ++i) {
-    header.push_back("x" + std::to_string(i));
-    header.push_back("y" + std::to_string(i));
-  }
-  header.push_back("asymmetry");
-  repro::CsvWriter traces(out + "/data/symmetric_stack/traces.csv", header,
-                          {"Paper A Sect. 4.2, geometry reconstructed (Fig. 9 lost)"});
-  repro::CsvWriter snaps(out + "/data/symmetric_stack/snapshots.csv", repro::snapshot_header());
+  repro::TableWriter<symmetric_stack::Trace> traces(
+      d.out + "/data/symmetric_stack/traces.csv",
+      symmetric_stack::trace_columns(static_cast<int>(st.scene.blocks.size())),
+      {"Paper A Sect. 4.2, geometry reconstructed (Fig. 9 lost)"});
+  repro::TableWriter<repro::VertexRow> snaps(d.out + "/data/symmetric_stack/snapshots.csv", repro::snapshot_columns());
   const symmetric_stack::Result r = symmetric_stack::run(st, &traces, &snaps);
   traces.commit();
   snaps.commit();
-  progress("done: largest mirror asymmetry " + repro::format_short(r.worst_position, 3) + " m, " +
-           repro::format_short(r.worst_rotation, 3) + " rad");
-  const std::vector<repro::Claim> claims = {symmetric_stack::row(r)};
-  repro::write_claims(repro::claims_path(out, "4_2_symmetric_stack"), claims);
+  d.progress("done: largest mirror asymmetry " + repro::format_short(r.worst_position, 3) + " m, " +
+             repro::format_short(r.worst_rotation, 3) + " rad");
+  repro::write_claims(repro::claims_path(d.out, "4_2_symmetric_stack"), {symmetric_stack::row(r)});
   return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

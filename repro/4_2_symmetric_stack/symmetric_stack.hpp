@@ -10,7 +10,7 @@
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 #include "repro/common/sim_output.hpp"
 
 namespace symmetric_stack {
@@ -31,9 +31,28 @@ struct Result {
   double travel = 0.0;          // largest centroid travel of the top block, m
 };
 
+// One row of Fig. 10's traces: every block's centroid and the largest
+// position asymmetry over the mirror pairs at that moment.
+struct Trace {
+  double time;
+  std::vector<dda::Vec2> centroid;
+  double asymmetry;
+};
+// Columns time, x0, y0, x1, y1, ..., asymmetry for `n` blocks.
+inline std::vector<repro::Column<Trace>> trace_columns(int n) {
+  std::vector<repro::Column<Trace>> columns = {{"time", [](const Trace& t) { return t.time; }}};
+  for (int i = 0; i < n; ++i) {
+    columns.push_back({"x" + std::to_string(i), [i](const Trace& t) { return t.centroid[i].x; }});
+    columns.push_back({"y" + std::to_string(i), [i](const Trace& t) { return t.centroid[i].y; }});
+  }
+  columns.push_back({"asymmetry", [](const Trace& t) { return t.asymmetry; }});
+  return columns;
+}
+
 // Runs the stack; centroid traces (with the position asymmetry) go to
 // `traces` and the first and last block outlines to `snaps`, if given.
-inline Result run(const dda::paper::SymmetricStack& st, repro::CsvWriter* traces, repro::CsvWriter* snaps) {
+inline Result run(const dda::paper::SymmetricStack& st, repro::TableWriter<Trace>* traces,
+                  repro::TableWriter<repro::VertexRow>* snaps) {
   dda::Simulation sim(st.scene);
   const int n = sim.scene_block_count();
   Result r;
@@ -49,13 +68,9 @@ inline Result run(const dda::paper::SymmetricStack& st, repro::CsvWriter* traces
   };
   auto record = [&](double a) {
     if (!traces) return;
-    std::vector<double> row = {sim.time()};
-    for (int i = 0; i < n; ++i) {
-      row.push_back(sim.centroid(i).x);
-      row.push_back(sim.centroid(i).y);
-    }
-    row.push_back(a);
-    traces->row(row);
+    Trace t{sim.time(), {}, a};
+    for (int i = 0; i < n; ++i) t.centroid.push_back(sim.centroid(i));
+    traces->row(t);
   };
   if (snaps) repro::write_snapshot(*snaps, sim);
   r.worst_position = asymmetry();

@@ -7,7 +7,7 @@
 #include "dda/paper_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 
 namespace incline {
 
@@ -24,10 +24,22 @@ struct Run {
   double rel_error() const { return (distance - analytic) / analytic; }
 };
 
+// One row of sliding.csv (Fig. 12): the distance slid at a time and Eq. 30's.
+struct Sample {
+  double phi_deg, time, distance, analytic;  // deg, s, m, m (Eq. 30)
+};
+inline std::vector<repro::Column<Sample>> sliding_columns() {
+  return {{"phi_deg", [](const Sample& s) { return s.phi_deg; }},
+          {"time", [](const Sample& s) { return s.time; }},
+          {"distance", [](const Sample& s) { return s.distance; }},
+          {"analytic", [](const Sample& s) { return s.analytic; }}};
+}
+
 // Runs one case with the friction update `update`; Eq. 30 is evaluated with
 // the friction angle `phi_deg` (the scene's own, except in a control);
-// appends (phi, time, l, l_analytic) rows to `csv` if given.
-inline Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg, dda::FrictionUpdate update) {
+// appends a Sample every kRecordEvery steps to `table` if given.
+inline Run run(dda::paper::Incline in, repro::TableWriter<Sample>* table, double phi_deg,
+               dda::FrictionUpdate update) {
   in.scene.contact.friction_update = update;
   dda::Simulation sim(in.scene);
   const dda::Vec2 c0 = sim.centroid(1);
@@ -35,9 +47,9 @@ inline Run run(dda::paper::Incline in, repro::CsvWriter* csv, double phi_deg, dd
   Run r;
   while (sim.time() < in.scene.duration - 0.5 * sim.dt()) {
     sim.step();
-    if (csv && sim.step_count() % kRecordEvery == 0) {
+    if (table && sim.step_count() % kRecordEvery == 0) {
       const double l = dot(sim.centroid(1) - c0, in.downhill);
-      csv->row({phi_deg, sim.time(), l, dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time())});
+      table->row({phi_deg, sim.time(), l, dda::paper::incline_distance(kG, in.theta_rad, phi, sim.time())});
     }
   }
   r.distance = dot(sim.centroid(1) - c0, in.downhill);

@@ -69,25 +69,31 @@ void write_outputs(const std::string& dir, const std::vector<Run>& runs) {
                           runs, {"rule: 0 = unified (min-max edge) H, 1 = inscribed-radius H"});
 }
 
+// One measured difference as a row of the paper's scope: the largest
+// difference of A's trace between the cases under one H rule.
+repro::Claim difference_row(const std::string& claim, const std::string& quote, double diff, const std::string& h,
+                            const std::string& note) {
+  repro::Claim c{"5.1", claim, quote, "max |dy_case1 - dy_case2| = " + format_short(diff, 3) + " m (" + h + " m)",
+                 note, false, repro::Kind::kMeasurement};
+  c.scope = repro::Scope::kPaper;
+  return c;
+}
+
 // The rows of claims/5_1_bouncing_block.csv: the two measured differences,
 // their comparison, and each run's sanity row.
 std::vector<repro::Claim> claims(const std::vector<Run>& runs, double diff_unified, double diff_inscribed) {
-  std::vector<repro::Claim> claims;
   const std::string geo = " (reconstructed geometry: 1 m square A dropped 0.5 m on a 4 m wide B, 2.0 s)";
-  claims.push_back({"5.1", "unified H: A's bounce barely depends on B's height" + geo,
-                    "'the current approach using a unified H value lead to very similar block bouncing response' "
-                    "(Sect. 5.1, Fig. 14)",
-                    "max |dy_case1 - dy_case2| = " + format_short(diff_unified, 3) + " m (H = " +
-                        format_short(runs[0].h_a) + " vs " + format_short(runs[1].h_a) + " m)",
-                    "information; compared with the inscribed-radius H in the next rows", false, repro::Kind::kMeasurement});
-  claims.back().scope = repro::Scope::kPaper;
-  claims.push_back({"5.1", "inscribed-radius ('previous') H: A's bounce depends on B's height" + geo,
-                    "'the previous approach uses inscribed circle radius as H values lead to significantly different "
-                    "block bouncing response' (Sect. 5.1, Fig. 14)",
-                    "max |dy_case1 - dy_case2| = " + format_short(diff_inscribed, 3) + " m (H_B = " +
-                        format_short(runs[2].h_b) + " vs " + format_short(runs[3].h_b) + " m)",
-                    "information; compared in the next row", false, repro::Kind::kMeasurement});
-  claims.back().scope = repro::Scope::kPaper;
+  std::vector<repro::Claim> claims = {
+      difference_row("unified H: A's bounce barely depends on B's height" + geo,
+                     "'the current approach using a unified H value lead to very similar block bouncing response' "
+                     "(Sect. 5.1, Fig. 14)",
+                     diff_unified, "H = " + format_short(runs[0].h_a) + " vs " + format_short(runs[1].h_a),
+                     "information; compared with the inscribed-radius H in the next rows"),
+      difference_row("inscribed-radius ('previous') H: A's bounce depends on B's height" + geo,
+                     "'the previous approach uses inscribed circle radius as H values lead to significantly different "
+                     "block bouncing response' (Sect. 5.1, Fig. 14)",
+                     diff_inscribed, "H_B = " + format_short(runs[2].h_b) + " vs " + format_short(runs[3].h_b),
+                     "information; compared in the next row")};
   claims.push_back(bouncing_block::comparison_row(diff_unified, diff_inscribed));
   for (const Run& r : runs) claims.push_back(bouncing_block::sane_row(r));
   return claims;

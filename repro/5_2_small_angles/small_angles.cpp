@@ -20,7 +20,6 @@
 //
 // Output: data/small_angles/traces.csv, snapshots.csv, claims/5_2_small_angles.csv.
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -35,40 +34,43 @@ using repro::format_short;
 using small_angles::Result;
 using small_angles::run;
 
-int main(int argc, char** argv) try {
-  repro::check_command_line(argc, argv, "Paper A Sect. 5.2 (Figs. 15-16, geometry reconstructed): polygons with small angles.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("5.2 small angles");
-  const std::string dir = out + "/data/small_angles";
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "small_angles", "5.2 small angles",
+    "Paper A Sect. 5.2 (Figs. 15-16, geometry reconstructed): polygons with small angles."};
+
+namespace {
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::string dir = d.out + "/data/small_angles";
   const dda::paper::SmallAngleTriangles st = dda::paper::small_angle_triangles(5.0);
   const std::vector<std::string> notes = {
-      "Paper A Sect. 5.2, geometry RECONSTRUCTED (Fig. 15 lost): two 5 deg isosceles triangles, 1 m long, point images "
-      "through (0,0), facing long sides overlapping 0.5 m, 0.01 m apart; +-1 m/s; kn 50 MPa, dt 2e-5 s, frictionless",
+      "Paper A Sect. 5.2, geometry RECONSTRUCTED (Fig. 15 lost): two 5 deg isosceles triangles, 1 m long, point "
+      "images through (0,0), facing long sides overlapping 0.5 m, 0.01 m apart; +-1 m/s; kn 50 MPa, dt 2e-5 s, "
+      "frictionless",
       "apex = vertex with the 5 deg angle; asymmetry = max_k |v0_k + v1_k - 2 c| (point symmetry), m"};
-  repro::CsvWriter traces(dir + "/traces.csv",
-                          {"time", "apex0_x", "apex0_y", "apex1_x", "apex1_y", "c0_x", "c0_y", "c1_x", "c1_y",
-                           "asymmetry", "total_energy", "contact_energy", "overlap_thickness"},
-                          notes);
-  repro::CsvWriter snaps(dir + "/snapshots.csv", repro::snapshot_header(), notes);
+  repro::TableWriter<small_angles::Trace> traces(dir + "/traces.csv", small_angles::trace_columns(), notes);
+  repro::TableWriter<repro::VertexRow> snaps(dir + "/snapshots.csv", repro::snapshot_columns(), notes);
   const Result r = run(st, &traces, &snaps);
   traces.commit();
   snaps.commit();
-  progress("5 deg: asymmetry " + format_short(r.asymmetry, 3) + " m, energy error " +
-           format_short(r.stats.energy_error, 3) + ", contact " + format_short(r.stats.first_contact, 4) + " to " +
-           format_short(r.stats.last_contact, 4) + " s, " + format_short(r.seconds, 3) + " s");
+  d.progress("5 deg: asymmetry " + format_short(r.asymmetry, 3) + " m, energy error " +
+             format_short(r.stats.energy_error, 3) + ", contact " + format_short(r.stats.first_contact, 4) + " to " +
+             format_short(r.stats.last_contact, 4) + " s, " + format_short(r.seconds, 3) + " s");
 
   const dda::paper::SmallAngleTriangles tip =
       dda::paper::small_angle_triangles(5.0, 0.2, dda::paper::TriangleLayout::kApexToApex);
   const Result rt = run(tip, nullptr, nullptr);
-  progress("apex-to-apex variant: asymmetry " + format_short(rt.asymmetry, 3) + " m, " + format_short(rt.seconds, 3) +
-           " s");
+  d.progress("apex-to-apex variant: asymmetry " + format_short(rt.asymmetry, 3) + " m, " + format_short(rt.seconds, 3) +
+             " s");
 
   const std::string geo = " (reconstructed geometry, 5 deg triangles, +-1 m/s, 0.2 s)";
-  const std::vector<repro::Claim> claims = small_angles::claims(r, rt, geo);
-  repro::write_claims(repro::claims_path(out, "5_2_small_angles"), claims);
-  progress("done");
+  repro::write_claims(repro::claims_path(d.out, "5_2_small_angles"), small_angles::claims(r, rt, geo));
+  d.progress("done");
   return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "small_angles: error: %s\n", e.what());
-  return 1;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

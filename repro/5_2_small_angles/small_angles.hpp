@@ -11,7 +11,7 @@
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
 #include "repro/common/cli.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 #include "repro/common/sim_output.hpp"
 
 namespace small_angles {
@@ -28,7 +28,33 @@ struct Result {
   double seconds = 0.0;
 };
 
-inline Result run(const dda::paper::SmallAngleTriangles& st, repro::CsvWriter* traces, repro::CsvWriter* snaps) {
+// One row of traces.csv: the apexes and centroids of both triangles, the
+// point-symmetry error, the energies and the overlap at one moment.
+struct Trace {
+  double time, apex0_x, apex0_y, apex1_x, apex1_y, c0_x, c0_y, c1_x, c1_y;
+  double asymmetry, total_energy, contact_energy, overlap_thickness;
+};
+inline std::vector<repro::Column<Trace>> trace_columns() {
+  using repro::field;
+  return {field("time", &Trace::time),
+          field("apex0_x", &Trace::apex0_x),
+          field("apex0_y", &Trace::apex0_y),
+          field("apex1_x", &Trace::apex1_x),
+          field("apex1_y", &Trace::apex1_y),
+          field("c0_x", &Trace::c0_x),
+          field("c0_y", &Trace::c0_y),
+          field("c1_x", &Trace::c1_x),
+          field("c1_y", &Trace::c1_y),
+          field("asymmetry", &Trace::asymmetry),
+          field("total_energy", &Trace::total_energy),
+          field("contact_energy", &Trace::contact_energy),
+          field("overlap_thickness", &Trace::overlap_thickness)};
+}
+
+// Runs the triangles; every fifth step's Trace goes to `traces` and the first
+// and last block outlines to `snaps`, if given.
+inline Result run(const dda::paper::SmallAngleTriangles& st, repro::TableWriter<Trace>* traces,
+                  repro::TableWriter<repro::VertexRow>* snaps) {
   const repro::Progress clock("run");
   dda::Simulation sim(st.scene);
   dda::paper::RunMonitor mon(sim, 0, 1);
@@ -39,8 +65,8 @@ inline Result run(const dda::paper::SmallAngleTriangles& st, repro::CsvWriter* t
     if (traces && sim.step_count() % 5 == 0) {
       const Vec2 p0 = sim.polygon(0).vertex(st.apex[0]), p1 = sim.polygon(1).vertex(st.apex[1]);
       const dda::Energy e = sim.energy();
-      traces->row({sim.time(), p0.x, p0.y, p1.x, p1.y, sim.centroid(0).x, sim.centroid(0).y, sim.centroid(1).x,
-                   sim.centroid(1).y, a, e.total(), e.contact,
+      const Vec2 c0 = sim.centroid(0), c1 = sim.centroid(1);
+      traces->row({sim.time(), p0.x, p0.y, p1.x, p1.y, c0.x, c0.y, c1.x, c1.y, a, e.total(), e.contact,
                    dda::paper::overlap_thickness(sim.polygon(0), sim.polygon(1))});
     }
   };

@@ -10,7 +10,8 @@
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
 #include "repro/common/cli.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/sim_output.hpp"
+#include "repro/common/table.hpp"
 
 namespace small_edges {
 // The negative controls of the rows (test names in repro_controls).
@@ -35,17 +36,46 @@ struct Result {
   double seconds = 0.0;
 };
 
-// Rows "case,time,block,vertex,x,y" of every block's polygon now.
-inline void write_snapshot(repro::CsvWriter& csv, const dda::Simulation& sim, double case_id) {
-  for (int i = 0; i < sim.block_count(); ++i) {
-    const dda::Polygon& p = sim.polygon(i);
-    for (int k = 0; k < p.count; ++k)
-      csv.row({case_id, sim.time(), static_cast<double>(i), static_cast<double>(k), p.vertex(k).x, p.vertex(k).y});
-  }
+// One row of traces.csv: the upper block's contacting vertex and centroid,
+// the energy and the penetration at one moment of case `case_id`.
+struct Trace {
+  int case_id;
+  double time, vertex_x, vertex_y, centroid_x, centroid_y;
+  double total_energy, overlap_thickness, vertex_depth;
+};
+inline std::vector<repro::Column<Trace>> trace_columns() {
+  using repro::field;
+  return {field("case", &Trace::case_id),
+          field("time", &Trace::time),
+          field("vertex_x", &Trace::vertex_x),
+          field("vertex_y", &Trace::vertex_y),
+          field("centroid_x", &Trace::centroid_x),
+          field("centroid_y", &Trace::centroid_y),
+          field("total_energy", &Trace::total_energy),
+          field("overlap_thickness", &Trace::overlap_thickness),
+          field("vertex_depth", &Trace::vertex_depth)};
 }
 
-inline Result run(const dda::paper::SmallEdgeImpact& si, double case_id, repro::CsvWriter* traces,
-           repro::CsvWriter* snaps) {
+// One row of snapshots.csv: a snapshot row (repro::snapshot_columns) of case
+// `case_id`, columns "case,time,block,vertex,x,y".
+struct Vertex {
+  int case_id;
+  repro::VertexRow v;
+};
+inline std::vector<repro::Column<Vertex>> snapshot_columns() {
+  std::vector<repro::Column<Vertex>> columns = {{"case", [](const Vertex& r) { return r.case_id; }}};
+  for (const repro::Column<repro::VertexRow>& c : repro::snapshot_columns())
+    columns.push_back({c.name, [cell = c.cell](const Vertex& r) { return cell(r.v); }});
+  return columns;
+}
+inline void write_snapshot(repro::TableWriter<Vertex>& table, const dda::Simulation& sim, int case_id) {
+  for (const repro::VertexRow& v : repro::snapshot_rows(sim)) table.row({case_id, v});
+}
+
+// Runs one impact to its duration; every fifth step's Trace goes to `traces`
+// and the first and last block outlines to `snaps`, if given.
+inline Result run(const dda::paper::SmallEdgeImpact& si, int case_id, repro::TableWriter<Trace>* traces,
+                  repro::TableWriter<Vertex>* snaps) {
   const repro::Progress clock("run");
   dda::Simulation sim(si.scene);
   dda::paper::RunMonitor mon(sim, si.lower, si.upper);
@@ -54,7 +84,8 @@ inline Result run(const dda::paper::SmallEdgeImpact& si, double case_id, repro::
     if (!traces || sim.step_count() % 5 != 0) return;
     const Vec2 v = sim.polygon(si.upper).vertex(si.contact_vertex);
     const dda::Energy e = sim.energy();
-    traces->row({case_id, sim.time(), v.x, v.y, sim.centroid(si.upper).x, sim.centroid(si.upper).y, e.total(),
+    const Vec2 c = sim.centroid(si.upper);
+    traces->row({case_id, sim.time(), v.x, v.y, c.x, c.y, e.total(),
                  dda::paper::overlap_thickness(sim.polygon(si.lower), sim.polygon(si.upper)),
                  dda::paper::vertex_depth(sim.polygon(si.lower), sim.polygon(si.upper))});
   };

@@ -57,20 +57,22 @@ Cause cause(const Case& c, const Outcome& o, const Outcome& d1, const Outcome& d
   auto trio = [](double a, double b, double e, const std::string& unit) {
     return pm(a) + " / " + pm(b) + " / " + pm(e) + unit + " (d1 / d2 exact / d3 dt/10)";
   };
-  auto verdict = [&](bool in2, bool in3) -> std::string {
-    if (!d2.finished || !d3.finished) return "a rerun did not finish";
-    if (!in2 && !in3) return "removed by the exact integration and by dt / 10";
-    if (!in2) return "removed by the exact integration only: the paper's segmentation";
-    if (!in3) return "removed by dt / 10 only: time discretisation";
-    return "persists with the exact integration and at dt / 10: neither the segmentation nor the time step";
+  // Whether the exact integration (in2: the failure still in d2) or dt / 10
+  // (in3: still in d3) removes a failure: in words, and as a short tag.
+  struct Reading {
+    const char* verdict;
+    const char* tag;
   };
-  auto tag = [&](bool in2, bool in3) -> std::string {
-    if (!d2.finished || !d3.finished) return "rerun stopped";
-    if (!in2 && !in3) return "segmentation or dt";
-    if (!in2) return "segmentation";
-    if (!in3) return "time step";
-    return "persists at dt/10 and exact";
+  auto reading = [&](bool in2, bool in3) -> Reading {
+    if (!d2.finished || !d3.finished) return {"a rerun did not finish", "rerun stopped"};
+    if (!in2 && !in3) return {"removed by the exact integration and by dt / 10", "segmentation or dt"};
+    if (!in2) return {"removed by the exact integration only: the paper's segmentation", "segmentation"};
+    if (!in3) return {"removed by dt / 10 only: time discretisation", "time step"};
+    return {"persists with the exact integration and at dt / 10: neither the segmentation nor the time step",
+            "persists at dt/10 and exact"};
   };
+  auto verdict = [&](bool in2, bool in3) { return std::string(reading(in2, in3).verdict); };
+  auto tag = [&](bool in2, bool in3) { return std::string(reading(in2, in3).tag); };
   std::vector<std::string> parts, brief;
   if (d1.flip) {
     std::string s = "flip-through (the normal force pulls the block in: " +

@@ -2,6 +2,7 @@
 // runs, the fuzzed pairs and the side-by-side trajectories.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "dda/paper_scenes.hpp"
 #include "dda/robustness_scenes.hpp"
@@ -18,7 +19,31 @@ using repro::format_short;
 
 // ---- 1. contacts along a run ----------------------------------------------------
 
-SceneStats scan(const std::string& name, const dda::Scene& scene, int every, int scene_id, repro::CsvWriter* csv) {
+// The errors of a compared pair under both readings, as columns.
+std::vector<repro::Column<Compared>> error_columns() {
+  return {{"force_error_paper", [](const Compared& c) { return c.e.mode[0].force; }},
+          {"point_error_paper", [](const Compared& c) { return c.e.mode[0].point; }},
+          {"force_error_replace", [](const Compared& c) { return c.e.mode[1].force; }},
+          {"point_error_replace", [](const Compared& c) { return c.e.mode[1].point; }}};
+}
+
+std::vector<repro::Column<Compared>> contact_columns() {
+  std::vector<repro::Column<Compared>> columns = {{"scene", [](const Compared& c) { return c.scene; }},
+                                                  {"time", [](const Compared& c) { return c.time; }}};
+  for (repro::Column<Compared>& c : error_columns()) columns.push_back(std::move(c));
+  columns.push_back({"depth_ratio", [](const Compared& c) { return c.e.depth_ratio; }});
+  return columns;
+}
+
+std::vector<repro::Column<Compared>> fuzz_columns() {
+  std::vector<repro::Column<Compared>> columns = {{"depth_ratio", [](const Compared& c) { return c.e.depth_ratio; }}};
+  for (repro::Column<Compared>& c : error_columns()) columns.push_back(std::move(c));
+  columns.push_back({"has_small_edge", [](const Compared& c) { return c.small_edge; }});
+  return columns;
+}
+
+SceneStats scan(const std::string& name, const dda::Scene& scene, int every, int scene_id,
+                repro::TableWriter<Compared>* table) {
   const repro::Progress clock(name);
   SceneStats st;
   st.name = name;
@@ -36,9 +61,7 @@ SceneStats scan(const std::string& name, const dda::Scene& scene, int every, int
                                c.small_edge_fraction * hb);
       if (!e.valid) continue;
       for (std::size_t m = 0; m < kModes.size(); ++m) st.mode[m].add(e.mode[m]);
-      if (csv)
-        csv->row({static_cast<double>(scene_id), sim.time(), e.mode[0].force, e.mode[0].point, e.mode[1].force,
-                  e.mode[1].point, e.depth_ratio});
+      if (table) table->row({scene_id, sim.time(), e, false});
     }
   }
   st.seconds = clock.elapsed_seconds();
@@ -75,9 +98,7 @@ std::vector<Vec2> random_polygon(std::mt19937_64& rng) {
 int fuzz(const std::string& dir, std::vector<repro::Claim>& claims) {
   std::mt19937_64 rng(20240611);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  repro::CsvWriter fuzz(dir + "/fuzz.csv",
-                        {"depth_ratio", "force_error_paper", "point_error_paper", "force_error_replace",
-                         "point_error_replace", "has_small_edge"},
+  repro::TableWriter<Compared> fuzz(dir + "/fuzz.csv", fuzz_columns(),
                         {"20000 random convex pairs (seed 20240611), overlap thickness log-uniform in [1e-3, 1] of the "
                          "smaller inscribed diameter, kn/H = 1/H with H the mean of the pair's "
                          "smallest and largest edge, small edges below 0.05 H get virtual nodes; *_paper: "
@@ -119,7 +140,7 @@ int fuzz(const std::string& dir, std::vector<repro::Claim>& claims) {
     if (!e.valid) continue;
     ++accepted;
     const bool small = lmin < 0.05 * h;
-    fuzz.row({e.depth_ratio, e.mode[0].force, e.mode[0].point, e.mode[1].force, e.mode[1].point, small ? 1.0 : 0.0});
+    fuzz.row({0, 0.0, e, small});
     for (Bin& bn : bins)
       if (e.depth_ratio >= bn.lo && e.depth_ratio < bn.hi) {
         for (std::size_t m = 0; m < kModes.size(); ++m) bn.mode[m].add(e.mode[m]);
@@ -148,7 +169,14 @@ int fuzz(const std::string& dir, std::vector<repro::Claim>& claims) {
 
 // ---- 3. trajectories ------------------------------------------------------------
 
-TrajResult run_trajectory(const Traj& t, std::size_t k, repro::CsvWriter& traj) {
+std::vector<repro::Column<TrajSample>> trajectory_columns() {
+  return {{"scene", [](const TrajSample& s) { return s.scene; }},
+          {"time", [](const TrajSample& s) { return s.time; }},
+          {"difference_paper", [](const TrajSample& s) { return s.difference_paper; }},
+          {"difference_replace", [](const TrajSample& s) { return s.difference_replace; }}};
+}
+
+TrajResult run_trajectory(const Traj& t, std::size_t k, repro::TableWriter<TrajSample>& traj) {
   // Runs 0, 1: paper segmentation with each small-edge reading; 2: exact.
   std::array<dda::Scene, 3> sc = {t.scene, t.scene, t.scene};
   for (std::size_t m = 0; m < kModes.size(); ++m) {
@@ -173,7 +201,7 @@ TrajResult run_trajectory(const Traj& t, std::size_t k, repro::CsvWriter& traj) 
     const double d0 = diff(s0, s2), d1 = diff(s1, s2);
     r.worst = {std::max(r.worst[0], d0), std::max(r.worst[1], d1)};
     between = std::max(between, diff(s0, s1));
-    if (s0.step_count() % t.every == 0) traj.row({static_cast<double>(k), s0.time(), d0, d1});
+    if (s0.step_count() % t.every == 0) traj.row({k, s0.time(), d0, d1});
   }
   r.energy = {m0.stats().energy_error, m1.stats().energy_error, m2.stats().energy_error};
   r.identical = between == 0.0 && r.energy[0] == r.energy[1];

@@ -46,7 +46,7 @@
 // Output: data/segmentation/contacts.csv, summary.csv (1), fuzz.csv (2),
 // trajectories.csv, trajectory_runs.csv (3); claims/5_5_segmentation.csv.
 #include <array>
-#include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -60,19 +60,20 @@ using namespace segmentation;
 using dda::Vec2;
 using repro::format_short;
 
-int main(int argc, char** argv) try {
-  repro::check_command_line(argc, argv, "Beyond Paper A Sect. 3.2.3: is the segmentation of Eq. 16 exact?");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("5.5 segmentation");
-  const std::string dir = out + "/data/segmentation";
-  std::vector<repro::Claim> claims;
-  const std::string sec = kSection, paper_rule = kPaperRuleName, replace_rule = kReplaceRuleName;
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {"segmentation", "5.5 segmentation",
+                                 "Beyond Paper A Sect. 3.2.3: is the segmentation of Eq. 16 exact?"};
 
-  // ---- 1. contacts of the Sect. 4-5 runs ----
-  repro::CsvWriter contacts(
-      dir + "/contacts.csv",
-      {"scene", "time", "force_error_paper", "point_error_paper", "force_error_replace", "point_error_replace",
-       "depth_ratio"},
+namespace {
+
+using Claims = std::vector<repro::Claim>;
+
+// 1. The contacts of the Sect. 4-5 runs: contacts.csv, summary.csv, a
+// measurement row per scene and the exactness check.
+void contact_scans(const repro::Driver& d, const std::string& dir, Claims& claims) {
+  const std::string paper_rule = kPaperRuleName, replace_rule = kReplaceRuleName;
+  repro::TableWriter<Compared> contacts(
+      dir + "/contacts.csv", contact_columns(),
       {"per contact and step of runs with the library defaults, paper's segmentation vs exact integration; "
        "force_error = |f_p - f_e|/|f_e|, point_error = |pg_p - pg_e|/diameter(IP); *_paper: small-edge rule "
        "kVirtualAndVertex (paper's printed rule, library default), *_replace: kVirtualReplacesVertex (SPEC.md's "
@@ -94,111 +95,135 @@ int main(int argc, char** argv) try {
       {"5.3 case 1 (on small edge)", dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnSmallEdge).scene, 1},
       {"5.3 case 2 (next to it)", dda::paper::small_edge_impact(dda::paper::SmallEdgeCase::kOnNeighbourEdge).scene, 1},
   };
-  std::vector<std::string> summary_header = {"scene", "contacts"};
-  for (const char* k : kModeKey)
-    for (const char* col : {"nonzero_fraction", "max_force_error", "p50_force_error", "p99_force_error",
-                            "max_point_error"})
-      summary_header.push_back(std::string(col) + "_" + k);
-  repro::CsvWriter summary(dir + "/summary.csv", summary_header,
-                           {"paper: small-edge rule kVirtualAndVertex (library default); replace: "
-                            "kVirtualReplacesVertex; both at the states of the default run"});
+  std::vector<repro::Column<SceneStats>> summary_columns = {
+      {"scene", [](const SceneStats& st) { return st.name; }},
+      {"contacts", [](const SceneStats& st) { return std::to_string(st.mode[0].n); }}};
+  const std::vector<repro::Column<ModeStats>> stats = {
+      {"nonzero_fraction", [](const ModeStats& m) { return m.nonzero_percent() / 100.0; }},
+      {"max_force_error", [](const ModeStats& m) { return m.max_force; }},
+      {"p50_force_error", [](const ModeStats& m) { return m.percentile(0.5); }},
+      {"p99_force_error", [](const ModeStats& m) { return m.percentile(0.99); }},
+      {"max_point_error", [](const ModeStats& m) { return m.max_point; }}};
+  for (std::size_t k = 0; k < std::size(kModeKey); ++k)
+    for (const repro::Column<ModeStats>& c : stats)
+      summary_columns.push_back(
+          {c.name + "_" + kModeKey[k], [k, cell = c.cell](const SceneStats& st) { return cell(st.mode[k]); }});
   std::vector<SceneStats> scans;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const SceneStats st = scan(scenes[i].name, scenes[i].scene, scenes[i].every, static_cast<int>(i), &contacts);
     scans.push_back(st);
-    std::vector<std::string> row = {st.name, std::to_string(st.mode[0].n)};
-    for (const ModeStats& m : st.mode)
-      for (double x : {m.nonzero_percent() / 100.0, m.max_force, m.percentile(0.5), m.percentile(0.99), m.max_point})
-        row.push_back(repro::format_full(x));
-    summary.row(row);
-    progress(st.name + ": " + std::to_string(st.mode[0].n) + " contact evaluations, max force error " +
-             format_short(st.mode[0].max_force, 3) + " (paper's rule) / " + format_short(st.mode[1].max_force, 3) +
-             " (replacing), " + format_short(st.seconds, 3) + " s");
-    claims.push_back({sec, "paper's segmentation vs exact integration, per contact and step: " + st.name,
-                      "Sect. 3.2.3: 'the integral of potential on an edge can be computed accurately piece by piece'",
-                      std::to_string(st.mode[0].n) + " contact evaluations of the run with the library defaults. " +
-                          paper_rule + ": " + st.mode[0].describe() + ". " + replace_rule + ", same states: " +
-                          (st.mode[1].same_as(st.mode[0]) ? std::string("the same errors, bit for bit")
-                                                          : st.mode[1].describe()),
-                      "information (exact would be 0)", false, repro::Kind::kMeasurement});
+    d.progress(st.name + ": " + std::to_string(st.mode[0].n) + " contact evaluations, max force error " +
+               format_short(st.mode[0].max_force, 3) + " (paper's rule) / " + format_short(st.mode[1].max_force, 3) +
+               " (replacing), " + format_short(st.seconds, 3) + " s");
+    claims.push_back(
+        {kSection, "paper's segmentation vs exact integration, per contact and step: " + st.name,
+         "Sect. 3.2.3: 'the integral of potential on an edge can be computed accurately piece by piece'",
+         std::to_string(st.mode[0].n) + " contact evaluations of the run with the library defaults. " + paper_rule +
+             ": " + st.mode[0].describe() + ". " + replace_rule + ", same states: " +
+             (st.mode[1].same_as(st.mode[0]) ? std::string("the same errors, bit for bit") : st.mode[1].describe()),
+         "information (exact would be 0)", false, repro::Kind::kMeasurement});
   }
   contacts.commit();
-  summary.commit();
+  repro::write_table(dir + "/summary.csv", summary_columns, scans,
+                     {"paper: small-edge rule kVirtualAndVertex (library default); replace: "
+                      "kVirtualReplacesVertex; both at the states of the default run"});
   claims.push_back(exact_row(scans));
+}
 
-  // ---- 2. fuzzed pairs ----
-  {
+// The runs of the trajectory study: what each watches and how often.
+std::vector<Traj> trajectories() {
+  auto vb = [](const dda::Simulation& s) { return s.velocity(1)[0]; };
+  std::vector<Traj> runs;
+  runs.push_back({"4.1 two squares (v_B)", dda::paper::two_squares(), 10, vb, nullptr});
+  for (double phi : {0.0, 10.0, 20.0}) {
+    const dda::paper::Incline in = dda::paper::incline(phi);
+    const Vec2 down = in.downhill;
+    runs.push_back({"4.3 incline phi " + format_short(phi) + " (sliding distance)", in.scene, 500,
+                    [down](const dda::Simulation& s) { return dda::dot(s.centroid(1), down); }, nullptr});
+  }
+  for (double h : {0.1, 1.0})
+    for (dda::HRule rule : {dda::HRule::kMinMaxEdge, dda::HRule::kInscribedRadius})
+      runs.push_back({"5.1 B " + format_short(h) + " m, " +
+                          (rule == dda::HRule::kMinMaxEdge ? "unified" : "inscribed") + " H (dy_A)",
+                      dda::paper::bouncing_block(h, rule).scene, 10,
+                      [](const dda::Simulation& s) { return s.centroid(1).y; }, nullptr});
+  for (auto which : {dda::paper::SmallEdgeCase::kOnSmallEdge, dda::paper::SmallEdgeCase::kOnNeighbourEdge})
+    runs.push_back({std::string("5.3 case ") + (which == dda::paper::SmallEdgeCase::kOnSmallEdge ? "1" : "2") +
+                        " (contacting vertex)",
+                    dda::paper::small_edge_impact(which).scene, 5, nullptr,
+                    [](const dda::Simulation& s) { return s.polygon(1).vertex(0); }});
+  return runs;
+}
+
+// 3. Each trajectory run with each rule: trajectories.csv,
+// trajectory_runs.csv and a measurement row per run.
+void trajectory_rows(const repro::Driver& d, const std::string& dir, Claims& claims) {
+  const std::string paper_rule = kPaperRuleName, replace_rule = kReplaceRuleName;
+  repro::TableWriter<TrajSample> traj(dir + "/trajectories.csv", trajectory_columns(),
+                                      {"difference from the run with the exact integration of the runs with the "
+                                       "paper's segmentation, small-edge rule kVirtualAndVertex (paper, library "
+                                       "default) and kVirtualReplacesVertex (replace): 4.1 |dv_B| (m/s), 4.3 |d "
+                                       "sliding distance| (m), 5.1 |d dy_A| (m), 5.3 |d vertex position| (m)"});
+  struct Row {
+    std::size_t k;
+    std::string name;
+    TrajResult r;
+  };
+  std::vector<Row> rows;
+  const std::vector<Traj> runs = trajectories();
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const Traj& t = runs[k];
+    const repro::Progress clock(t.name);
+    const TrajResult r = run_trajectory(t, k, traj);
+    const double e0 = r.energy[0], e1 = r.energy[1], e2 = r.energy[2];
+    rows.push_back({k, t.name, r});
+    const bool friction = t.scene.contact.friction() && t.scene.contact.friction_deg > 0.0;
+    claims.push_back(
+        {kSection, "effect on the trajectory: " + t.name, "(not discussed in the paper)",
+         "max difference from the exact integration: " + paper_rule + " " + format_short(r.worst[0], 3) + ", " +
+             replace_rule + " " + format_short(r.worst[1], 3) +
+             (r.identical ? " (the two readings' runs never differ)" : "") +
+             (friction ? "; energy change (friction dissipates): paper's rule " : "; energy error: paper's rule ") +
+             format_short(e0, 3) + ", replacing " + format_short(e1, 3) + ", exact " + format_short(e2, 3),
+         "information", false, repro::Kind::kMeasurement});
+    d.progress(t.name + ": max difference " + format_short(r.worst[0], 3) + " (paper's rule) / " +
+               format_short(r.worst[1], 3) + " (replacing), energy error " + format_short(e0, 3) + " / " +
+               format_short(e1, 3) + " / exact " + format_short(e2, 3) + ", " +
+               format_short(clock.elapsed_seconds(), 3) + " s");
+  }
+  traj.commit();
+  repro::write_table<Row>(dir + "/trajectory_runs.csv",
+                          {{"scene", [](const Row& w) { return std::to_string(w.k); }},
+                           {"name", [](const Row& w) { return w.name; }},
+                           {"max_difference_paper", [](const Row& w) { return w.r.worst[0]; }},
+                           {"max_difference_replace", [](const Row& w) { return w.r.worst[1]; }},
+                           {"energy_error_paper", [](const Row& w) { return w.r.energy[0]; }},
+                           {"energy_error_replace", [](const Row& w) { return w.r.energy[1]; }},
+                           {"energy_error_exact", [](const Row& w) { return w.r.energy[2]; }}},
+                          rows);
+}
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const std::string dir = d.out + "/data/segmentation";
+  Claims claims;
+  contact_scans(d, dir, claims);  // 1. contacts of the Sect. 4-5 runs
+  {                               // 2. fuzzed pairs
     const repro::Progress clock("fuzz");
     const int accepted = fuzz(dir, claims);
-    progress("fuzz: " + std::to_string(accepted) + " pairs in " + format_short(clock.elapsed_seconds(), 3) + " s");
+    d.progress("fuzz: " + std::to_string(accepted) + " pairs in " + format_short(clock.elapsed_seconds(), 3) + " s");
   }
-
-  // ---- 4. the rectangle's middle segment ----
+  // 4. the rectangle's middle segment
   const Errors rect = rectangle_case(kRectangleDepth);
   claims.push_back(rectangle_row(kRectangleDepth, rect));
-  progress("rectangle case: force error " + format_short(rect.mode[0].force, 3));
-
-  // ---- 3. trajectories with each rule ----
-  {
-    repro::CsvWriter traj(dir + "/trajectories.csv", {"scene", "time", "difference_paper", "difference_replace"},
-                          {"difference from the run with the exact integration of the runs with the paper's "
-                           "segmentation, small-edge rule kVirtualAndVertex (paper, library default) and "
-                           "kVirtualReplacesVertex (replace): 4.1 |dv_B| (m/s), 4.3 |d sliding distance| (m), "
-                           "5.1 |d dy_A| (m), 5.3 |d vertex position| (m)"});
-    repro::CsvWriter traj_runs(dir + "/trajectory_runs.csv",
-                               {"scene", "name", "max_difference_paper", "max_difference_replace", "energy_error_paper",
-                                "energy_error_replace", "energy_error_exact"});
-    auto vb = [](const dda::Simulation& s) { return s.velocity(1)[0]; };
-    std::vector<Traj> runs;
-    runs.push_back({"4.1 two squares (v_B)", dda::paper::two_squares(), 10, vb, nullptr});
-    for (double phi : {0.0, 10.0, 20.0}) {
-      const dda::paper::Incline in = dda::paper::incline(phi);
-      const Vec2 down = in.downhill;
-      runs.push_back({"4.3 incline phi " + format_short(phi) + " (sliding distance)", in.scene, 500,
-                      [down](const dda::Simulation& s) { return dda::dot(s.centroid(1), down); }, nullptr});
-    }
-    for (double h : {0.1, 1.0})
-      for (dda::HRule rule : {dda::HRule::kMinMaxEdge, dda::HRule::kInscribedRadius})
-        runs.push_back({"5.1 B " + format_short(h) + " m, " + (rule == dda::HRule::kMinMaxEdge ? "unified" : "inscribed") +
-                            " H (dy_A)",
-                        dda::paper::bouncing_block(h, rule).scene, 10,
-                        [](const dda::Simulation& s) { return s.centroid(1).y; }, nullptr});
-    for (auto which : {dda::paper::SmallEdgeCase::kOnSmallEdge, dda::paper::SmallEdgeCase::kOnNeighbourEdge})
-      runs.push_back({std::string("5.3 case ") + (which == dda::paper::SmallEdgeCase::kOnSmallEdge ? "1" : "2") +
-                          " (contacting vertex)",
-                      dda::paper::small_edge_impact(which).scene, 5, nullptr,
-                      [](const dda::Simulation& s) { return s.polygon(1).vertex(0); }});
-    for (std::size_t k = 0; k < runs.size(); ++k) {
-      const Traj& t = runs[k];
-      const repro::Progress clock(t.name);
-      const TrajResult r = run_trajectory(t, k, traj);
-      const double e0 = r.energy[0], e1 = r.energy[1], e2 = r.energy[2];
-      traj_runs.row(std::vector<std::string>{std::to_string(k), t.name, repro::format_full(r.worst[0]),
-                                             repro::format_full(r.worst[1]), repro::format_full(e0),
-                                             repro::format_full(e1), repro::format_full(e2)});
-      const bool friction = t.scene.contact.friction() && t.scene.contact.friction_deg > 0.0;
-      claims.push_back(
-          {sec, "effect on the trajectory: " + t.name, "(not discussed in the paper)",
-           "max difference from the exact integration: " + paper_rule + " " + format_short(r.worst[0], 3) + ", " +
-               replace_rule + " " + format_short(r.worst[1], 3) +
-               (r.identical ? " (the two readings' runs never differ)" : "") +
-               (friction ? "; energy change (friction dissipates): paper's rule " : "; energy error: paper's rule ") +
-               format_short(e0, 3) + ", replacing " + format_short(e1, 3) + ", exact " + format_short(e2, 3),
-           "information", false, repro::Kind::kMeasurement});
-      progress(t.name + ": max difference " + format_short(r.worst[0], 3) + " (paper's rule) / " +
-               format_short(r.worst[1], 3) + " (replacing), energy error " + format_short(e0, 3) + " / " +
-               format_short(e1, 3) + " / exact " + format_short(e2, 3) + ", " + format_short(clock.elapsed_seconds(), 3) +
-               " s");
-    }
-    traj.commit();
-    traj_runs.commit();
-  }
-
+  d.progress("rectangle case: force error " + format_short(rect.mode[0].force, 3));
+  trajectory_rows(d, dir, claims);                         // 3. trajectories with each rule
   repro::default_scope(claims, repro::Scope::kExtension);  // a study beyond the paper, every row
-  repro::write_claims(repro::claims_path(out, "5_5_segmentation"), claims);
-  progress("done");
+  repro::write_claims(repro::claims_path(d.out, "5_5_segmentation"), claims);
+  d.progress("done");
   return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "segmentation: error: %s\n", e.what());
-  return 1;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, {}, reproduce); }

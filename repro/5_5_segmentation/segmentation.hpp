@@ -14,7 +14,7 @@
 #include "dda/polygon.hpp"
 #include "dda/simulation.hpp"
 #include "repro/common/claims.hpp"
-#include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 
 namespace segmentation {
 
@@ -78,10 +78,21 @@ struct SceneStats {
   double seconds = 0.0;
 };
 
+// One compared contact of a scan (contacts.csv) or of the fuzz (fuzz.csv).
+struct Compared {
+  int scene;  // the scan's scene number (contacts.csv)
+  double time;
+  Errors e;
+  bool small_edge;  // the pair has an edge below 0.05 H (fuzz.csv)
+};
+std::vector<repro::Column<Compared>> contact_columns();
+std::vector<repro::Column<Compared>> fuzz_columns();
+
 // Runs `scene` with the library defaults (paper segmentation, paper small-edge
 // rule) and compares every contact every `every` steps under both readings;
-// rows "scene,time,force_error_paper,..." to csv if given.
-SceneStats scan(const std::string& name, const dda::Scene& scene, int every, int scene_id, repro::CsvWriter* csv);
+// each to `table` if given.
+SceneStats scan(const std::string& name, const dda::Scene& scene, int every, int scene_id,
+                repro::TableWriter<Compared>* table);
 
 // The check "the library default integrates every contact of the Sect. 4-5
 // runs exactly": the largest relative force error of reading `tested` over
@@ -112,9 +123,17 @@ struct TrajResult {
   bool identical = false;  // the two readings' runs never differ
 };
 
+// One moment of trajectories.csv: the difference of each reading's run from
+// the exact one.
+struct TrajSample {
+  std::size_t scene;
+  double time, difference_paper, difference_replace;
+};
+std::vector<repro::Column<TrajSample>> trajectory_columns();
+
 // Runs t three times (paper segmentation with each reading, exact) side by
-// side; rows "scene,time,difference_paper,difference_replace" to traj.
-TrajResult run_trajectory(const Traj& t, std::size_t k, repro::CsvWriter& traj);
+// side; every t.every steps a TrajSample of scene k to traj.
+TrajResult run_trajectory(const Traj& t, std::size_t k, repro::TableWriter<TrajSample>& traj);
 
 // ---- 4. the rectangle's middle segment ------------------------------------------
 

@@ -2,14 +2,13 @@
 // the renumbered reruns (collapse.hpp).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <utility>
 
 #include "dda/polygon.hpp"
 #include "repro/6_1_collapse/collapse.hpp"
 #include "repro/common/common.hpp"
-#include "repro/common/sim_output.hpp"
+#include "repro/common/rock_run.hpp"
 #include "repro/common/vtk_output.hpp"
 
 namespace collapse61 {
@@ -49,17 +48,20 @@ struct Start {
   }
 };
 
-// The output files of one case (run_case with a directory).
+// The output files of one case (run_case with a directory): series.csv
+// every kSeriesEvery, frames.csv and blocks.csv every kFrameEvery.
 struct Files {
-  repro::CsvWriter series, frames, states;
+  repro::TableWriter<Sample> series;
+  repro::FrameFiles frames;
   Files(const std::string& cdir, const std::string& note)
       : series(cdir + "/series.csv",
-               {"time", "front_x", "front_cx", "mean_drop", "max_travel", "runout_mass", "E_kinetic", "E_gravity",
-                "E_total", "dt_over_dt_crit"},
+               {repro::field("time", &Sample::t), repro::field("front_x", &Sample::front_x),
+                repro::field("front_cx", &Sample::front_cx), repro::field("mean_drop", &Sample::mean_drop),
+                repro::field("max_travel", &Sample::max_travel), repro::field("runout_mass", &Sample::runout_mass),
+                repro::field("E_kinetic", &Sample::kinetic), repro::field("E_gravity", &Sample::gravity),
+                repro::field("E_total", &Sample::total), repro::field("dt_over_dt_crit", &Sample::dt_ratio)},
                {note}),
-        frames(cdir + "/frames.csv", repro::snapshot_header(), {note}),
-        states(cdir + "/blocks.csv", {"time", "block", "cx", "cy", "vx", "vy", "speed", "dx", "dy", "rotation"},
-               {note}) {}
+        frames(cdir, note) {}
 };
 
 }  // namespace
@@ -100,7 +102,8 @@ CaseResult run_case(int k, const dda::paper::Collapse& col, int threads, const s
   std::unique_ptr<Files> files;
   if (!dir.empty()) files = std::make_unique<Files>(cdir, note);
 
-  auto sample = [&] {
+  repro::RunOutputs outputs;
+  outputs.sample = [&] {
     Sample s = start.measure(sim, col.width);
     const dda::Energy e = sim.energy();
     s.kinetic = e.kinetic;
@@ -108,57 +111,38 @@ CaseResult run_case(int k, const dda::paper::Collapse& col, int threads, const s
     s.total = e.total();
     s.dt_ratio = sim.dt() / sim.critical_time_step();
     r.dt_ratio_max = std::max(r.dt_ratio_max, s.dt_ratio);
-    if (files)
-      files->series.row({s.t, s.front_x, s.front_cx, s.mean_drop, s.max_travel, s.runout_mass, s.kinetic, s.gravity,
-                         s.total, s.dt_ratio});
+    if (files) files->series.row(s);
     r.series.push_back(s);
   };
-  auto frame = [&] {
-    if (!files) return;
-    repro::write_snapshot(files->frames, sim);
-    for (int i = 0; i < n; ++i) {
-      const dda::Vec6& v = sim.velocity(i);
-      const dda::Vec6& d = sim.displacement(i);
-      files->states.row({sim.time(), static_cast<double>(i), sim.centroid(i).x, sim.centroid(i).y, v[0], v[1],
-                         std::hypot(v[0], v[1]), d[0], d[1], d[2]});
-    }
+  outputs.frame = [&] {
+    if (files) files->frames.write(sim);
   };
-  auto vtk = [&](double t) {
+  outputs.snapshot = [&] {
     if (!files) return;
-    repro::write_vtk_polydata(dir + "/vtk/case" + std::to_string(k) + "_t" + time_tag(t) + ".vtk", sim,
+    repro::write_vtk_polydata(dir + "/vtk/case" + std::to_string(k) + "_t" + time_tag(sim.time()) + ".vtk", sim,
                               "Paper A 6.1 collapse case " + std::to_string(k) + " (joint friction " +
                                   format_short(friction, 3) + " deg) t = " + time_tag(sim.time()) + " s",
                               true);
   };
+  outputs.report = [&](long long s, double elapsed) {
+    const Sample& x = r.series.back();
+    return "t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, " +
+           format_short(static_cast<double>(s) / elapsed, 4) + " steps/s, front " + format_short(x.front_x, 4) +
+           " m, mean drop " + format_short(x.mean_drop, 3) + " m";
+  };
 
   const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
-  const auto series_every = std::max(1LL, static_cast<long long>(std::llround(kSeriesEvery / sim.dt())));
-  const auto frame_every = std::max(1LL, static_cast<long long>(std::llround(kFrameEvery / sim.dt())));
-  std::vector<long long> vtk_steps = {0};
+  outputs.series_every = std::max(1LL, static_cast<long long>(std::llround(kSeriesEvery / sim.dt())));
+  outputs.frame_every = std::max(1LL, static_cast<long long>(std::llround(kFrameEvery / sim.dt())));
+  outputs.snapshot_steps = {0};
   for (double t : kPaperTimes)
-    if (t <= duration + 0.5 * sim.dt()) vtk_steps.push_back(std::llround(t / sim.dt()));
-  sample();
-  frame();
-  vtk(0.0);
+    if (t <= duration + 0.5 * sim.dt()) outputs.snapshot_steps.push_back(std::llround(t / sim.dt()));
+  outputs.sample();
+  outputs.frame();
+  outputs.snapshot();
   const repro::Progress clock("");
-  double last_report = 0.0;
-  const repro::OutputSchedule outputs(steps, {series_every, frame_every}, vtk_steps);
   try {
-    for (long long s = 0; s < steps;) {
-      const long long to = outputs.next(s);
-      sim.advance(to - s);
-      s = to;
-      if (outputs.at(s, series_every)) sample();
-      if (outputs.at(s, frame_every)) frame();
-      if (outputs.listed(s)) vtk(sim.time());
-      if (s % series_every == 0 && clock.elapsed_seconds() - last_report > 5.0) {
-        last_report = clock.elapsed_seconds();
-        const Sample& x = r.series.back();
-        progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, " +
-                 format_short(static_cast<double>(s) / last_report, 4) + " steps/s, front " +
-                 format_short(x.front_x, 4) + " m, mean drop " + format_short(x.mean_drop, 3) + " m");
-      }
-    }
+    repro::run_with_outputs(sim, steps, outputs, progress, clock);
   } catch (const dda::SimulationError& e) {
     r.stopped = e.what();  // the series ends at the last sample before the stop
     progress("stopped by a stability guard: " + r.stopped);
@@ -168,7 +152,6 @@ CaseResult run_case(int k, const dda::paper::Collapse& col, int threads, const s
   if (files) {
     files->series.commit();
     files->frames.commit();
-    files->states.commit();
   }
   progress("done: " + std::to_string(r.steps) + " steps in " + format_short(r.wall, 4) + " s (" +
            format_short(static_cast<double>(r.steps) / r.wall, 4) + " steps/s), front " +

@@ -2,6 +2,7 @@
 // sets, and the output files written once for both cases (collapse.hpp).
 #include "repro/6_1_collapse/collapse.hpp"
 #include "repro/common/common.hpp"
+#include "repro/common/rock_run.hpp"
 
 namespace collapse61 {
 
@@ -30,36 +31,47 @@ dda::paper::Collapse recut(dda::paper::Collapse col, const std::vector<dda::Join
 }
 
 void write_summary(const std::string& dir, const std::vector<CaseResult>& runs) {
-  repro::CsvWriter summary(dir + "/summary.csv",
-                           {"case", "joint_friction_deg", "blocks", "dropped", "dropped_area", "H", "dt",
-                            "dt_over_dt_crit_start", "dt_over_dt_crit_max", "duration", "steps", "wall_s",
-                            "steps_per_s", "front_x_end", "runout_mass_end"});
-  for (const CaseResult& r : runs)
-    summary.row({static_cast<double>(r.index), r.friction, static_cast<double>(r.blocks),
-                 static_cast<double>(r.dropped), r.dropped_area, r.h, r.dt, r.dt_ratio0, r.dt_ratio_max, r.duration,
-                 static_cast<double>(r.steps), r.wall, static_cast<double>(r.steps) / r.wall,
-                 r.series.back().front_x, r.series.back().runout_mass});
-  summary.commit();
+  using R = CaseResult;
+  repro::write_table<R>(dir + "/summary.csv",
+                        {repro::field("case", &R::index),
+                         repro::field("joint_friction_deg", &R::friction),
+                         repro::field("blocks", &R::blocks),
+                         repro::field("dropped", &R::dropped),
+                         repro::field("dropped_area", &R::dropped_area),
+                         repro::field("H", &R::h),
+                         repro::field("dt", &R::dt),
+                         repro::field("dt_over_dt_crit_start", &R::dt_ratio0),
+                         repro::field("dt_over_dt_crit_max", &R::dt_ratio_max),
+                         repro::field("duration", &R::duration),
+                         {"steps", [](const R& r) { return static_cast<double>(r.steps); }},
+                         repro::field("wall_s", &R::wall),
+                         {"steps_per_s", [](const R& r) { return static_cast<double>(r.steps) / r.wall; }},
+                         {"front_x_end", [](const R& r) { return r.series.back().front_x; }},
+                         {"runout_mass_end", [](const R& r) { return r.series.back().runout_mass; }}},
+                        runs);
 }
 
 void write_boundaries(const std::string& dir) {
-  const dda::paper::Collapse col = dda::paper::collapse(kFrictions[0]);
-  repro::CsvWriter b(dir + "/boundaries.csv", {"ax", "ay", "bx", "by", "depth"},
-                     {"boundary segments, solid on the right of a -> b"});
-  for (const dda::BoundarySegment& s : col.scene.boundaries) b.row({s.a.x, s.a.y, s.b.x, s.b.y, s.depth});
-  b.commit();
+  repro::write_boundaries(dir + "/boundaries.csv", dda::paper::collapse(kFrictions[0]).scene.boundaries);
 }
 
 void write_renumbered(const std::string& dir, const Ends& ends) {
-  repro::CsvWriter rn(dir + "/renumbered.csv", {"case", "order", "front_x_end", "runout_mass_end", "mean_drop_end"},
-                      {"Paper A Sect. 6.1 reconstructed: each case with its blocks numbered by the generator, by "
-                       "centroid x and by centroid y (order: 0 generator, 1 x, 2 y), end of the run"});
+  struct End {
+    int order, c;
+    const Sample* e;
+  };
+  std::vector<End> rows;
   for (int o = 0; o < 3; ++o)
-    for (int c = 0; c < 2; ++c) {
-      const Sample& e = ends[static_cast<std::size_t>(o)][static_cast<std::size_t>(c)];
-      rn.row({c + 1.0, static_cast<double>(o), e.front_x, e.runout_mass, e.mean_drop});
-    }
-  rn.commit();
+    for (int c = 0; c < 2; ++c) rows.push_back({o, c, &ends[static_cast<std::size_t>(o)][static_cast<std::size_t>(c)]});
+  repro::write_table<End>(dir + "/renumbered.csv",
+                          {{"case", [](const End& r) { return r.c + 1.0; }},
+                           {"order", [](const End& r) { return r.order; }},
+                           {"front_x_end", [](const End& r) { return r.e->front_x; }},
+                           {"runout_mass_end", [](const End& r) { return r.e->runout_mass; }},
+                           {"mean_drop_end", [](const End& r) { return r.e->mean_drop; }}},
+                          rows,
+                          {"Paper A Sect. 6.1 reconstructed: each case with its blocks numbered by the generator, by "
+                           "centroid x and by centroid y (order: 0 generator, 1 x, 2 y), end of the run"});
 }
 
 }  // namespace collapse61

@@ -25,6 +25,7 @@ struct ModelRun {
   const dda::paper::TopplingSlumping* ts = nullptr;
   int blocks = 0;
   double duration = 0.0, full_duration = 0.0, dt_ratio0 = 0.0, wall = 0.0, sps = 0.0, time = 0.0;
+  double h = 0.0, dt = 0.0;  // H of Eq. 12 and the time step, m and s
   long long steps = 0;
   Health health;
   SideState left, right, left_half, right_half;  // at the end and at half the duration

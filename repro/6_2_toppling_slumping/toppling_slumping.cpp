@@ -41,21 +41,34 @@
 // the same times), sides.csv (block, side, length along the joints),
 // boundaries.csv, summary.csv (model and controls), vtk/t<T>.vtk;
 // claims/6_2_toppling_slumping.csv.
+#include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "dda/rock_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "repro/6_2_toppling_slumping/rows.hpp"
-#include "repro/6_2_toppling_slumping/toppling_slumping.hpp"
 #include "repro/common/common.hpp"
 #include "repro/common/integrator_options.hpp"
-#include "repro/common/options.hpp"
-#include "repro/common/sim_output.hpp"
+#include "repro/common/rock_run.hpp"
 #include "repro/common/vtk_output.hpp"
+
+// The driver: its name in errors, its progress lines' prefix and its usage line.
+const repro::DriverInfo kInfo = {
+    "toppling_slumping", "6.2 toppling/slumping",
+    "Paper A Sect. 6.2 (Figs. 21-22, geometry reconstructed): toppling and slumping of a jointed valley slope."};
+
+// Its options besides --out.
+const std::initializer_list<repro::OptionHelp> kOptions = {
+    {"--duration", "S", "simulated seconds (default 3.5: the paper's)", false},
+    repro::kThreadsOption,
+    {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true},
+    repro::kExactRotationOption};
 
 namespace {
 using namespace topple;
@@ -65,165 +78,164 @@ constexpr double kFrameEvery = 0.05;   // s
 // A frame time in a file name or caption, 0.1 s resolution.
 std::string time_tag(double t) { return repro::format_fixed(t, 1); }
 
-}  // namespace
+// One row of series.csv: both sides' measures, the energies and the step's
+// margin at one moment.
+struct SeriesRow {
+  double time;
+  SideState left, right;
+  double kinetic, total, dt_ratio;
+};
+std::vector<repro::Column<SeriesRow>> series_columns() {
+  std::vector<repro::Column<SeriesRow>> columns = {{"time", [](const SeriesRow& r) { return r.time; }}};
+  const std::vector<repro::Column<SideState>> side = {repro::field("outward_rotation", &SideState::outward_rotation),
+                                                      repro::field("abs_rotation", &SideState::abs_rotation),
+                                                      repro::field("base_slip", &SideState::base_slip),
+                                                      repro::field("centroid_downdip", &SideState::centroid_downdip),
+                                                      repro::field("rotation_travel", &SideState::rotation_travel),
+                                                      repro::field("toppled_share", &SideState::toppled_share)};
+  for (SideState SeriesRow::*which : {&SeriesRow::left, &SeriesRow::right})
+    for (const repro::Column<SideState>& c : side)
+      columns.push_back({(which == &SeriesRow::left ? "left_" : "right_") + c.name,
+                         [which, cell = c.cell](const SeriesRow& r) { return cell(r.*which); }});
+  columns.push_back({"E_kinetic", [](const SeriesRow& r) { return r.kinetic; }});
+  columns.push_back({"E_total", [](const SeriesRow& r) { return r.total; }});
+  columns.push_back({"dt_over_dt_crit", [](const SeriesRow& r) { return r.dt_ratio; }});
+  return columns;
+}
 
-int main(int argc, char** argv) try {
-  repro::check_command_line(argc, argv, "Paper A Sect. 6.2 (Figs. 21-22, geometry reconstructed): toppling and slumping of a jointed valley slope.",
-                            {{"--duration", "S", "simulated seconds (default 3.5: the paper's)", false},
-                             {"--threads", "N", "OpenMP threads (default 1; results are bit-identical for any count)", true},
-                             {"--return-mapping", "0|1", "1: return-mapping friction update instead of the paper's (default 0)", true},
-                             repro::kExactRotationOption});
-  const std::string out = repro::out_dir(argc, argv);
-  const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
-  const double duration = repro::option_number(argc, argv, "--duration", full.scene.duration);
-  const int threads = repro::option_int(argc, argv, "--threads", 1);
-  if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
-  const bool return_mapping = repro::option_int(argc, argv, "--return-mapping", 0) != 0;
-  dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping(full.min_area, duration);
-  if (return_mapping) ts.scene.contact.friction_update = dda::FrictionUpdate::kReturnMapping;
-  ts.scene.rotation_update = repro::rotation_option(argc, argv);
-  const bool exact_rotation = ts.scene.rotation_update == dda::RotationUpdate::kExact;
-  const repro::Progress progress("6.2 toppling/slumping");
+// The model's run to `duration`: series.csv, frames.csv, blocks.csv, vtk/
+// under `dir`; what it measured.
+ModelRun run_model(const repro::Driver& d, const dda::paper::TopplingSlumping& ts, double duration, int threads,
+                   const std::string& dir, const std::string& note) {
+  ModelRun m;
+  m.ts = &ts;
+  m.duration = duration;
+  m.exact_rotation = ts.scene.rotation_update == dda::RotationUpdate::kExact;
   dda::Simulation sim(ts.scene);
   sim.set_threads(threads);
-  const int n = sim.scene_block_count();
-  const double dt_ratio0 = sim.dt() / sim.predicted_critical_step();
-  progress(std::to_string(n) + " blocks (" + std::to_string(ts.dropped) + " slivers dropped, " +
-           format_short(ts.dropped_area, 3) + " m^2), H = " + format_short(sim.potential_length(0), 4) +
-           " m, dt/dt_crit = " + format_short(dt_ratio0, 3) + " at start");
-  const std::string dir = out + "/data/toppling_slumping";
-  const std::string note = "Paper A Sect. 6.2, geometry reconstructed (Fig. 21 lost)";
+  m.blocks = sim.scene_block_count();
+  m.dt_ratio0 = sim.dt() / sim.predicted_critical_step();
+  m.h = sim.potential_length(0);
+  m.dt = sim.dt();
+  d.progress(std::to_string(m.blocks) + " blocks (" + std::to_string(ts.dropped) + " slivers dropped, " +
+             format_short(ts.dropped_area, 3) + " m^2), H = " + format_short(m.h, 4) +
+             " m, dt/dt_crit = " + format_short(m.dt_ratio0, 3) + " at start");
   const Tracker tracker(sim, ts, ts.side);
   tracker.write_sides(dir + "/sides.csv", note);
-
-  repro::CsvWriter series(dir + "/series.csv",
-                          {"time", "left_outward_rotation", "left_abs_rotation", "left_base_slip",
-                           "left_centroid_downdip", "left_rotation_travel", "left_toppled_share",
-                           "right_outward_rotation", "right_abs_rotation", "right_base_slip", "right_centroid_downdip",
-                           "right_rotation_travel", "right_toppled_share", "E_kinetic", "E_total", "dt_over_dt_crit"},
-                          {note, "rotations in rad (outward: toward the valley), displacements in m, energy in J/m",
-                           // the mode of the run, for the figure's legend
-                           std::string("start: the paper's (from rest, undamped); friction update: ") +
-                               (ts.scene.contact.friction_update == dda::FrictionUpdate::kPaper
-                                    ? "the paper's Eq. 26"
-                                    : "return mapping (not the paper's)") +
-                               (exact_rotation ? "; rotation update: exact (not the paper's)" : "")});
-  repro::CsvWriter frames(dir + "/frames.csv", repro::snapshot_header(), {note});
-  repro::CsvWriter states(dir + "/blocks.csv",
-                          {"time", "block", "cx", "cy", "vx", "vy", "speed", "dx", "dy", "rotation"}, {note});
-  Health health;
-  SideState left, right, left_half, right_half;  // now, and at half the duration
-  const auto half_step = static_cast<long long>(std::llround(duration / sim.dt())) / 2;
-  bool have_half = false;
-  auto sample = [&] {
-    left = tracker.measure(0);
-    right = tracker.measure(1);
-    if (!have_half && sim.step_count() >= half_step) {
-      left_half = left;
-      right_half = right;
+  repro::TableWriter<SeriesRow> series(
+      dir + "/series.csv", series_columns(),
+      {note, "rotations in rad (outward: toward the valley), displacements in m, energy in J/m",
+       // the mode of the run, for the figure's legend
+       std::string("start: the paper's (from rest, undamped); friction update: ") +
+           (ts.scene.contact.friction_update == dda::FrictionUpdate::kPaper ? "the paper's Eq. 26"
+                                                                            : "return mapping (not the paper's)") +
+           (m.exact_rotation ? "; rotation update: exact (not the paper's)" : "")});
+  repro::FrameFiles frames(dir, note);
+  const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
+  bool have_half = false;  // m.left_half, m.right_half: at half the duration
+  repro::RunOutputs outputs;
+  outputs.sample = [&] {
+    m.left = tracker.measure(0);
+    m.right = tracker.measure(1);
+    if (!have_half && sim.step_count() >= steps / 2) {
+      m.left_half = m.left;
+      m.right_half = m.right;
       have_half = true;
     }
-    health.sample(sim);
+    m.health.sample(sim);
     const dda::Energy e = sim.energy();
-    const double ratio = sim.dt() / sim.critical_time_step();
-    series.row({sim.time(), left.outward_rotation, left.abs_rotation, left.base_slip, left.centroid_downdip,
-                left.rotation_travel, left.toppled_share, right.outward_rotation, right.abs_rotation, right.base_slip,
-                right.centroid_downdip, right.rotation_travel, right.toppled_share, e.kinetic, e.total(), ratio});
+    series.row({sim.time(), m.left, m.right, e.kinetic, e.total(), sim.dt() / sim.critical_time_step()});
   };
-  auto frame = [&] {
-    repro::write_snapshot(frames, sim);
-    for (int i = 0; i < n; ++i) {
-      const dda::Vec6& v = sim.velocity(i);
-      const dda::Vec6& d = sim.displacement(i);
-      states.row({sim.time(), static_cast<double>(i), sim.centroid(i).x, sim.centroid(i).y, v[0], v[1],
-                  std::hypot(v[0], v[1]), d[0], d[1], d[2]});
-    }
-  };
-  auto vtk = [&] {
+  outputs.frame = [&] { frames.write(sim); };
+  outputs.snapshot = [&] {
     repro::write_vtk_polydata(dir + "/vtk/t" + time_tag(sim.time()) + ".vtk", sim,
                               "Paper A 6.2 toppling and slumping t = " + time_tag(sim.time()) + " s", true);
   };
-
-  const auto steps = static_cast<long long>(std::llround(duration / sim.dt()));
-  const auto series_every = static_cast<long long>(std::llround(kSeriesEvery / sim.dt()));
-  const auto frame_every = static_cast<long long>(std::llround(kFrameEvery / sim.dt()));
-  const auto vtk_every = static_cast<long long>(std::llround(1.0 / sim.dt()));
-  sample();
-  frame();
-  vtk();
+  outputs.report = [&](long long, double) {
+    return "t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, right outward rotation " +
+           format_short(m.right.outward_rotation * 180.0 / kPi, 3) + " deg, left base slip " +
+           format_short(m.left.base_slip, 3) + " m";
+  };
+  outputs.series_every = static_cast<long long>(std::llround(kSeriesEvery / sim.dt()));
+  outputs.frame_every = static_cast<long long>(std::llround(kFrameEvery / sim.dt()));
+  outputs.snapshot_every = static_cast<long long>(std::llround(1.0 / sim.dt()));
+  outputs.sample();
+  outputs.frame();
+  outputs.snapshot();
   const repro::Progress clock("");
-  double last_report = 0.0;
-  const repro::OutputSchedule outputs(steps, {series_every, frame_every, vtk_every});
-  for (long long s = 0; s < steps;) {
-    const long long to = outputs.next(s);
-    sim.advance(to - s);
-    s = to;
-    if (outputs.at(s, series_every)) sample();
-    if (outputs.at(s, frame_every)) frame();
-    if (outputs.at(s, vtk_every)) vtk();
-    if (s % series_every == 0 && clock.elapsed_seconds() - last_report > 5.0) {
-      last_report = clock.elapsed_seconds();
-      progress("t = " + format_short(sim.time(), 3) + " of " + format_short(duration, 3) + " s, right outward rotation " +
-               format_short(right.outward_rotation * 180.0 / kPi, 3) + " deg, left base slip " +
-               format_short(left.base_slip, 3) + " m");
-    }
-  }
-  const double wall = clock.elapsed_seconds();
-  const double sps = static_cast<double>(sim.step_count()) / wall;
+  repro::run_with_outputs(sim, steps, outputs, d.progress, clock);
+  m.wall = clock.elapsed_seconds();
+  m.steps = sim.step_count();
+  m.time = sim.time();
+  m.sps = static_cast<double>(m.steps) / m.wall;
   series.commit();
   frames.commit();
-  states.commit();
-  progress("done: " + std::to_string(sim.step_count()) + " steps in " + format_short(wall, 4) + " s (" +
-           format_short(sps, 4) + " steps/s)");
-
-  const Controls controls = run_controls(ts, threads, return_mapping);
-
-  {
-    repro::CsvWriter b(dir + "/boundaries.csv", {"ax", "ay", "bx", "by", "depth"},
-                       {"boundary segments, solid on the right of a -> b"});
-    for (const dda::BoundarySegment& g : ts.scene.boundaries) b.row({g.a.x, g.a.y, g.b.x, g.b.y, g.depth});
-    b.commit();
-  }
-  {
-    repro::CsvWriter sum(dir + "/summary.csv",
-                         {"run", "blocks", "dropped", "dropped_area", "H", "dt", "dt_over_dt_crit_start",
-                          "dt_over_dt_crit_max", "duration", "steps", "wall_s", "steps_per_s", "left_outward_rotation",
-                          "left_base_slip", "right_outward_rotation", "right_base_slip"},
-                         {note, "run 0: the model; 1: joints locked (80 deg); 2: each slope one block"});
-    sum.row({0.0, static_cast<double>(n), static_cast<double>(ts.dropped), ts.dropped_area, sim.potential_length(0),
-             sim.dt(), dt_ratio0, health.ratio_max, duration, static_cast<double>(sim.step_count()), wall, sps,
-             left.outward_rotation, left.base_slip, right.outward_rotation, right.base_slip});
-    int k = 1;
-    for (const Control* c : {&controls.locked, &controls.whole}) {
-      sum.row({static_cast<double>(k), k == 1 ? static_cast<double>(n) : 2.0, 0.0, 0.0, 0.0, sim.dt(), 0.0, 0.0,
-               duration, static_cast<double>(c->steps), c->wall, static_cast<double>(c->steps) / c->wall,
-               c->left.outward_rotation, c->left.base_slip, c->right.outward_rotation, c->right.base_slip});
-      ++k;
-    }
-    sum.commit();
-  }
-
-  ModelRun m;
-  m.ts = &ts;
-  m.blocks = n;
-  m.duration = duration;
-  m.full_duration = full.scene.duration;
-  m.dt_ratio0 = dt_ratio0;
-  m.wall = wall;
-  m.sps = sps;
-  m.time = sim.time();
-  m.steps = sim.step_count();
-  m.health = health;
-  m.left = left;
-  m.right = right;
-  m.left_half = left_half;
-  m.right_half = right_half;
-  m.return_mapping = return_mapping;
-  m.exact_rotation = exact_rotation;
-  const std::vector<repro::Claim> claims = rows(m, controls);
-  repro::write_claims(repro::claims_path(out, "6_2_toppling_slumping"), claims);
-  return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "toppling_slumping: %s\n", e.what());
-  return 1;
+  d.progress("done: " + std::to_string(m.steps) + " steps in " + format_short(m.wall, 4) + " s (" +
+             format_short(m.sps, 4) + " steps/s)");
+  return m;
 }
+
+// summary.csv: the model (run 0) and the two controls.
+void write_summary(const std::string& path, const std::string& note, const ModelRun& m, const Controls& controls) {
+  struct Run {
+    int run, blocks, dropped;
+    double dropped_area, h, dt_ratio0, ratio_max;
+    long long steps;
+    double wall;
+    SideState left, right;
+  };
+  const dda::paper::TopplingSlumping& ts = *m.ts;
+  std::vector<Run> runs = {{0, m.blocks, ts.dropped, ts.dropped_area, m.h, m.dt_ratio0, m.health.ratio_max, m.steps,
+                            m.wall, m.left, m.right}};
+  int k = 1;
+  for (const Control* c : {&controls.locked, &controls.whole}) {
+    runs.push_back({k, k == 1 ? m.blocks : 2, 0, 0.0, 0.0, 0.0, 0.0, c->steps, c->wall, c->left, c->right});
+    ++k;
+  }
+  const double duration = m.duration, dt = m.dt;
+  repro::write_table<Run>(path,
+                          {{"run", [](const Run& r) { return r.run; }},
+                           {"blocks", [](const Run& r) { return r.blocks; }},
+                           {"dropped", [](const Run& r) { return r.dropped; }},
+                           {"dropped_area", [](const Run& r) { return r.dropped_area; }},
+                           {"H", [](const Run& r) { return r.h; }},
+                           {"dt", [dt](const Run&) { return dt; }},
+                           {"dt_over_dt_crit_start", [](const Run& r) { return r.dt_ratio0; }},
+                           {"dt_over_dt_crit_max", [](const Run& r) { return r.ratio_max; }},
+                           {"duration", [duration](const Run&) { return duration; }},
+                           {"steps", [](const Run& r) { return static_cast<double>(r.steps); }},
+                           {"wall_s", [](const Run& r) { return r.wall; }},
+                           {"steps_per_s", [](const Run& r) { return static_cast<double>(r.steps) / r.wall; }},
+                           {"left_outward_rotation", [](const Run& r) { return r.left.outward_rotation; }},
+                           {"left_base_slip", [](const Run& r) { return r.left.base_slip; }},
+                           {"right_outward_rotation", [](const Run& r) { return r.right.outward_rotation; }},
+                           {"right_base_slip", [](const Run& r) { return r.right.base_slip; }}},
+                          runs, {note, "run 0: the model; 1: joints locked (80 deg); 2: each slope one block"});
+}
+
+// The run: what main's driver_main calls once the command line is checked.
+int reproduce(const repro::Driver& d) {
+  const dda::paper::TopplingSlumping full = dda::paper::toppling_slumping();
+  const double duration = d.number("--duration", full.scene.duration);
+  const int threads = d.whole("--threads", 1);
+  if (!(duration > 0.0)) throw std::invalid_argument("--duration must be positive");
+  const bool return_mapping = d.whole("--return-mapping", 0) != 0;
+  dda::paper::TopplingSlumping ts = dda::paper::toppling_slumping(full.min_area, duration);
+  if (return_mapping) ts.scene.contact.friction_update = dda::FrictionUpdate::kReturnMapping;
+  ts.scene.rotation_update = repro::rotation_option(d.argc, d.argv);
+  const std::string dir = d.out + "/data/toppling_slumping";
+  const std::string note = "Paper A Sect. 6.2, geometry reconstructed (Fig. 21 lost)";
+
+  ModelRun m = run_model(d, ts, duration, threads, dir, note);
+  m.full_duration = full.scene.duration;
+  m.return_mapping = return_mapping;
+  const Controls controls = run_controls(ts, threads, return_mapping);
+  repro::write_boundaries(dir + "/boundaries.csv", ts.scene.boundaries);
+  write_summary(dir + "/summary.csv", note, m, controls);
+  repro::write_claims(repro::claims_path(d.out, "6_2_toppling_slumping"), rows(m, controls));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return repro::driver_main(argc, argv, kInfo, kOptions, reproduce); }

@@ -95,14 +95,17 @@ class Tracker {
   }
 
   void write_sides(const std::string& path, const std::string& note) const {
-    repro::CsvWriter c(path, {"block", "side", "mass", "length", "base_vertex_a", "base_vertex_b"},
-                       {note, "side -1: left slope, +1: right slope"});
-    for (std::size_t u = 0; u < blocks_.size(); ++u) {
-      const Block& b = blocks_[u];
-      c.row({static_cast<double>(u), b.which == 0 ? -1.0 : 1.0, b.mass, b.length, static_cast<double>(b.base_a),
-             static_cast<double>(b.base_b)});
-    }
-    c.commit();
+    std::vector<std::size_t> blocks(blocks_.size());
+    for (std::size_t u = 0; u < blocks.size(); ++u) blocks[u] = u;
+    const auto b = [this](std::size_t u) -> const Block& { return blocks_[u]; };
+    repro::write_table<std::size_t>(path,
+                                    {{"block", [](std::size_t u) { return u; }},
+                                     {"side", [b](std::size_t u) { return b(u).which == 0 ? -1 : 1; }},
+                                     {"mass", [b](std::size_t u) { return b(u).mass; }},
+                                     {"length", [b](std::size_t u) { return b(u).length; }},
+                                     {"base_vertex_a", [b](std::size_t u) { return b(u).base_a; }},
+                                     {"base_vertex_b", [b](std::size_t u) { return b(u).base_b; }}},
+                                    blocks, {note, "side -1: left slope, +1: right slope"});
   }
 
  private:

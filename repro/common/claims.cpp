@@ -67,6 +67,13 @@ Cause root_cause(Root root) {
   return Cause::kNone;
 }
 
+Claim& add_claim(std::vector<Claim>& claims, Claim c, std::string control, Scope scope) {
+  c.control = std::move(control);
+  c.scope = scope;
+  claims.push_back(std::move(c));
+  return claims.back();
+}
+
 Claim& explain_fail(Claim& c, Root root, std::string text) {
   if (c.kind == Kind::kCheck && !c.pass) {
     c.root = root;

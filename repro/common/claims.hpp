@@ -95,6 +95,11 @@ Claim measurement(std::string section, std::string claim, std::string paper, std
 // driver whatever the verdict is).
 Claim& explain_fail(Claim& c, Root root, std::string text);
 
+// Appends `c` to `claims` with its negative control (`control`, as in
+// Claim::control) and its scope; returns the appended row, so that
+// explain_fail can follow: explain_fail(add_claim(claims, c, ctl, scope), ...).
+Claim& add_claim(std::vector<Claim>& claims, Claim c, std::string control, Scope scope);
+
 // Sets the scope of every row of `claims` that has none (a driver whose rows
 // are all of one scope says so once).
 void default_scope(std::vector<Claim>& claims, Scope scope);

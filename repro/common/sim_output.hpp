@@ -8,6 +8,7 @@
 
 #include "dda/simulation.hpp"
 #include "repro/common/csv.hpp"
+#include "repro/common/table.hpp"
 
 namespace repro {
 
@@ -21,6 +22,36 @@ inline void write_snapshot(CsvWriter& csv, const dda::Simulation& sim) {
     for (int k = 0; k < p.count; ++k)
       csv.row({sim.time(), static_cast<double>(i), static_cast<double>(k), p.vertex(k).x, p.vertex(k).y});
   }
+}
+
+// One vertex of one block's polygon at a moment: a row of a snapshot table
+// (columns "time,block,vertex,x,y", snapshot_columns()).
+struct VertexRow {
+  double time;
+  int block, vertex;
+  dda::Vec2 p;
+};
+inline std::vector<Column<VertexRow>> snapshot_columns() {
+  return {{"time", [](const VertexRow& v) { return v.time; }},
+          {"block", [](const VertexRow& v) { return v.block; }},
+          {"vertex", [](const VertexRow& v) { return v.vertex; }},
+          {"x", [](const VertexRow& v) { return v.p.x; }},
+          {"y", [](const VertexRow& v) { return v.p.y; }}};
+}
+
+// Every scene block's polygon (boundary polygons too) at sim.time(), as rows.
+inline std::vector<VertexRow> snapshot_rows(const dda::Simulation& sim) {
+  std::vector<VertexRow> rows;
+  for (int i = 0; i < sim.block_count(); ++i) {
+    const dda::Polygon& p = sim.polygon(i);
+    for (int k = 0; k < p.count; ++k) rows.push_back({sim.time(), i, k, p.vertex(k)});
+  }
+  return rows;
+}
+
+// Appends snapshot_rows(sim) to a snapshot table.
+inline void write_snapshot(TableWriter<VertexRow>& table, const dda::Simulation& sim) {
+  table.rows(snapshot_rows(sim));
 }
 
 // When a driver writes output during a run of `steps` steps: at every

@@ -152,6 +152,25 @@ TEST_CASE("claim ids: explicit key, or a bounded slug of the claim", "[claims]")
   CHECK(repro::claim_id(c).size() < 100);
 }
 
+TEST_CASE("add_claim appends the row with its control and scope; explain_fail follows on a failing check",
+          "[claims]") {
+  std::vector<repro::Claim> claims;
+  repro::Claim& passing = repro::add_claim(claims, {"4.3", "passes", "", "", "", true}, "repro_controls: a",
+                                           repro::Scope::kPaper);
+  CHECK(&passing == &claims.back());
+  CHECK(passing.control == "repro_controls: a");
+  CHECK(passing.scope == repro::Scope::kPaper);
+  repro::explain_fail(passing, repro::Root::kUnexplained, "not used");
+  CHECK(passing.root == repro::Root::kNone);
+  repro::explain_fail(repro::add_claim(claims, {"4.3", "fails", "", "", "", false}, "", repro::Scope::kOption),
+                      repro::Root::kSegmentation, "why");
+  REQUIRE(claims.size() == 2);
+  CHECK(claims[1].scope == repro::Scope::kOption);
+  CHECK(claims[1].root == repro::Root::kSegmentation);
+  CHECK(claims[1].cause_text == "why");
+  CHECK(claims[0].claim == "passes");
+}
+
 TEST_CASE("out_dir parses --out", "[cli]") {
   char a0[] = "prog", a1[] = "--out", a2[] = "dir1", a3[] = "--out=dir2", a4[] = "--other";
   char* v1[] = {a0};
