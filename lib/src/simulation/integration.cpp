@@ -24,7 +24,7 @@ bool inside(const Aabb& b, const Aabb& grown) {
 
 }  // namespace
 
-void Simulation::move_blocks() {
+void Engine::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
   // block's geometry, its body forces, and whether its box left its grown
   // box (the broad phase's list then needs a rebuild).
@@ -59,10 +59,10 @@ void Simulation::move_blocks() {
   mine.left_skin = left_skin;
   if (share.team && share.end > share.begin)
     mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
-  team_barrier(kPhaseMove);
+  team_barrier(Simulation::kPhaseMove);
 }
 
-void Simulation::prefetch_block(int i) const {
+void Engine::prefetch_block(int i) const {
   // What moving block i reads and writes, for writing where it is written
   // (the other core may hold a copy from the pair loop).
   prefetch_polygon<1>(polygon_view(i));
@@ -75,7 +75,7 @@ void Simulation::prefetch_block(int i) const {
   __builtin_prefetch(&step_disp_[i], 1);
 }
 
-void Simulation::prefetch_gather(int i) const {
+void Engine::prefetch_gather(int i) const {
   // Block i's pair loads (the other core wrote those of its pairs) and the
   // force and velocity its kick writes.
   for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q)
@@ -84,11 +84,11 @@ void Simulation::prefetch_gather(int i) const {
   __builtin_prefetch(&force_[i], 1);
 }
 
-void Simulation::update_geometry() {
+void Engine::update_geometry() {
   for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
 }
 
-void Simulation::update_block_geometry(int i) {
+void Engine::update_block_geometry(int i) {
   const PolygonGeometry g = update_polygon_geometry(polygon_span(i));
   moments_[i] = g.moments;
   boxes_[i] = g.box;
@@ -111,7 +111,7 @@ void Simulation::update_block_geometry(int i) {
   density_[i] = mass_[i] / moments_[i].area;
 }
 
-void Simulation::body_force(int i) {
+void Engine::body_force(int i) {
   // Gravity (int T^T rho g dS = rho S g on the translation DOFs) and the
   // step's initial stress on the strain DOFs (K d of Eq. 4 carried as
   // accumulated stress because d is reset every step).
@@ -123,7 +123,7 @@ void Simulation::body_force(int i) {
   if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
 }
 
-void Simulation::gather_contact_forces(int i) {
+void Engine::gather_contact_forces(int i) {
   // Block i's contact forces, Eqs. 22-23 and 28-29 through T(pg)^T, added
   // in increasing pair order (the same bits for any thread count); and the
   // smallest inscribed radius within its reach (itself and its candidates)
@@ -163,7 +163,7 @@ void Simulation::gather_contact_forces(int i) {
   reach_radius_[i] = reach;
 }
 
-void Simulation::gather_and_kick() {
+void Engine::gather_and_kick() {
   // Per block: its contact forces, a^{n+1}, the second half kick, and the
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
@@ -181,10 +181,10 @@ void Simulation::gather_and_kick() {
   if (share.team && share.end > share.begin)
     mine.seconds_per_block =
         smoothed(mine.seconds_per_block, mine.move_seconds_per_block + seconds_since(t0) / (share.end - share.begin));
-  team_barrier(kPhaseKick);
+  team_barrier(Simulation::kPhaseKick);
 }
 
-Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
+Vec6 Engine::force_acceleration(int i, const Vec6& f) const {
   // M^-1 f (Eq. 5a).
   const AreaMoments& m = moments_[i];
   const double mass = density_[i] * m.area;
@@ -201,7 +201,7 @@ Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
   return a;
 }
 
-void Simulation::kick_block(int i) {
+void Engine::kick_block(int i) {
   if (damped_) {
     damped_kick_block(i);  // Eq. 5c (damping.cpp)
     return;
@@ -210,7 +210,7 @@ void Simulation::kick_block(int i) {
   vel_[i] += 0.5 * dt_ * acc_[i];
 }
 
-void Simulation::kick() {
+void Engine::kick() {
   for (int i = 0; i < block_count(); ++i)
     if (!fixed_[i]) kick_block(i);
 }

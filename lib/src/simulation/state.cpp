@@ -104,7 +104,7 @@ void get_list(ByteReader& r, std::vector<T>& v, std::size_t expected, const char
 
 }  // namespace
 
-void Simulation::save_state(ByteWriter& w) const {
+void Engine::save_state(ByteWriter& w) const {
   // The opening record: what the restoring simulation checks it matches.
   w.u32(kStateLayout);
   w.i32(block_count());
@@ -195,7 +195,7 @@ void Simulation::save_state(ByteWriter& w) const {
   w.i64(broad_phase_rebuilds_);
 }
 
-void Simulation::restore_state(ByteReader& r) {
+void Engine::restore_state(ByteReader& r) {
   const std::uint32_t layout = r.u32();
   if (layout != kStateLayout)
     r.fail("state layout " + std::to_string(layout) + ", this build reads layout " + std::to_string(kStateLayout));
