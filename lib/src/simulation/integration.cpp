@@ -24,18 +24,30 @@ bool inside(const Aabb& b, const Aabb& grown) {
 
 }  // namespace
 
+template <class Prefetch, class Each>
+[[gnu::always_inline]] inline double Engine::over_block_share(const ThreadFlags& mine, Prefetch prefetch, Each each) {
+  // Each block of this thread's share (block_share) in order, prefetching
+  // kPrefetchBlocks ahead in a team; with a team, the share's seconds per
+  // block since the phase began (the last barrier's exit, team_barrier),
+  // else -1.
+  const BlockShare share = block_share();
+  const PhaseClock::time_point t0 = mine.phase_start;
+  for (int i = share.begin; i < share.end; ++i) {
+    if (i < share.prefetch_end) prefetch(i + kPrefetchBlocks);
+    each(i);
+  }
+  return share.team && share.end > share.begin ? seconds_since(t0) / (share.end - share.begin) : -1.0;
+}
+
 void Engine::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
   // block's geometry, its body forces, and whether its box left its grown
   // box (the broad phase's list then needs a rebuild).
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
-  const BlockShare share = block_share();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
-  const PhaseClock::time_point t0 = mine.phase_start;  // the last barrier's exit (team_barrier)
-  for (int i = share.begin; i < share.end; ++i) {
-    if (i < share.prefetch_end) prefetch_block(i + kPrefetchBlocks);
-    if (fixed_[i]) continue;
+  const double per_block = over_block_share(mine, [&](int i) { prefetch_block(i); }, [&](int i) __attribute__((always_inline)) {
+    if (fixed_[i]) return;
     vel_[i] += 0.5 * dt_ * acc_[i];
     const Vec6 dd = dt_ * vel_[i];  // Eq. 8
     step_disp_[i] = dd;
@@ -55,10 +67,9 @@ void Engine::move_blocks() {
     update_block_geometry(i);
     body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
-  }
+  });
   mine.left_skin = left_skin;
-  if (share.team && share.end > share.begin)
-    mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
+  if (per_block >= 0.0) mine.move_seconds_per_block = per_block;
   team_barrier(Simulation::kPhaseMove);
 }
 
@@ -167,20 +178,15 @@ void Engine::gather_and_kick() {
   // Per block: its contact forces, a^{n+1}, the second half kick, and the
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
-  const BlockShare share = block_share();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
-  const PhaseClock::time_point t0 = mine.phase_start;  // the last barrier's exit (team_barrier)
-  for (int i = share.begin; i < share.end; ++i) {
-    if (i < share.prefetch_end) prefetch_gather(i + kPrefetchBlocks);
+  const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
     gather_contact_forces(i);
-    if (fixed_[i]) continue;
+    if (fixed_[i]) return;
     kick_block(i);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
-  }
+  });
   mine.guard_failed = failed;
-  if (share.team && share.end > share.begin)
-    mine.seconds_per_block =
-        smoothed(mine.seconds_per_block, mine.move_seconds_per_block + seconds_since(t0) / (share.end - share.begin));
+  if (per_block >= 0.0) mine.seconds_per_block = smoothed(mine.seconds_per_block, mine.move_seconds_per_block + per_block);
   team_barrier(Simulation::kPhaseKick);
 }
 

@@ -123,6 +123,8 @@ class Engine {
   void check_stiffness_damping() const;
   void prefetch_block(int i) const;
   void prefetch_gather(int i) const;
+  template <class Prefetch, class Each>
+  double over_block_share(const ThreadFlags& mine, Prefetch prefetch, Each each);
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
   void update_near_pairs();
   void rebuild_near_pairs();
@@ -404,21 +406,13 @@ void prefetch_polygon(PolygonView p) {
 
 // This thread's index in the team (0 outside a parallel region), and the
 // team's size (1 outside).
-inline int thread_index() {
 #if defined(DDA_HAVE_OPENMP)
-  return omp_get_thread_num();
+inline int thread_index() { return omp_get_thread_num(); }
+inline int team_size() { return omp_get_num_threads(); }
 #else
-  return 0;
+inline int thread_index() { return 0; }
+inline int team_size() { return 1; }
 #endif
-}
-
-inline int team_size() {
-#if defined(DDA_HAVE_OPENMP)
-  return omp_get_num_threads();
-#else
-  return 1;
-#endif
-}
 
 // The extent of `ip` along direction `dir` (any length), times |dir|:
 // max - min of v . dir over its vertices. Along the pair's normal force
