@@ -1,40 +1,23 @@
 """Reading helpers for the Paper B (CDEM) figures: CSV tables with text columns.
 
 potential_common.read_csv reads numeric tables only; the CDEM drivers also
-write text columns (labels, scene and model names). save_atomic is reused.
+write text columns (labels, scene and model names). The record reading
+(with '#' lines as comments before the header only: text cells may start
+with '#') and save_atomic are potential_common's.
 """
-import csv
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from potential_common import plt, read_csv, save_atomic  # noqa: E402,F401
-
-
-def _read_records(path):
-    """(comment lines, header, data records) of a driver's CSV file."""
-    comments, rows, header = [], [], None
-    with open(path, newline="") as f:
-        for rec in csv.reader(f):
-            if not rec:
-                continue
-            if header is None and rec[0].startswith("#"):
-                comments.append(",".join(rec).lstrip("# ").rstrip())
-            elif header is None:
-                header = rec
-            else:
-                rows.append(rec)
-    if header is None or not rows:
-        raise SystemExit(f"{path}: no header or no data rows")
-    return comments, header, rows
+from potential_common import plt, read_csv, read_records, save_atomic  # noqa: E402,F401
 
 
 def read_table(path, text=()):
     """Returns (comment lines, {column: array}); columns named in `text` stay
     strings, the others are floats and must be finite."""
-    comments, header, rows = _read_records(path)
+    comments, header, rows = read_records(path, comments_after_header=False)
     cols = {}
     for i, name in enumerate(header):
         vals = [r[i] for r in rows]
@@ -52,7 +35,7 @@ def read_rows(path, text=()):
     """Returns (comment lines, [ {column: value} per row ]): columns named in
     `text` stay strings; the others are floats, which must be finite, or None
     where the cell is empty (e.g. a run that stopped has no measured value)."""
-    comments, header, rows = _read_records(path)
+    comments, header, rows = read_records(path, comments_after_header=False)
     out = []
     for rec in rows:
         r = dict(zip(header, rec))

@@ -13,7 +13,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import paper_common as paper  # noqa: E402
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import np, plt, read_csv, save_atomic  # noqa: E402
+from potential_common import np, plt, read_csv, save_tight, script_main  # noqa: E402
 
 # The rows' criteria (repro/4_1_two_squares/two_squares.hpp).
 VELOCITY_TOL = 0.01  # m/s, kVelocityTol: on v_A and v_B - 1 m/s at the end
@@ -60,11 +60,8 @@ def main(data, out_png):
     ax2.set_ylabel("relative error")
     ax2.legend(fontsize=7, loc="center left", ncol=1)
     ax2.grid(alpha=0.3, which="major")
-    fig.tight_layout()
-    save_atomic(fig, out_png)
+    save_tight(fig, out_png)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

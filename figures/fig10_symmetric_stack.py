@@ -13,7 +13,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import np, plt, read_csv, save_atomic  # noqa: E402
+from potential_common import np, plt, read_csv, save_tight, script_main, snapshot_outlines  # noqa: E402
 
 POSITION_TOL = 1e-6  # m: the row's criterion (repro/4_2_symmetric_stack/symmetric_stack.hpp, kPositionTol)
 FLOOR = 1e-17        # m: zeros drawn at this level on the log axis
@@ -25,11 +25,8 @@ def main(data, out_png):
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 6.6), gridspec_kw={"width_ratios": [3, 2]})
     times = np.unique(sn["time"])
     for t, style in zip([times[0], times[-1]], [dict(color="0.7", lw=1), dict(color="k", lw=1.2)]):
-        sel = sn["time"] == t
-        for b in np.unique(sn["block"][sel]):
-            m = sel & (sn["block"] == b)
-            x, y = sn["x"][m], sn["y"][m]
-            ax.plot(np.append(x, x[0]), np.append(y, y[0]), **style)
+        for x, y in snapshot_outlines(sn, sn["time"] == t):
+            ax.plot(x, y, **style)
     ax.plot([], [], color="0.7", label="blocks at t = 0")
     ax.plot([], [], color="k", label="blocks at t = %.1f s" % times[-1])
     n = sum(1 for k in tr if k.startswith("x"))
@@ -69,11 +66,8 @@ def main(data, out_png):
     ax2.set_title("mirror asymmetry of the centroids", fontsize=10)
     ax2.legend(fontsize=8, loc="upper left")
     ax2.grid(alpha=0.3)
-    fig.tight_layout()
-    save_atomic(fig, out_png)
+    save_tight(fig, out_png)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

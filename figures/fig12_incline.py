@@ -14,7 +14,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import np, plt, read_csv, save_atomic  # noqa: E402
+from potential_common import np, plt, read_csv, save_tight, script_main  # noqa: E402
 
 BAND = 0.01  # |rel. error| < 1 % of Eq. 30 at t = 1 s (repro/4_3_incline/incline.hpp, kTol)
 
@@ -71,11 +71,8 @@ def main(data, out_png):
     ax2.set_ylim(lo - 0.4 * (hi - lo), hi + 0.4 * (hi - lo))
     ax2.legend(fontsize=7.5, loc="lower right")
     ax2.grid(alpha=0.3)
-    fig.tight_layout()
-    save_atomic(fig, out_png)
+    save_tight(fig, out_png)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

@@ -7,7 +7,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paper_common import BAND_STYLE  # noqa: E402
-from potential_common import np, plt, read_csv, save_atomic  # noqa: E402
+from potential_common import np, plt, read_csv, save_tight  # noqa: E402
 
 # The row's criterion (repro/5_1_bouncing_block/bouncing_block.hpp, kRatioMax):
 # the largest case 1 - case 2 difference under the unified H is at most half
@@ -41,5 +41,4 @@ ax2.set_xlabel("time (s)")
 ax2.set_ylabel("case 1 - case 2 (m)")
 ax2.legend(fontsize=7, loc="lower left")
 ax2.grid(alpha=0.3)
-fig.tight_layout()
-save_atomic(fig, sys.argv[2])
+save_tight(fig, sys.argv[2])

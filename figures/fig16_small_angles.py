@@ -14,7 +14,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import np, plt, read_csv, save_atomic  # noqa: E402
+from potential_common import np, plt, read_csv, save_tight, script_main, snapshot_outlines  # noqa: E402
 
 # The rows' criteria (repro/5_2_small_angles/small_angles.hpp).
 SYMMETRY_TOL = 1e-9  # m, kSymmetryTol
@@ -25,11 +25,8 @@ FLOOR = 1e-18        # zeros drawn at this level on the log axes
 def draw_snapshots(ax, sn):
     times = np.unique(sn["time"])
     for t, style in zip([times[0], times[-1]], [dict(color="0.65", lw=1.0), dict(color="k", lw=1.3)]):
-        sel = sn["time"] == t
-        for b in np.unique(sn["block"][sel]):
-            m = sel & (sn["block"] == b)
-            x, y = sn["x"][m], sn["y"][m]
-            ax.fill(np.append(x, x[0]), np.append(y, y[0]), fc="none", ec=style["color"], lw=style["lw"])
+        for x, y in snapshot_outlines(sn, sn["time"] == t):
+            ax.fill(x, y, fc="none", ec=style["color"], lw=style["lw"])
     ax.plot([], [], color="0.65", label="triangles at t = 0")
     ax.plot([], [], color="k", label="triangles at t = %.2f s" % times[-1])
     return times
@@ -83,11 +80,8 @@ def main(data, out_png):
     a2.set_ylabel("relative energy error")
     a2.legend(fontsize=7, loc="lower right")
     a2.grid(alpha=0.3)
-    fig.tight_layout()
-    save_atomic(fig, out_png)
+    save_tight(fig, out_png)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

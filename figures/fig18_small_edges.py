@@ -13,7 +13,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import paper_common as paper  # noqa: E402
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import np, plt, read_csv, save_atomic  # noqa: E402
+from potential_common import np, plt, read_csv, save_atomic, snapshot_outlines  # noqa: E402
 
 DEPTH_TOL = 0.05  # m: the row's bound on the deepest vertex (repro/5_3_small_edges/small_edges.hpp, add_claims)
 
@@ -21,12 +21,6 @@ if len(sys.argv) != 3:
     raise SystemExit(__doc__)
 _, tr = read_csv(os.path.join(sys.argv[1], "traces.csv"))
 _, sn = read_csv(os.path.join(sys.argv[1], "snapshots.csv"))
-
-
-def outline(sel, block):
-    m = sel & (sn["block"] == block)
-    x, y = sn["x"][m], sn["y"][m]
-    return np.append(x, x[0]), np.append(y, y[0])
 
 
 fig, axes = plt.subplots(3, 2, figsize=(11, 13.5), gridspec_kw={"height_ratios": [3, 2, 1.6]})
@@ -39,9 +33,7 @@ for col, case in enumerate([1, 2]):
         ax.plot([], [], color="0.6", label="blocks at t = 0")
         ax.plot([], [], color="k", label="blocks at t = %.2f s" % times[-1])
         for tt, style in zip([times[0], times[-1]], [dict(color="0.6", lw=1.0), dict(color="k", lw=1.3)]):
-            sel = s & (sn["time"] == tt)
-            for b in np.unique(sn["block"][sel]):
-                x, y = outline(sel, b)
+            for x, y in snapshot_outlines(sn, s & (sn["time"] == tt)):
                 ax.plot(x, y, **style)
         ax.plot(tr["vertex_x"][t], tr["vertex_y"][t], "C3-", lw=1.2, label="ours: trace of the contacting vertex")
         ax.plot(tr["centroid_x"][t], tr["centroid_y"][t], "C0:", lw=1.5, label="ours: trace of the upper block's centroid")

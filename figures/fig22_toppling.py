@@ -13,10 +13,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from blocks_common import Frames, draw_blocks, draw_boundaries, np, plt, read_boundaries, read_csv, save_atomic  # noqa: E402
+from blocks_common import Frames, draw_blocks, draw_boundaries, np, plt, read_boundaries, read_csv  # noqa: E402
 import matplotlib.colors  # noqa: E402
 import paper_common as paper  # noqa: E402
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
+from potential_common import save_tight  # noqa: E402
 
 # The rows' bands (repro/6_2_toppling_slumping/rows.cpp): toppling needs a
 # mean outward rotation above 10 deg; slumping a base slip above 0.5 m with
@@ -92,5 +93,4 @@ a2.set_xlabel("time (s)")
 a2.set_ylabel("mass-weighted mean along the base, down-dip (m)")
 a2.legend(fontsize=7.5, loc="upper left")
 a2.grid(alpha=0.3)
-fig.tight_layout()
-save_atomic(fig, sys.argv[2])
+save_tight(fig, sys.argv[2])

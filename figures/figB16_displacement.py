@@ -18,6 +18,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import paper_common as paper  # noqa: E402
 from cdem_common import plt, read_table, save_atomic  # noqa: E402
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
+from potential_common import script_main  # noqa: E402
 
 # The Fig. 14c row's band (repro/B_6_two_prisms/two_prisms.hpp, fig14c_met):
 # j's largest nodal x-velocity at 0.3400 s above 3.0 m/s and within 10 % of 3.205 m/s.
@@ -87,6 +88,4 @@ def main(data, out_png):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

@@ -14,7 +14,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import finite, plt, read_rows, save_atomic  # noqa: E402
+from potential_common import finite, plt, read_rows, save_atomic, script_main  # noqa: E402
 
 FLOOR = 1e-16      # errors below are drawn at this level (log axis)
 TOLERANCE = 1e-6   # the rows' criterion on every pair (repro/3_1_contact_statements/contact_statements.hpp, gradient_row)
@@ -45,6 +45,4 @@ def main(data_dir, out_png):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

@@ -20,7 +20,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import paper_common as paper  # noqa: E402
 from paper_common import BAND_STYLE, paper_style  # noqa: E402
-from potential_common import plt, save_atomic  # noqa: E402
+from potential_common import plt, save_tight, script_main  # noqa: E402
 
 # Per family: the x-axis quantity, its unit, how to tell the series apart
 # (a text in the case label) and the paper's own size (paper_common).
@@ -122,11 +122,8 @@ def main(data, out_png):
     fig.suptitle("Beyond Paper A Sect. 5: the Sect. 5 scenes pushed past the paper's sizes, each run at the paper's dt "
                  "(geometry reconstructed, Figs. 13, 15, 17 lost)\nclean = finishes, no flip-through, energy error < 1 %, "
                  "asymmetry < 1e-9 m; dt_crit: the solver's predicted critical step", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.93))
-    save_atomic(fig, out_png)
+    save_tight(fig, out_png, rect=(0, 0, 1, 0.93))
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    script_main(main, __doc__)

@@ -1,11 +1,14 @@
-"""Shared reading and drawing for the potential-field maps (Paper A Figs. 4b, 5).
+"""Shared reading, saving and command line of the figure scripts, and the
+drawing of the potential-field maps (Paper A Figs. 4b, 5).
 
-The grid CSVs are written by the potential_fields driver: '#' comment lines,
-a header 'x,y,inside,d_exit,phi', rows y-major (x varies fastest).
+The potential maps' grid CSVs are written by the potential_fields driver:
+'#' comment lines, a header 'x,y,inside,d_exit,phi', rows y-major (x varies
+fastest).
 """
 import csv
 import math
 import os
+import sys
 import textwrap
 
 import matplotlib
@@ -16,22 +19,32 @@ import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def read_csv(path):
-    """Returns (comment lines, {column: float array}). Fails on non-finite data."""
+def read_records(path, comments_after_header=True):
+    """(comment lines, header, data records as lists of strings) of a driver's CSV
+    file. Lines starting with '#' before the header are comments, and so are
+    those after it unless comments_after_header is False (a table whose text
+    cells may start with '#'); empty lines are skipped. Fails when there is no
+    header or no data row."""
     comments, rows, header = [], [], None
     with open(path, newline="") as f:
         for rec in csv.reader(f):
             if not rec:
                 continue
-            if rec[0].startswith("#"):
+            if rec[0].startswith("#") and (header is None or comments_after_header):
                 comments.append(",".join(rec).lstrip("# ").rstrip())
             elif header is None:
                 header = rec
             else:
-                rows.append([float(v) for v in rec])
+                rows.append(rec)
     if header is None or not rows:
         raise SystemExit(f"{path}: no header or no data rows")
-    data = np.array(rows, dtype=float)
+    return comments, header, rows
+
+
+def read_csv(path):
+    """Returns (comment lines, {column: float array}). Fails on non-finite data."""
+    comments, header, rows = read_records(path)
+    data = np.array([[float(v) for v in rec] for rec in rows], dtype=float)
     if not np.all(np.isfinite(data)):
         raise SystemExit(f"{path}: non-finite values")
     return comments, {name: data[:, i] for i, name in enumerate(header)}
@@ -54,6 +67,15 @@ def finite(text):
     return x
 
 
+def snapshot_outlines(sn, sel):
+    """The closed outlines (x, y) of the blocks in the rows sel of a snapshot
+    table (columns time, block, x, y: one row per vertex), block by block."""
+    for b in np.unique(sn["block"][sel]):
+        m = sel & (sn["block"] == b)
+        x, y = sn["x"][m], sn["y"][m]
+        yield np.append(x, x[0]), np.append(y, y[0])
+
+
 def save_atomic(fig, out_png):
     os.makedirs(os.path.dirname(out_png) or ".", exist_ok=True)
     tmp = out_png + ".tmp"
@@ -62,11 +84,28 @@ def save_atomic(fig, out_png):
     os.replace(tmp, out_png)
 
 
-def draw_potential(grid_csv, outline_csv, title, out_png, highlight_below=None):
-    """Filled contours of phi inside the polygon, outline on top.
+def save_tight(fig, out_png, **tight_layout):
+    """Lays the figure out tightly (tight_layout's arguments, e.g. rect) and saves it atomically."""
+    fig.tight_layout(**tight_layout)
+    save_atomic(fig, out_png)
+
+
+def script_main(main, doc, n_args=2):
+    """A figure script's command line: main(*args) with exactly n_args
+    arguments (DATA_DIR OUT_PNG by default), else the usage (the script's doc)."""
+    if len(sys.argv) != n_args + 1:
+        raise SystemExit(doc)
+    main(*sys.argv[1:])
+
+
+def draw_potential(data_dir, name, title, out_png, highlight_below=None):
+    """Filled contours of phi inside the polygon, outline on top, from the
+    potential_fields driver's <name>_grid.csv and <name>_outline.csv in data_dir.
 
     highlight_below: edges shorter than this (m) are drawn in red and labelled.
     """
+    grid_csv = os.path.join(data_dir, name + "_grid.csv")
+    outline_csv = os.path.join(data_dir, name + "_outline.csv")
     notes, g = read_csv(grid_csv)
     _, o = read_csv(outline_csv)
     xs = np.unique(g["x"])

@@ -21,7 +21,6 @@
 // Output: data/bouncing_block/displacement.csv (Fig. 14), runs.csv,
 // claims/5_1_bouncing_block.csv.
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -35,42 +34,44 @@ using bouncing_block::max_difference;
 using bouncing_block::run;
 using repro::format_short;
 
-int main(int argc, char** argv) try {
-  repro::check_command_line(argc, argv, "Paper A Sect. 5.1 (Figs. 13-14, geometry reconstructed): collision of polygons of different sizes.");
-  const std::string out = repro::out_dir(argc, argv);
-  const repro::Progress progress("5.1 bouncing block");
-  const std::string dir = out + "/data/bouncing_block";
-  using dda::HRule;
-  std::vector<Run> runs = {run(0.1, HRule::kMinMaxEdge, "case 1 (B 0.1 m), unified H"),
-                           run(1.0, HRule::kMinMaxEdge, "case 2 (B 1 m), unified H"),
-                           run(0.1, HRule::kInscribedRadius, "case 1 (B 0.1 m), inscribed-radius H"),
-                           run(1.0, HRule::kInscribedRadius, "case 2 (B 1 m), inscribed-radius H")};
-  for (const Run& r : runs)
-    progress(r.label + ": H_A = " + format_short(r.h_a) + " m, H_B = " + format_short(r.h_b) + " m, energy error " +
-             format_short(r.stats.energy_error, 3) + ", peak overlap " + format_short(r.stats.peak_thickness, 3) +
-             " m, " + format_short(r.seconds, 3) + " s");
+namespace {
 
-  const std::vector<std::string> notes = {
-      "Paper A Sect. 5.1, geometry RECONSTRUCTED (Fig. 13 lost): A 1 m square dropped from 0.5 m onto a fixed 4 m wide "
-      "block B of height 0.1 m (case 1) or 1 m (case 2); kn 50 MPa, dt 1e-4 s, frictionless",
-      "dy = accumulated vertical displacement of A's centroid, m"};
-  repro::CsvWriter csv(dir + "/displacement.csv",
-                       {"time", "case1_unified", "case2_unified", "case1_inscribed", "case2_inscribed"}, notes);
-  for (std::size_t i = 0; i < runs[0].time.size(); ++i)
-    csv.row({runs[0].time[i], runs[0].dy[i], runs[1].dy[i], runs[2].dy[i], runs[3].dy[i]});
-  csv.commit();
-  repro::CsvWriter summary(dir + "/runs.csv",
-                           {"b_height", "rule", "H_A", "H_B", "energy_error", "peak_thickness", "peak_vertex_depth",
-                            "first_contact", "first_rebound", "mirror_asymmetry", "seconds"},
-                           {"rule: 0 = unified (min-max edge) H, 1 = inscribed-radius H"});
-  for (const Run& r : runs)
-    summary.row({r.b_height, r.rule == HRule::kMinMaxEdge ? 0.0 : 1.0, r.h_a, r.h_b, r.stats.energy_error,
-                 r.stats.peak_thickness, r.stats.peak_vertex_depth, r.stats.first_contact, r.first_rebound,
-                 r.max_mirror, r.seconds});
-  summary.commit();
+// Fig. 14's traces (A's vertical displacement in the four runs, on run 0's
+// clock) and one row per run.
+void write_outputs(const std::string& dir, const std::vector<Run>& runs) {
+  using Sample = std::size_t;  // a sample index of the traces
+  const auto dy = [&runs](int k) { return [&runs, k](Sample i) { return runs[k].dy[i]; }; };
+  std::vector<Sample> samples(runs[0].time.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) samples[i] = i;
+  repro::write_table<Sample>(
+      dir + "/displacement.csv",
+      {{"time", [&runs](Sample i) { return runs[0].time[i]; }},
+       {"case1_unified", dy(0)},
+       {"case2_unified", dy(1)},
+       {"case1_inscribed", dy(2)},
+       {"case2_inscribed", dy(3)}},
+      samples,
+      {"Paper A Sect. 5.1, geometry RECONSTRUCTED (Fig. 13 lost): A 1 m square dropped from 0.5 m onto a fixed 4 m "
+       "wide block B of height 0.1 m (case 1) or 1 m (case 2); kn 50 MPa, dt 1e-4 s, frictionless",
+       "dy = accumulated vertical displacement of A's centroid, m"});
+  repro::write_table<Run>(dir + "/runs.csv",
+                          {{"b_height", [](const Run& r) { return r.b_height; }},
+                           {"rule", [](const Run& r) { return r.rule == dda::HRule::kMinMaxEdge ? 0 : 1; }},
+                           {"H_A", [](const Run& r) { return r.h_a; }},
+                           {"H_B", [](const Run& r) { return r.h_b; }},
+                           {"energy_error", [](const Run& r) { return r.stats.energy_error; }},
+                           {"peak_thickness", [](const Run& r) { return r.stats.peak_thickness; }},
+                           {"peak_vertex_depth", [](const Run& r) { return r.stats.peak_vertex_depth; }},
+                           {"first_contact", [](const Run& r) { return r.stats.first_contact; }},
+                           {"first_rebound", [](const Run& r) { return r.first_rebound; }},
+                           {"mirror_asymmetry", [](const Run& r) { return r.max_mirror; }},
+                           {"seconds", [](const Run& r) { return r.seconds; }}},
+                          runs, {"rule: 0 = unified (min-max edge) H, 1 = inscribed-radius H"});
+}
 
-  const double diff_unified = max_difference(runs[0], runs[1]);
-  const double diff_inscribed = max_difference(runs[2], runs[3]);
+// The rows of claims/5_1_bouncing_block.csv: the two measured differences,
+// their comparison, and each run's sanity row.
+std::vector<repro::Claim> claims(const std::vector<Run>& runs, double diff_unified, double diff_inscribed) {
   std::vector<repro::Claim> claims;
   const std::string geo = " (reconstructed geometry: 1 m square A dropped 0.5 m on a 4 m wide B, 2.0 s)";
   claims.push_back({"5.1", "unified H: A's bounce barely depends on B's height" + geo,
@@ -89,11 +90,34 @@ int main(int argc, char** argv) try {
   claims.back().scope = repro::Scope::kPaper;
   claims.push_back(bouncing_block::comparison_row(diff_unified, diff_inscribed));
   for (const Run& r : runs) claims.push_back(bouncing_block::sane_row(r));
-  repro::write_claims(repro::claims_path(out, "5_1_bouncing_block"), claims);
-  progress("done: max case difference, unified " + format_short(diff_unified, 3) + " m, inscribed " +
-           format_short(diff_inscribed, 3) + " m");
-  return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "bouncing_block: error: %s\n", e.what());
-  return 1;
+  return claims;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return repro::driver_main(
+      argc, argv,
+      {"bouncing_block", "5.1 bouncing block",
+       "Paper A Sect. 5.1 (Figs. 13-14, geometry reconstructed): collision of polygons of different sizes."},
+      {}, [](const repro::Driver& d) {
+        using dda::HRule;
+        const std::string dir = d.out + "/data/bouncing_block";
+        const std::vector<Run> runs = {run(0.1, HRule::kMinMaxEdge, "case 1 (B 0.1 m), unified H"),
+                                       run(1.0, HRule::kMinMaxEdge, "case 2 (B 1 m), unified H"),
+                                       run(0.1, HRule::kInscribedRadius, "case 1 (B 0.1 m), inscribed-radius H"),
+                                       run(1.0, HRule::kInscribedRadius, "case 2 (B 1 m), inscribed-radius H")};
+        for (const Run& r : runs)
+          d.progress(r.label + ": H_A = " + format_short(r.h_a) + " m, H_B = " + format_short(r.h_b) +
+                     " m, energy error " + format_short(r.stats.energy_error, 3) + ", peak overlap " +
+                     format_short(r.stats.peak_thickness, 3) + " m, " + format_short(r.seconds, 3) + " s");
+        write_outputs(dir, runs);
+
+        const double diff_unified = max_difference(runs[0], runs[1]);
+        const double diff_inscribed = max_difference(runs[2], runs[3]);
+        repro::write_claims(repro::claims_path(d.out, "5_1_bouncing_block"), claims(runs, diff_unified, diff_inscribed));
+        d.progress("done: max case difference, unified " + format_short(diff_unified, 3) + " m, inscribed " +
+                   format_short(diff_inscribed, 3) + " m");
+        return 0;
+      });
 }

@@ -1,5 +1,5 @@
 // Unit tests of the driver helpers: atomic CSV, non-finite refusal, claims
-// quoting, --out parsing, command-line checks.
+// quoting, --out parsing, command-line checks, column tables, the shared main.
 #include <catch2/catch.hpp>  // main(): Catch2::Catch2WithMain (CMakeLists.txt)
 
 #include <cmath>
@@ -225,4 +225,64 @@ TEST_CASE("option_number and option_int read an option's value or throw naming i
   CHECK(repro::option_int(argc, argv.data(), "--missing", 7) == 7);
   CHECK_THROWS_WITH(repro::option_int(argc, argv.data(), "--case", 0), "--case not a finite number: 'x'");
   CHECK_THROWS_WITH(repro::option_int(argc, argv.data(), "--duration", 0), "--duration not a whole number: '0.25'");
+}
+
+TEST_CASE("a column table writes the columns' names and each row's cells", "[table]") {
+  struct Row {
+    std::string name;
+    double x;
+    int n;
+  };
+  const std::vector<repro::Column<Row>> columns = {{"name", [](const Row& r) { return r.name; }},
+                                                   {"x", [](const Row& r) { return r.x; }},
+                                                   {"n", [](const Row& r) { return r.n; }}};
+  const std::string path = scratch("table/mixed.csv");
+  repro::write_table(path, columns, std::vector<Row>{{"a, b", 0.1, 3}, {"c", 1e-300, -2}}, {"note"});
+  CHECK(slurp(path) == "# note\nname,x,n\n\"a, b\",0.1,3\nc,1e-300,-2\n");
+
+  // A table of numbers only is written as CsvWriter writes numbers.
+  const std::string numbers = scratch("table/numbers.csv");
+  repro::write_table<double>(numbers, {{"x", [](double v) { return v; }}, {"twice", [](double v) { return 2 * v; }}},
+                             std::vector<double>{0.5, 1.0 / 3.0});
+  repro::CsvWriter same(scratch("table/same.csv"), {"x", "twice"});
+  same.row({0.5, 1.0});
+  same.row({1.0 / 3.0, 2.0 / 3.0});
+  same.commit();
+  CHECK(slurp(numbers) == slurp(scratch("table/same.csv")));
+}
+
+TEST_CASE("a column table refuses a non-finite cell, naming its column, and writes nothing", "[table]") {
+  struct Row {
+    std::string name;
+    double x;
+  };
+  const std::vector<repro::Column<Row>> columns = {{"name", [](const Row& r) { return r.name; }},
+                                                   {"x", [](const Row& r) { return r.x; }}};
+  for (const double bad : {std::nan(""), HUGE_VAL}) {
+    const std::string path = scratch("table/bad.csv");
+    try {
+      repro::write_table(path, columns, std::vector<Row>{{"ok", 1.0}, {"bad", bad}});
+      FAIL("no exception");
+    } catch (const std::invalid_argument& e) {
+      CHECK(std::string(e.what()).find("column 'x'") != std::string::npos);
+      CHECK(std::string(e.what()).find("data row 2") != std::string::npos);
+    }
+    CHECK_FALSE(fs::exists(path));
+    CHECK_FALSE(fs::exists(path + ".tmp"));
+  }
+}
+
+TEST_CASE("driver_main gives the body's status, or 1 with the program's name when it throws", "[cli]") {
+  char name[] = "driver";
+  char out_flag[] = "--out";
+  std::string dir = scratch("driver");
+  char* argv[] = {name, out_flag, dir.data(), nullptr};
+  std::string seen;
+  CHECK(repro::driver_main(3, argv, {"driver", "test driver", "a test"}, {}, [&seen](const repro::Driver& d) {
+          seen = d.out;
+          return 7;
+        }) == 7);
+  CHECK(seen == dir);
+  CHECK(repro::driver_main(3, argv, {"driver", "test driver", "a test"}, {},
+                           [](const repro::Driver&) -> int { throw std::runtime_error("boom"); }) == 1);
 }
