@@ -21,7 +21,7 @@ bool pair_before(const P& x, const P& y) {
 
 }  // namespace
 
-void Simulation::update_near_pairs() {
+void Engine::update_near_pairs() {
   // Every thread reads every flag after move_blocks' barrier: the same
   // verdict in all of them. Without the sweep the list is rebuilt when the
   // pairs whose boxes overlap changed (a read-only test every thread makes
@@ -34,7 +34,7 @@ void Simulation::update_near_pairs() {
   bool rebuild = false;
   if (scene_.broad_phase == BroadPhase::kNone) {
     rebuild = !near_pairs_unchanged();
-    team_barrier(kPhaseBroad);
+    team_barrier(Simulation::kPhaseBroad);
   }
   for (const ThreadFlags& f : flags_) rebuild = rebuild || f.left_skin;
   if (!rebuild) return;
@@ -50,10 +50,10 @@ void Simulation::update_near_pairs() {
       split_evenly(team_size());
     }
   }
-  team_barrier(kPhaseBroad);  // every thread sees the new list and shares
+  team_barrier(Simulation::kPhaseBroad);  // every thread sees the new list and shares
 }
 
-bool Simulation::near_pairs_unchanged() const {
+bool Engine::near_pairs_unchanged() const {
   // BroadPhase::kNone: whether rebuild_near_pairs would list the same pairs
   // as near_pairs_ (every pair with a free block whose boxes overlap now,
   // in (i, j) order).
@@ -68,7 +68,7 @@ bool Simulation::near_pairs_unchanged() const {
   return k == near_pairs_.size();
 }
 
-void Simulation::rebuild_near_pairs() {
+void Engine::rebuild_near_pairs() {
   // The pairs that may touch before the next rebuild, sorted by (i, j).
   // Sweep: sort and sweep along x on the boxes grown by the skin; the order
   // of the last rebuild is nearly sorted, so insertion sort is linear in
@@ -155,7 +155,7 @@ void Simulation::rebuild_near_pairs() {
   }
 }
 
-std::size_t Simulation::bytes_per_near_pair() const {
+std::size_t Engine::bytes_per_near_pair() const {
   return sizeof(NearPair) + sizeof(PairResult) + sizeof(PairLoad) + 2 * sizeof(BlockPair) +
          (friction_ ? sizeof(PairFriction) : 0);
 }

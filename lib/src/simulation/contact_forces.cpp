@@ -31,7 +31,7 @@ constexpr long kWorkOther = 1;
 
 // Inlined into the pair loop (its only caller): a call frame of its own
 // costs about as much as the bookkeeping it does.
-[[gnu::always_inline]] inline bool Simulation::pair_force(long k, bool was_active, const Polygon& ip,
+[[gnu::always_inline]] inline bool Engine::pair_force(long k, bool was_active, const Polygon& ip,
                                                           const IpEdge* source, double tol, bool& pair_fault) {
   const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
   const ContactParams& c = scene_.contact;
@@ -85,7 +85,7 @@ constexpr long kWorkOther = 1;
   return true;
 }
 
-void Simulation::pair_forces(bool with_energy) {
+void Engine::pair_forces(bool with_energy) {
   // Pair forces, independent of each other. Each thread takes its
   // contiguous share of the list (pair_split_; all of it outside a
   // parallel region), not a dynamic schedule: its shared chunk counter
@@ -158,7 +158,7 @@ void Simulation::pair_forces(bool with_energy) {
     if (work > 0) mine.seconds_per_work = smoothed(mine.seconds_per_work, seconds_since(t0) / static_cast<double>(work));
     mine.pair_work = static_cast<double>(work) * (mine.seconds_per_work > 0.0 ? mine.seconds_per_work : 1.0);
   }
-  team_barrier(kPhasePairs);
+  team_barrier(Simulation::kPhasePairs);
 }
 
 }  // namespace dda

@@ -12,7 +12,7 @@
 
 namespace dda {
 
-double Simulation::block_strain_omega2(int i) const {
+double Engine::block_strain_omega2(int i) const {
   // Generalised eigenproblem K x = w^2 M x on (r, ex, ey, gxy); K has the
   // elastic block S D on the strains and nothing on the rotation.
   if (!strains_) return 0.0;
@@ -54,7 +54,7 @@ double point_compliance(PolygonView poly, const AreaMoments& m, double density, 
 
 }  // namespace
 
-void Simulation::predict_critical_step() {
+void Engine::predict_critical_step() {
   // Before any contact: each block pressed along its longest edge L by a
   // block with the smallest H of the assembly, k = kn L (1/H_i + 1/H_min)
   // (+ kt with friction), at the block's most compliant point: omega^2 <=
@@ -81,7 +81,7 @@ void Simulation::predict_critical_step() {
   dt_crit_prior_ = w2 > 0.0 ? 2.0 / std::sqrt(w2) : DBL_MAX;
 }
 
-double Simulation::critical_time_step() const {
+double Engine::critical_time_step() const {
   // Each current contact is a spring k = kn L (1/H_cp + 1/H_tp) (+ kt with
   // friction), L its length, between the two blocks. Block Gershgorin bound
   // on the largest eigenvalue of M^-1 K: omega^2 <= max over blocks i of

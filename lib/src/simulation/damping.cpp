@@ -11,7 +11,7 @@
 
 namespace dda {
 
-void Simulation::damped_kick_block(int i) {
+void Engine::damped_kick_block(int i) {
   // Eq. 4 with Eq. 5c's C = a M + b K, M d'' = F - a M d' - b K d', in the
   // second half kick of velocity Verlet (Eq. 7):
   // - b K d': K is the block's elastic stiffness (Eq. 5b) and its contact
@@ -44,7 +44,7 @@ void Simulation::damped_kick_block(int i) {
   damp_force_[i] = damp;
 }
 
-void Simulation::start_damping(bool on) {
+void Engine::start_damping(bool on) {
   // a^n of the current forces, with or without the damping, v^n kept (the
   // b term has no step behind it: it starts at zero).
   damped_ = on && scene_.damping.on();
@@ -60,7 +60,7 @@ void Simulation::start_damping(bool on) {
   }
 }
 
-void Simulation::settle() {
+void Engine::settle() {
   // The constructor's start with damping. Without a settle time: damped
   // from t = 0. With one (dynamic relaxation): from rest, damped, for that
   // long; then undamped from the settled configuration at rest (what
@@ -108,7 +108,7 @@ void Simulation::settle() {
   start_energy_guard();
 }
 
-void Simulation::check_stiffness_damping() const {
+void Engine::check_stiffness_damping() const {
   // Explicit steps with stiffness-proportional damping are stable for
   // h <= (2 / omega) (sqrt(1 + zeta^2) - zeta), zeta = b omega / 2: b
   // lowers the critical step. Checked at the predicted omega_max =

@@ -5,14 +5,14 @@
 
 namespace dda {
 
-Vec2 Simulation::momentum() const {
+Vec2 Engine::momentum() const {
   Vec2 p{};
   for (int i = 0; i < block_count(); ++i)
-    if (!fixed_[i]) p += mass(i) * Vec2{vel_[i][0], vel_[i][1]};
+    if (!fixed_[i]) p += mass_[i] * Vec2{vel_[i][0], vel_[i][1]};
   return p;
 }
 
-Energy Simulation::energy() const {
+Energy Engine::energy() const {
   Energy e = block_energy();
   for (const ContactInfo& ci : contact_info_) {
     const PolygonView a = polygon_view(ci.cp);
@@ -26,7 +26,7 @@ Energy Simulation::energy() const {
   return e;
 }
 
-void Simulation::add_budget_terms(Energy& e) const {
+void Engine::add_budget_terms(Energy& e) const {
   add_friction_energy(e);
   // Eq. 5c damping (damping.cpp): the work its forces did, accumulated per
   // block, is dissipated; summed in block order (the same bits for any
@@ -34,7 +34,7 @@ void Simulation::add_budget_terms(Energy& e) const {
   for (double w : damping_work_) e.dissipated -= w;
 }
 
-void Simulation::add_friction_energy(Energy& e) const {
+void Engine::add_friction_energy(Energy& e) const {
   // The friction terms of the energy budget (Paper A Eqs. 24-26).
   // Stored: a sticking pair's force is the spring's, f_t = -kt d_tan
   // (Eq. 25), so it holds 1/2 kt |d_tan|^2 = |f_t|^2 / (2 kt). A sliding
@@ -64,7 +64,7 @@ void Simulation::add_friction_energy(Energy& e) const {
   e.dissipated = work - e.friction_spring;
 }
 
-void Simulation::bank_friction_work(const std::vector<NearPair>& kept) {
+void Engine::bank_friction_work(const std::vector<NearPair>& kept) {
   // Before a rebuild replaces the near list by `kept` (both sorted by
   // (i, j)): the friction work of the pairs that leave it, in pair order.
   auto before = [](const NearPair& x, const NearPair& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); };
@@ -76,14 +76,14 @@ void Simulation::bank_friction_work(const std::vector<NearPair>& kept) {
   }
 }
 
-Energy Simulation::block_energy() const {
+Energy Engine::block_energy() const {
   // Kinetic, gravity and strain energy of the free blocks (no contacts).
   Energy e;
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
     const Mat6 m = mass_matrix(moments_[i], density_[i]);
     e.kinetic += 0.5 * vel_[i].dot(m * vel_[i]);
-    e.gravity -= mass(i) * dot(scene_.gravity, moments_[i].centroid);
+    e.gravity -= mass_[i] * dot(scene_.gravity, moments_[i].centroid);
     if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic_[i].ldlt().solve(stress_[i]));
   }
   return e;

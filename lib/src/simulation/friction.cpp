@@ -5,11 +5,11 @@
 
 namespace dda {
 
-double Simulation::friction_tan(int a, int b) const {
+double Engine::friction_tan(int a, int b) const {
   return friction_tan_table_[static_cast<std::size_t>(group_[a] * group_count_ + group_[b])];
 }
 
-void Simulation::pair_friction(PairResult& r, PairFriction& fr, bool was_active, const NormalForce& nf) {
+void Engine::pair_friction(PairResult& r, PairFriction& fr, bool was_active, const NormalForce& nf) {
   // Coulomb friction with stick/slide history, Eqs. 24-26. A pair that
   // was not in contact at the last step starts afresh.
   const int cp = r.info.cp, tp = r.info.tp;

@@ -20,19 +20,18 @@ namespace {
 
 // The end of every stop message: dt against the critical step now (the
 // current contacts) and as predicted at the start.
-std::string dt_ratio_text(const Simulation& sim) {
+std::string dt_ratio_text(double dt, double now, double predicted) {
   std::ostringstream s;
   s << "dt/dt_crit = ";
-  const double now = sim.critical_time_step();
-  if (std::isfinite(now) && now < DBL_MAX) s << sim.dt() / now << " now, ";
+  if (std::isfinite(now) && now < DBL_MAX) s << dt / now << " now, ";
   else s << "undefined now (state not finite), ";
-  s << sim.dt() / sim.predicted_critical_step() << " predicted at start";
+  s << dt / predicted << " predicted at start";
   return s.str();
 }
 
 }  // namespace
 
-bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error) {
+bool Engine::guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error) {
   // The per-block flags were set before the kick loop's barrier: every
   // thread takes the same branch. One thread reports the first failure
   // (check_state) into `error`; true (for every thread) when it did.
@@ -49,11 +48,11 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
       error = std::current_exception();
     }
   }
-  team_barrier(kPhaseGuards);  // every thread sees `error` before reading it
+  team_barrier(Simulation::kPhaseGuards);  // every thread sees `error` before reading it
   return static_cast<bool>(error);
 }
 
-[[noreturn]] void Simulation::stop(int block, StopReason why, const std::string& what) const {
+[[noreturn]] void Engine::stop(int block, StopReason why, const std::string& what) const {
   std::ostringstream s;
   s << "step " << steps_ << " (t = " << time_ << " s): block " << block;
   // The pair through which the block takes its largest contact force.
@@ -65,7 +64,7 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
       other = c.cp == block ? c.tp : c.cp;
     }
   if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
-  s << ": " << what << "; " << dt_ratio_text(*this);
+  s << ": " << what << "; " << dt_ratio_text(dt_, critical_time_step(), dt_crit_prior_);
   SimulationError e(s.str(), why);
   e.step = steps_;
   e.time = time_;
@@ -74,10 +73,10 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
   throw e;
 }
 
-[[noreturn]] void Simulation::stop_pair(int a, int b, StopReason why, const std::string& what) const {
+[[noreturn]] void Engine::stop_pair(int a, int b, StopReason why, const std::string& what) const {
   std::ostringstream s;
   s << "step " << steps_ << " (t = " << time_ << " s): pair (" << a << ", " << b << ") = " << block_label(a)
-    << " and " << block_label(b) << ": " << what << "; " << dt_ratio_text(*this);
+    << " and " << block_label(b) << ": " << what << "; " << dt_ratio_text(dt_, critical_time_step(), dt_crit_prior_);
   SimulationError e(s.str(), why);
   e.step = steps_;
   e.time = time_;
@@ -85,7 +84,7 @@ bool Simulation::guards_stop(std::int64_t done, bool energy_due, std::exception_
   throw e;
 }
 
-std::string Simulation::block_label(int i) const {
+std::string Engine::block_label(int i) const {
   // "block 3 'name'" (the scene's name, if any) or "boundaries[k]".
   std::ostringstream s;
   if (i >= scene_blocks_) {
@@ -98,7 +97,7 @@ std::string Simulation::block_label(int i) const {
   return s.str();
 }
 
-Simulation::GuardFault Simulation::guard_fault(int i) const {
+Engine::GuardFault Engine::guard_fault(int i) const {
   // Block i (free) after its kick: a non-finite state, a collapsed area, or
   // a vertex that moved more in this step than max_step_motion of the
   // thinnest block within its reach (itself and its candidates: a block in
@@ -112,7 +111,7 @@ Simulation::GuardFault Simulation::guard_fault(int i) const {
   return GuardFault::kNone;
 }
 
-void Simulation::check_state(bool energy_due) {
+void Engine::check_state(bool energy_due) {
   // The first block that fails a per-block guard, with the reason.
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;

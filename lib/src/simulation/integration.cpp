@@ -24,18 +24,30 @@ bool inside(const Aabb& b, const Aabb& grown) {
 
 }  // namespace
 
-void Simulation::move_blocks() {
+template <class Prefetch, class Each>
+[[gnu::always_inline]] inline double Engine::over_block_share(const ThreadFlags& mine, Prefetch prefetch, Each each) {
+  // Each block of this thread's share (block_share) in order, prefetching
+  // kPrefetchBlocks ahead in a team; with a team, the share's seconds per
+  // block since the phase began (the last barrier's exit, team_barrier),
+  // else -1.
+  const BlockShare share = block_share();
+  const PhaseClock::time_point t0 = mine.phase_start;
+  for (int i = share.begin; i < share.end; ++i) {
+    if (i < share.prefetch_end) prefetch(i + kPrefetchBlocks);
+    each(i);
+  }
+  return share.team && share.end > share.begin ? seconds_since(t0) / (share.end - share.begin) : -1.0;
+}
+
+void Engine::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
   // block's geometry, its body forces, and whether its box left its grown
   // box (the broad phase's list then needs a rebuild).
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
-  const BlockShare share = block_share();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
-  const PhaseClock::time_point t0 = mine.phase_start;  // the last barrier's exit (team_barrier)
-  for (int i = share.begin; i < share.end; ++i) {
-    if (i < share.prefetch_end) prefetch_block(i + kPrefetchBlocks);
-    if (fixed_[i]) continue;
+  const double per_block = over_block_share(mine, [&](int i) { prefetch_block(i); }, [&](int i) __attribute__((always_inline)) {
+    if (fixed_[i]) return;
     vel_[i] += 0.5 * dt_ * acc_[i];
     const Vec6 dd = dt_ * vel_[i];  // Eq. 8
     step_disp_[i] = dd;
@@ -55,14 +67,13 @@ void Simulation::move_blocks() {
     update_block_geometry(i);
     body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
-  }
+  });
   mine.left_skin = left_skin;
-  if (share.team && share.end > share.begin)
-    mine.move_seconds_per_block = seconds_since(t0) / (share.end - share.begin);
-  team_barrier(kPhaseMove);
+  if (per_block >= 0.0) mine.move_seconds_per_block = per_block;
+  team_barrier(Simulation::kPhaseMove);
 }
 
-void Simulation::prefetch_block(int i) const {
+void Engine::prefetch_block(int i) const {
   // What moving block i reads and writes, for writing where it is written
   // (the other core may hold a copy from the pair loop).
   prefetch_polygon<1>(polygon_view(i));
@@ -75,7 +86,7 @@ void Simulation::prefetch_block(int i) const {
   __builtin_prefetch(&step_disp_[i], 1);
 }
 
-void Simulation::prefetch_gather(int i) const {
+void Engine::prefetch_gather(int i) const {
   // Block i's pair loads (the other core wrote those of its pairs) and the
   // force and velocity its kick writes.
   for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q)
@@ -84,11 +95,11 @@ void Simulation::prefetch_gather(int i) const {
   __builtin_prefetch(&force_[i], 1);
 }
 
-void Simulation::update_geometry() {
+void Engine::update_geometry() {
   for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
 }
 
-void Simulation::update_block_geometry(int i) {
+void Engine::update_block_geometry(int i) {
   const PolygonGeometry g = update_polygon_geometry(polygon_span(i));
   moments_[i] = g.moments;
   boxes_[i] = g.box;
@@ -111,7 +122,7 @@ void Simulation::update_block_geometry(int i) {
   density_[i] = mass_[i] / moments_[i].area;
 }
 
-void Simulation::body_force(int i) {
+void Engine::body_force(int i) {
   // Gravity (int T^T rho g dS = rho S g on the translation DOFs) and the
   // step's initial stress on the strain DOFs (K d of Eq. 4 carried as
   // accumulated stress because d is reset every step).
@@ -123,7 +134,7 @@ void Simulation::body_force(int i) {
   if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
 }
 
-void Simulation::gather_contact_forces(int i) {
+void Engine::gather_contact_forces(int i) {
   // Block i's contact forces, Eqs. 22-23 and 28-29 through T(pg)^T, added
   // in increasing pair order (the same bits for any thread count); and the
   // smallest inscribed radius within its reach (itself and its candidates)
@@ -163,28 +174,23 @@ void Simulation::gather_contact_forces(int i) {
   reach_radius_[i] = reach;
 }
 
-void Simulation::gather_and_kick() {
+void Engine::gather_and_kick() {
   // Per block: its contact forces, a^{n+1}, the second half kick, and the
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
-  const BlockShare share = block_share();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
-  const PhaseClock::time_point t0 = mine.phase_start;  // the last barrier's exit (team_barrier)
-  for (int i = share.begin; i < share.end; ++i) {
-    if (i < share.prefetch_end) prefetch_gather(i + kPrefetchBlocks);
+  const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
     gather_contact_forces(i);
-    if (fixed_[i]) continue;
+    if (fixed_[i]) return;
     kick_block(i);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
-  }
+  });
   mine.guard_failed = failed;
-  if (share.team && share.end > share.begin)
-    mine.seconds_per_block =
-        smoothed(mine.seconds_per_block, mine.move_seconds_per_block + seconds_since(t0) / (share.end - share.begin));
-  team_barrier(kPhaseKick);
+  if (per_block >= 0.0) mine.seconds_per_block = smoothed(mine.seconds_per_block, mine.move_seconds_per_block + per_block);
+  team_barrier(Simulation::kPhaseKick);
 }
 
-Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
+Vec6 Engine::force_acceleration(int i, const Vec6& f) const {
   // M^-1 f (Eq. 5a).
   const AreaMoments& m = moments_[i];
   const double mass = density_[i] * m.area;
@@ -201,7 +207,7 @@ Vec6 Simulation::force_acceleration(int i, const Vec6& f) const {
   return a;
 }
 
-void Simulation::kick_block(int i) {
+void Engine::kick_block(int i) {
   if (damped_) {
     damped_kick_block(i);  // Eq. 5c (damping.cpp)
     return;
@@ -210,7 +216,7 @@ void Simulation::kick_block(int i) {
   vel_[i] += 0.5 * dt_ * acc_[i];
 }
 
-void Simulation::kick() {
+void Engine::kick() {
   for (int i = 0; i < block_count(); ++i)
     if (!fixed_[i]) kick_block(i);
 }

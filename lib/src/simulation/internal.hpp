@@ -1,11 +1,13 @@
-// Internal: what the files of Simulation share and users need not see --
-// the private structures of its pair lists and thread team, the OpenMP
-// helpers and the tuning constants of the team's shares. Not part of the
-// public API. One file per step of the algorithm (run_steps in step.cpp is
-// the table of contents):
+// Internal: the engine behind Simulation -- its state and the phases of
+// its step, the private structures of its pair lists and thread team, the
+// OpenMP helpers and the tuning constants of the team's shares. Not part of
+// the public API (the public header only names the engine). One file per
+// step of the algorithm (run_steps in step.cpp is the table of contents):
+//   simulation.cpp      Simulation's public calls, forwarded to the engine
 //   setup.cpp           scene checks, blocks, H (Eq. 12), broad-phase skin
-//   step.cpp            step(), run_steps(): the step as a table of contents
+//   step.cpp            run_steps(): the step as a table of contents
 //   integration.cpp     velocity Verlet (Eqs. 6-8): move, body forces, gather, kick
+//   damping.cpp         Eq. 5c damping and the settling start
 //   broad_phase.cpp     the near-pair list (sort and sweep with a skin)
 //   contact_forces.cpp  the pair loop: overlap, IP, normal force (Eqs. 10-20)
 //   friction.cpp        Coulomb friction with history (Eqs. 24-26)
@@ -14,11 +16,16 @@
 //   energy.cpp          energy and momentum
 //   critical_step.cpp   the critical time step bounds
 //   team.cpp            the thread team's barrier and shares
+//   state.cpp           saving and restoring the state (checkpoints)
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cfloat>
 #include <chrono>
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
 
 #if defined(DDA_HAVE_OPENMP)
 #include <omp.h>
@@ -38,8 +45,235 @@
 
 namespace dda {
 
+namespace detail {
+
+class TeamBarrier;  // team_barrier.hpp
+
+// The state of a Simulation and the phases of its step, each a member
+// function with the engine as its `this` (the hot loops read the state
+// directly); Simulation owns one and forwards each public call to it once
+// (run_steps once per advance). Not copyable: each block's contact side
+// points into the engine's own geometry pool and bisector store.
+class Engine {
+ public:
+  using PhaseIndex = Simulation::PhaseIndex;
+  using PhaseTimes = Simulation::PhaseTimes;
+
+  explicit Engine(const Scene& scene);
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  // The step (step.cpp: run_steps is the table of contents) and its phases,
+  // one file each under lib/src/simulation/.
+  void run_steps(std::int64_t count);
+  void advance_to(double t);
+
+  // What Simulation's public calls of the same names return.
+  int block_count() const { return geometry_offset_.empty() ? 0 : static_cast<int>(geometry_offset_.size()) - 1; }
+  PolygonView polygon_view(int i) const {
+    const int o = geometry_offset_[static_cast<std::size_t>(i)];
+    const int c = geometry_offset_[static_cast<std::size_t>(i) + 1] - o;
+    return {c, geometry_.data() + 2 * o, geometry_.data() + 2 * o + c};
+  }
+  std::size_t geometry_bytes_per_block() const;
+  double critical_time_step() const;
+  double block_strain_omega2(int i) const;
+  Vec2 momentum() const;
+  Energy energy() const;
+  std::size_t bytes_per_near_pair() const;
+  void save_state(ByteWriter& out) const;
+  void restore_state(ByteReader& in);
+
+ private:
+  friend class dda::Simulation;  // its accessors read the state below
+
+  struct PairHistory;   // a pair's friction history
+  struct PairFriction;  // its history and friction work (scenes with friction only)
+  struct PairResult;    // a near pair's contact of the last force evaluation
+  struct NearPair;      // a broad-phase pair
+  struct PairLoad;      // what a block's force sum reads of a pair
+  struct BlockPair;     // an entry of a block's near-pair list
+  struct ThreadFlags;   // a thread's guard flags and measured speeds
+  struct BlockShare;    // a thread's blocks in a per-block phase
+  struct BlockSide;     // what a pair's contact reads of a block
+
+  void compute_forces();
+  void collect_contacts();
+  // setup.cpp
+  void bind_sides();
+  void build_blocks();
+  void choose_potential_length();
+  void choose_broad_phase_skin();
+  // integration.cpp: per block, half kick, drift, geometry, body force; gather, kick
+  void move_blocks();
+  void update_geometry();
+  void update_block_geometry(int i);
+  void body_force(int i);
+  void gather_and_kick();
+  void gather_contact_forces(int i);
+  void kick_block(int i);
+  void kick();
+  // Eq. 5c damping (Scene::damping): the kick with C = a M + b K, switching
+  // it on or off (a^n recomputed), and the constructor's settling run.
+  Vec6 force_acceleration(int i, const Vec6& f) const;
+  void damped_kick_block(int i);
+  void start_damping(bool on);
+  void settle();
+  void start_energy_guard();
+  void check_stiffness_damping() const;
+  void prefetch_block(int i) const;
+  void prefetch_gather(int i) const;
+  template <class Prefetch, class Each>
+  double over_block_share(const ThreadFlags& mine, Prefetch prefetch, Each each);
+  // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
+  void update_near_pairs();
+  void rebuild_near_pairs();
+  bool near_pairs_unchanged() const;  // BroadPhase::kNone: would a rebuild list the same pairs?
+  // contact_forces.cpp: per near pair, overlap, IP, contact force
+  void pair_forces(bool with_energy);
+  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault);
+  // friction.cpp
+  void pair_friction(PairResult& r, PairFriction& fr, bool was_active, const NormalForce& nf);
+  double friction_tan(int a, int b) const;
+  // guards.cpp, penetration_guard.cpp
+  enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
+  GuardFault guard_fault(int i) const;
+  bool guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error);
+  void check_state(bool energy_due);
+  bool pair_guard_fault(const PairResult& r) const;
+  double pair_energy_bound(int a, int b) const;
+  double approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed = nullptr, double* mass = nullptr) const;
+  void check_pairs() const;
+  std::string block_label(int i) const;
+  [[noreturn]] void stop(int block, StopReason why, const std::string& what) const;
+  [[noreturn]] void stop_pair(int a, int b, StopReason why, const std::string& what) const;
+  // energy.cpp
+  Energy block_energy() const;
+  void add_friction_energy(Energy& e) const;
+  void bank_friction_work(const std::vector<NearPair>& kept);
+  void add_budget_terms(Energy& e) const;  // friction (add_friction_energy) and damping work
+  // critical_step.cpp
+  void predict_critical_step();
+  // team.cpp
+  void start_team();
+  void team_barrier(PhaseIndex phase);
+  BlockShare block_share() const;
+  void split_evenly(int team);
+  void balance_block_split();
+  void balance_pair_split();
+
+  // Block i's mutable polygon in the pool (it moves every step).
+  PolygonSpan polygon_span(int i) {
+    const int o = geometry_offset_[static_cast<std::size_t>(i)];
+    const int c = geometry_offset_[static_cast<std::size_t>(i) + 1] - o;
+    return {c, geometry_.data() + 2 * o, geometry_.data() + 2 * o + c};
+  }
+
+  Scene scene_;
+  double dt_ = 0.0;
+  double time_ = 0.0;
+  std::int64_t steps_ = 0;
+  int scene_blocks_ = 0;
+  bool strains_ = true;
+  bool friction_ = false;
+  bool exact_rotation_ = false;  // RotationUpdate::kExact
+  bool damped_ = false;          // Eq. 5c damping acts now (off after a settle)
+  double damp_a_ = 0.0, damp_b_ = 0.0;  // a (1/s) and b (s) of Eq. 5c while damped_
+  std::vector<Vec6> force_prev_;        // F^n of the last kick, for b K d' (only with b > 0)
+  std::vector<Vec6> damp_force_;        // the damping force -a M v - b K v of the last kick (only damped)
+  std::vector<double> damping_work_;    // per block: work of the damping forces so far, J/m (<= 0)
+
+  // Hot state, one entry per block.
+  // Block geometry pooled by vertex count (a Polygon value
+  // has room for kMaxVertices = 32, a block mostly has 3-8): block i's
+  // count vertices then its count normals, adjacent for the cache, from
+  // geometry_[2 * geometry_offset_[i]]; count = geometry_offset_[i + 1] -
+  // geometry_offset_[i] (offsets count vertices, each with its normal).
+  // Sized once (build_blocks): views of it stay valid.
+  std::vector<Vec2> geometry_;
+  std::vector<int> geometry_offset_;  // block_count() + 1 entries
+  std::vector<AreaMoments> moments_;
+  std::vector<Vec6> vel_, acc_, force_, step_disp_, disp_;
+  std::vector<Vec2> start_centroid_;  // centroid at the start of the step (friction history)
+  std::vector<double> step_motion2_;  // largest vertex motion of the step, squared, m^2 (guard)
+  std::vector<Vec3> stress_;
+
+  // Per-block constants and bookkeeping.
+  std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
+  std::vector<double> kn_over_h_;  // kn / H of each block (H is fixed at construction), Pa/m
+  std::vector<Mat3> elastic_;
+  std::vector<char> fixed_;
+  std::vector<int> group_;
+  std::vector<double> friction_tan_table_;
+  int group_count_ = 1;
+
+  // Guards.
+  double min_inscribed_radius_ = 0.0;
+  std::vector<double> radius_, reach_radius_;  // inscribed radii at t = 0; per-step reach
+  double dt_crit_prior_ = 0.0;
+  double energy0_ = 0.0, energy_scale_ = 0.0;
+  double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m
+
+  // Contacts. The broad phase's near pairs (i < j, sorted) each own a
+  // result slot (pair_results_, pair_loads_) that lives as long as the pair
+  // stays near: its friction history stays in place from step to step.
+  // near_pair_offset_ and block_pairs_ list each block's near pairs in
+  // increasing order (CSR), so that each block sums its contact forces in
+  // that fixed order.
+  std::vector<NearPair> near_pairs_;
+  std::vector<PairResult> pair_results_;
+  std::vector<PairFriction> pair_friction_;  // same slots; empty without friction
+  std::vector<PairLoad> pair_loads_;
+  std::vector<int> near_pair_offset_;
+  std::vector<BlockPair> block_pairs_;
+  std::vector<ContactInfo> contact_info_;  // active pairs in near-pair order, after each advance
+  std::size_t candidate_count_ = 0;
+
+  // The thread team (team.cpp).
+  int threads_ = 1;
+  std::vector<ThreadFlags> flags_;
+  // The team's barrier during run_steps (null outside it).
+  TeamBarrier* barrier_ = nullptr;
+  std::vector<PhaseTimes> phase_times_;  // per thread, see phase_times()
+  // The pair loop's shares: thread t takes near pairs [pair_split_[t],
+  // pair_split_[t + 1]), contiguous (a thread's pairs mostly involve the
+  // blocks it moves: fewer polygons travel between cores) and moved every
+  // step so that the shares' cost (estimated work at each core's measured
+  // speed) is even (balance_pair_split).
+  std::vector<long> pair_split_, split_scratch_;
+  std::vector<double> work_scratch_;
+  // The per-block phases' shares: thread t moves and kicks blocks
+  // [block_split_[t], block_split_[t + 1]), sized by each core's measured
+  // time per block (balance_block_split, in the pair phase, when no thread
+  // reads them).
+  std::vector<int> block_split_;
+
+  std::vector<Aabb> boxes_;
+  // Bisectors of each block (paper integration rule), rebuilt with the
+  // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count sides_[i].side.bisector_count.
+  std::vector<Bisector> bisector_store_;
+  std::vector<int> bisector_offset_;
+  std::vector<BlockSide> sides_;
+  std::vector<std::uint32_t> sharp_corners_;  // sharp_corners() of each block's polygon, rebuilt with the geometry
+  std::vector<int> order_;
+  // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
+  // pairs whose boxes, grown by skin_ on every side, overlapped at the last
+  // rebuild; it stays valid while every block's box stays inside its grown
+  // box (skin_boxes_), and each step's pair loop skips the pairs whose
+  // current boxes do not overlap. Without the sweep (BroadPhase::kNone)
+  // near_pairs_ is rebuilt every step from all pairs: the pairs with a free
+  // block whose boxes overlap.
+  std::vector<Aabb> skin_boxes_;
+  double skin_ = 0.0;  // m
+  std::int64_t broad_phase_rebuilds_ = 0;
+};
+
+}  // namespace detail
+
+using detail::Engine;
+
 // Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
-struct Simulation::PairHistory {
+struct Engine::PairHistory {
   Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
   Vec2 slide_dir{};       // sliding direction s of the last sliding step
   Vec2 point{};           // pg of the last force evaluation
@@ -49,7 +283,7 @@ struct Simulation::PairHistory {
 
 // A near pair's friction state, in its own array (pair_friction_, beside
 // pair_results_) that a frictionless scene never allocates.
-struct Simulation::PairFriction {
+struct Engine::PairFriction {
   PairHistory history;
   // Work friction took out of the two blocks while this pair was near
   // (outlives the history's restarts), J/m.
@@ -58,7 +292,7 @@ struct Simulation::PairFriction {
 
 // One near pair's contact, computed independently of all others (whether
 // it is a candidate and in contact: its PairLoad).
-struct Simulation::PairResult {
+struct Engine::PairResult {
   ContactInfo info;
   double energy = 0.0;  // penalty energy, J/m (set on steps with an energy check)
   // The penetration guard's measures (set while a check is on): the depth
@@ -73,14 +307,14 @@ struct Simulation::PairResult {
 };
 
 // A near pair of the broad phase (i < j).
-struct Simulation::NearPair {
+struct Engine::NearPair {
   int i = -1, j = -1;
   int witness = -1;  // separating axis the overlap test found last (-1: none yet)
 };
 
 // What the per-block sum reads of each near pair, compact (a PairResult
 // spans several cache lines): written by the pair loop, read per block.
-struct Simulation::PairLoad {
+struct Engine::PairLoad {
   Vec2 force{};            // normal + tangential force on the pair's first block, N/m
   Vec2 point{};            // loading point pg
   double couple = 0.0;     // pure moment on the first block besides force at point (NormalForce::couple), N m/m
@@ -90,14 +324,14 @@ struct Simulation::PairLoad {
 
 // One entry of a block's near-pair list: the pair, the other block, and
 // whether this block is the pair's first (the force acts on it with +).
-struct Simulation::BlockPair {
+struct Engine::BlockPair {
   int pair = -1, other = -1;
   bool first = false;
 };
 
 // One flag block per thread, each on its own cache line: set in a
 // worksharing loop, read by every thread after the loop's barrier.
-struct alignas(64) Simulation::ThreadFlags {
+struct alignas(64) Engine::ThreadFlags {
   bool left_skin = false;     // a block of this thread's share left its grown box
   bool guard_failed = false;  // a block of this thread's share failed a per-block guard
   bool pair_failed = false;   // a pair of this thread's share failed the penetration guard
@@ -118,7 +352,7 @@ struct alignas(64) Simulation::ThreadFlags {
 // This thread's blocks [begin, end) in a per-block phase; with a team
 // (only then: prefetching and timing) prefetching stops kPrefetchBlocks
 // before the end of the share.
-struct Simulation::BlockShare {
+struct Engine::BlockShare {
   bool team = false;
   int begin = 0, end = 0, prefetch_end = 0;
 };
@@ -126,7 +360,7 @@ struct Simulation::BlockShare {
 // What a pair's contact reads of each block, in one cache line: its
 // potential side (polygon, kn/H, small edge, its bisectors and their
 // count) and its round-off tolerance.
-struct alignas(64) Simulation::BlockSide {
+struct alignas(64) Engine::BlockSide {
   PotentialSide side;
   double tol = 0.0;  // geometric_tolerance of the block's box, m
 };
@@ -172,21 +406,13 @@ void prefetch_polygon(PolygonView p) {
 
 // This thread's index in the team (0 outside a parallel region), and the
 // team's size (1 outside).
-inline int thread_index() {
 #if defined(DDA_HAVE_OPENMP)
-  return omp_get_thread_num();
+inline int thread_index() { return omp_get_thread_num(); }
+inline int team_size() { return omp_get_num_threads(); }
 #else
-  return 0;
+inline int thread_index() { return 0; }
+inline int team_size() { return 1; }
 #endif
-}
-
-inline int team_size() {
-#if defined(DDA_HAVE_OPENMP)
-  return omp_get_num_threads();
-#else
-  return 1;
-#endif
-}
 
 // The extent of `ip` along direction `dir` (any length), times |dir|:
 // max - min of v . dir over its vertices. Along the pair's normal force
@@ -226,7 +452,7 @@ inline double min_width(const Polygon& ip) {
 // Whether pair result r fails the penetration guard (guards.cpp): inlined
 // into the pair loop; the energy bound is computed only at a first contact
 // that approaches.
-inline bool Simulation::pair_guard_fault(const PairResult& r) const {
+inline bool Engine::pair_guard_fault(const PairResult& r) const {
   const StabilityGuards& g = scene_.guards;
   if (r.depth > r.depth_bound && g.max_penetration > 0.0) return true;
   return r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * pair_energy_bound(r.info.cp, r.info.tp);

@@ -64,14 +64,14 @@
 
 namespace dda {
 
-double Simulation::pair_energy_bound(int a, int b) const {
+double Engine::pair_energy_bound(int a, int b) const {
   // E_max above, J/m, with the areas of now and the inscribed radii of t = 0.
   const double area_a = moments_[a].area, area_b = moments_[b].area;
   return kn_over_h_[b] * radius_[b] * std::min(0.5 * area_b, area_a) +
          kn_over_h_[a] * radius_[a] * std::min(0.5 * area_a, area_b);
 }
 
-double Simulation::approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed, double* mass) const {
+double Engine::approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed, double* mass) const {
   // E_app above, J/m; `normal` is the unit normal force on a (it pushes a
   // away from b). 0 when the blocks do not close at `point`.
   const auto velocity = [&](int i) {
@@ -91,7 +91,7 @@ double Simulation::approach_energy(int a, int b, Vec2 point, Vec2 normal, double
   return closing > 0.0 ? 0.5 * m_eff * closing * closing : 0.0;
 }
 
-void Simulation::check_pairs() const {
+void Engine::check_pairs() const {
   // The first pair in pair order that fails the penetration guard, with
   // what a user can change.
   const StabilityGuards& g = scene_.guards;

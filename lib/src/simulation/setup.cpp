@@ -15,7 +15,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Broad-phase skin as a fraction of the mean inscribed radius of the free
-// blocks (dimensionless); see Simulation::choose_broad_phase_skin.
+// blocks (dimensionless); see Engine::choose_broad_phase_skin.
 constexpr double kBroadPhaseSkin = 0.25;
 
 std::string field(const char* name, std::size_t i) {
@@ -168,11 +168,7 @@ void check_scene(const Scene& scene) {
     }
 }
 
-Simulation::Simulation(Simulation&&) noexcept = default;
-Simulation& Simulation::operator=(Simulation&&) noexcept = default;
-Simulation::~Simulation() = default;
-
-Simulation::Simulation(const Scene& scene) : scene_(scene) {
+Engine::Engine(const Scene& scene) : scene_(scene) {
   check_scene(scene_);
   dt_ = scene_.dt;
   strains_ = scene_.strains;
@@ -195,7 +191,7 @@ Simulation::Simulation(const Scene& scene) : scene_(scene) {
   start_energy_guard();
 }
 
-void Simulation::start_energy_guard() {
+void Engine::start_energy_guard() {
   // What is held plus what was dissipated so far (after a settle the
   // budget restarts from the settled state).
   const Energy e = energy();
@@ -203,13 +199,13 @@ void Simulation::start_energy_guard() {
   energy_scale_ = e.kinetic + e.strain + e.contact;
 }
 
-std::size_t Simulation::geometry_bytes_per_block() const {
+std::size_t Engine::geometry_bytes_per_block() const {
   const int n = block_count();
   if (n == 0) return 0;
   return (geometry_.size() * sizeof(Vec2) + geometry_offset_.size() * sizeof(int)) / static_cast<std::size_t>(n);
 }
 
-void Simulation::build_blocks() {
+void Engine::build_blocks() {
   static_assert(sizeof(BlockSide) == 64, "a block's side and tolerance in one cache line");
   const std::size_t n = scene_.blocks.size() + scene_.boundaries.size();
   scene_blocks_ = static_cast<int>(scene_.blocks.size());
@@ -291,7 +287,7 @@ void Simulation::build_blocks() {
   bind_sides();
 }
 
-void Simulation::bind_sides() {
+void Engine::bind_sides() {
   // Each block's contact side reads its polygon from the geometry pool and
   // its bisectors from the bisector store.
   for (std::size_t i = 0; i < sides_.size(); ++i) {
@@ -300,7 +296,7 @@ void Simulation::bind_sides() {
   }
 }
 
-void Simulation::choose_broad_phase_skin() {
+void Engine::choose_broad_phase_skin() {
   // The skin trades list length against rebuild frequency: a quarter of the
   // mean inscribed radius of the free blocks lets a block move that far (or
   // deform or turn as much) before the list is rebuilt -- tens of steps at
@@ -316,7 +312,7 @@ void Simulation::choose_broad_phase_skin() {
   skin_ = free_blocks > 0 ? kBroadPhaseSkin * sum / free_blocks : 0.0;
 }
 
-void Simulation::choose_potential_length() {
+void Engine::choose_potential_length() {
   // H of Eq. 12 from the scene's blocks (boundary polygons have an arbitrary
   // depth and are left out of the edge statistics).
   const ContactParams& c = scene_.contact;

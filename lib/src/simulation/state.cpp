@@ -20,83 +20,124 @@ namespace {
 // The stream's layout; a change of what is saved changes it.
 constexpr std::uint32_t kStateLayout = 1;
 
-void put(ByteWriter& w, const Vec6& v) {
-  for (int k = 0; k < 6; ++k) w.f64(v[k]);
-}
-void put(ByteWriter& w, const Vec3& v) {
-  for (int k = 0; k < 3; ++k) w.f64(v[k]);
-}
-void put(ByteWriter& w, const AreaMoments& m) {
-  w.f64(m.area);
-  w.vec2(m.centroid);
-  w.f64(m.sxx);
-  w.f64(m.syy);
-  w.f64(m.sxy);
-}
-void put(ByteWriter& w, const Aabb& b) {
-  w.vec2(b.lo);
-  w.vec2(b.hi);
-}
-void put(ByteWriter& w, const ContactInfo& c) {
-  w.i32(c.cp);
-  w.i32(c.tp);
-  w.vec2(c.normal_force);
-  w.vec2(c.tangential_force);
-  w.vec2(c.point);
-  w.f64(c.couple);
-  w.f64(c.ip_area);
-  w.f64(c.ip_length);
-  w.boolean(c.sliding);
+// One field of a record, written (Put) or read into the record (Get).
+struct Put {
+  ByteWriter& w;
+  void operator()(double x) { w.f64(x); }
+  void operator()(int x) { w.i32(x); }
+  void operator()(bool x) { w.boolean(x); }
+  void operator()(Vec2 v) { w.vec2(v); }
+  void operator()(const Vec3& v) {
+    for (int k = 0; k < 3; ++k) w.f64(v[k]);
+  }
+  void operator()(const Vec6& v) {
+    for (int k = 0; k < 6; ++k) w.f64(v[k]);
+  }
+};
+struct Get {
+  ByteReader& r;
+  void operator()(double& x) { x = r.f64(); }
+  void operator()(int& x) { x = r.i32(); }
+  void operator()(bool& x) { x = r.boolean(); }
+  void operator()(Vec2& v) { v = r.vec2(); }
+  void operator()(Vec3& v) {
+    for (int k = 0; k < 3; ++k) v[k] = r.f64();
+  }
+  void operator()(Vec6& v) {
+    for (int k = 0; k < 6; ++k) v[k] = r.f64();
+  }
+};
+
+// Each record's fields in stream order, once for both directions: `io` is
+// a Put (the record const) or a Get.
+constexpr auto value = [](auto& io, auto& x) { io(x); };
+constexpr auto moments = [](auto& io, auto& m) {
+  io(m.area);
+  io(m.centroid);
+  io(m.sxx);
+  io(m.syy);
+  io(m.sxy);
+};
+constexpr auto box = [](auto& io, auto& b) {
+  io(b.lo);
+  io(b.hi);
+};
+constexpr auto bisector = [](auto& io, auto& b) {
+  io(b.line_a);
+  io(b.line_b);
+  io(b.d0);
+};
+constexpr auto block_side = [](auto& io, auto& s) {
+  io(s.tol);
+  io(s.side.bisector_count);
+};
+constexpr auto contact = [](auto& io, auto& c) {
+  io(c.cp);
+  io(c.tp);
+  io(c.normal_force);
+  io(c.tangential_force);
+  io(c.point);
+  io(c.couple);
+  io(c.ip_area);
+  io(c.ip_length);
+  io(c.sliding);
+};
+constexpr auto near_pair = [](auto& io, auto& p) {
+  io(p.i);
+  io(p.j);
+  io(p.witness);
+};
+constexpr auto pair_result = [](auto& io, auto& x) {
+  contact(io, x.info);
+  io(x.energy);
+  io(x.depth);
+  io(x.depth_bound);
+  io(x.approach_energy);
+};
+constexpr auto friction_history = [](auto& io, auto& f) {
+  io(f.history.d);
+  io(f.history.slide_dir);
+  io(f.history.point);
+  io(f.history.ft);
+  io(f.history.sliding);
+  io(f.friction_work);
+};
+constexpr auto pair_load = [](auto& io, auto& l) {
+  io(l.force);
+  io(l.point);
+  io(l.couple);
+  io(l.candidate);
+  io(l.active);
+};
+constexpr auto block_pair = [](auto& io, auto& b) {
+  io(b.pair);
+  io(b.other);
+  io(b.first);
+};
+
+template <class T, class Fields>
+void put_list(ByteWriter& w, const std::vector<T>& v, Fields fields) {
+  w.list(v, [&](ByteWriter& out, const T& x) {
+    Put io{out};
+    fields(io, x);
+  });
 }
 
-Vec6 get_vec6(ByteReader& r) {
-  Vec6 v;
-  for (int k = 0; k < 6; ++k) v[k] = r.f64();
-  return v;
-}
-Vec3 get_vec3(ByteReader& r) {
-  Vec3 v;
-  for (int k = 0; k < 3; ++k) v[k] = r.f64();
-  return v;
-}
-AreaMoments get_moments(ByteReader& r) {
-  AreaMoments m;
-  m.area = r.f64();
-  m.centroid = r.vec2();
-  m.sxx = r.f64();
-  m.syy = r.f64();
-  m.sxy = r.f64();
-  return m;
-}
-Aabb get_aabb(ByteReader& r) {
-  Aabb b;
-  b.lo = r.vec2();
-  b.hi = r.vec2();
-  return b;
-}
-ContactInfo get_contact(ByteReader& r) {
-  ContactInfo c;
-  c.cp = r.i32();
-  c.tp = r.i32();
-  c.normal_force = r.vec2();
-  c.tangential_force = r.vec2();
-  c.point = r.vec2();
-  c.couple = r.f64();
-  c.ip_area = r.f64();
-  c.ip_length = r.f64();
-  c.sliding = r.boolean();
-  return c;
-}
-
-template <class T, class Put>
-void put_list(ByteWriter& w, const std::vector<T>& v, Put each) {
-  w.list(v, [&](ByteWriter& out, const T& x) { each(out, x); });
+// One element of a list, read by `fields`.
+template <class T, class Fields>
+auto element(Fields fields) {
+  return [fields](ByteReader& in) {
+    T x;
+    Get io{in};
+    fields(io, x);
+    return x;
+  };
 }
 
 // Reads a list that must have `expected` elements (the same scene's).
-template <class T, class Get>
-void get_list(ByteReader& r, std::vector<T>& v, std::size_t expected, const char* name, Get each) {
-  r.list(v, 1, each);
+template <class T, class Fields>
+void get_list(ByteReader& r, std::vector<T>& v, std::size_t expected, const char* name, Fields fields) {
+  r.list(v, 1, element<T>(fields));
   if (v.size() != expected)
     r.fail(std::string(name) + " has " + std::to_string(v.size()) + " entries, this scene needs " +
            std::to_string(expected));
@@ -104,7 +145,7 @@ void get_list(ByteReader& r, std::vector<T>& v, std::size_t expected, const char
 
 }  // namespace
 
-void Simulation::save_state(ByteWriter& w) const {
+void Engine::save_state(ByteWriter& w) const {
   // The opening record: what the restoring simulation checks it matches.
   w.u32(kStateLayout);
   w.i32(block_count());
@@ -122,80 +163,45 @@ void Simulation::save_state(ByteWriter& w) const {
   w.boolean(damped_);
   w.f64(damp_a_);
   w.f64(damp_b_);
-  put_list(w, force_prev_, [](ByteWriter& o, const Vec6& v) { put(o, v); });
-  put_list(w, damp_force_, [](ByteWriter& o, const Vec6& v) { put(o, v); });
-  put_list(w, damping_work_, [](ByteWriter& o, double x) { o.f64(x); });
+  put_list(w, force_prev_, value);
+  put_list(w, damp_force_, value);
+  put_list(w, damping_work_, value);
 
   // The blocks: geometry pool (vertices and normals), moments, boxes, the
   // contact sides' tolerance and bisectors, DOFs, stresses, densities.
-  put_list(w, geometry_, [](ByteWriter& o, Vec2 v) { o.vec2(v); });
-  put_list(w, moments_, [](ByteWriter& o, const AreaMoments& m) { put(o, m); });
-  put_list(w, boxes_, [](ByteWriter& o, const Aabb& b) { put(o, b); });
-  put_list(w, bisector_store_, [](ByteWriter& o, const Bisector& b) {
-    o.i32(b.line_a);
-    o.i32(b.line_b);
-    o.f64(b.d0);
-  });
-  put_list(w, sides_, [](ByteWriter& o, const BlockSide& s) {
-    o.f64(s.tol);
-    o.i32(s.side.bisector_count);
-  });
-  for (const std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_})
-    put_list(w, *v, [](ByteWriter& o, const Vec6& x) { put(o, x); });
-  put_list(w, start_centroid_, [](ByteWriter& o, Vec2 v) { o.vec2(v); });
-  put_list(w, step_motion2_, [](ByteWriter& o, double x) { o.f64(x); });
-  put_list(w, stress_, [](ByteWriter& o, const Vec3& v) { put(o, v); });
-  put_list(w, density_, [](ByteWriter& o, double x) { o.f64(x); });
-  put_list(w, mass_, [](ByteWriter& o, double x) { o.f64(x); });
+  put_list(w, geometry_, value);
+  put_list(w, moments_, moments);
+  put_list(w, boxes_, box);
+  put_list(w, bisector_store_, bisector);
+  put_list(w, sides_, block_side);
+  for (const std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) put_list(w, *v, value);
+  put_list(w, start_centroid_, value);
+  put_list(w, step_motion2_, value);
+  put_list(w, stress_, value);
+  put_list(w, density_, value);
+  put_list(w, mass_, value);
 
   // The guards' and the energy budget's accumulators.
-  put_list(w, reach_radius_, [](ByteWriter& o, double x) { o.f64(x); });
+  put_list(w, reach_radius_, value);
   w.f64(energy0_);
   w.f64(energy_scale_);
   w.f64(dropped_friction_work_);
 
   // The broad phase and the near pairs with their history.
-  put_list(w, near_pairs_, [](ByteWriter& o, const NearPair& p) {
-    o.i32(p.i);
-    o.i32(p.j);
-    o.i32(p.witness);
-  });
-  put_list(w, pair_results_, [](ByteWriter& o, const PairResult& r) {
-    put(o, r.info);
-    o.f64(r.energy);
-    o.f64(r.depth);
-    o.f64(r.depth_bound);
-    o.f64(r.approach_energy);
-  });
-  put_list(w, pair_friction_, [](ByteWriter& o, const PairFriction& f) {
-    o.vec2(f.history.d);
-    o.vec2(f.history.slide_dir);
-    o.vec2(f.history.point);
-    o.vec2(f.history.ft);
-    o.boolean(f.history.sliding);
-    o.f64(f.friction_work);
-  });
-  put_list(w, pair_loads_, [](ByteWriter& o, const PairLoad& l) {
-    o.vec2(l.force);
-    o.vec2(l.point);
-    o.f64(l.couple);
-    o.boolean(l.candidate);
-    o.boolean(l.active);
-  });
-  put_list(w, near_pair_offset_, [](ByteWriter& o, int x) { o.i32(x); });
-  put_list(w, block_pairs_, [](ByteWriter& o, const BlockPair& b) {
-    o.i32(b.pair);
-    o.i32(b.other);
-    o.boolean(b.first);
-  });
-  put_list(w, contact_info_, [](ByteWriter& o, const ContactInfo& c) { put(o, c); });
+  put_list(w, near_pairs_, near_pair);
+  put_list(w, pair_results_, pair_result);
+  put_list(w, pair_friction_, friction_history);
+  put_list(w, pair_loads_, pair_load);
+  put_list(w, near_pair_offset_, value);
+  put_list(w, block_pairs_, block_pair);
+  put_list(w, contact_info_, contact);
   w.u64(candidate_count_);
-  put_list(w, skin_boxes_, [](ByteWriter& o, const Aabb& b) { put(o, b); });
-  put_list(w, order_, [](ByteWriter& o, int x) { o.i32(x); });
+  put_list(w, skin_boxes_, box);
+  put_list(w, order_, value);
   w.i64(broad_phase_rebuilds_);
 }
 
-void Simulation::restore_state(ByteReader& r) {
+void Engine::restore_state(ByteReader& r) {
   const std::uint32_t layout = r.u32();
   if (layout != kStateLayout)
     r.fail("state layout " + std::to_string(layout) + ", this build reads layout " + std::to_string(kStateLayout));
@@ -218,82 +224,47 @@ void Simulation::restore_state(ByteReader& r) {
   damped_ = r.boolean();
   damp_a_ = r.f64();
   damp_b_ = r.f64();
-  r.list(force_prev_, 48, get_vec6);
-  r.list(damp_force_, 48, get_vec6);
-  r.list(damping_work_, 8, [](ByteReader& in) { return in.f64(); });
+  r.list(force_prev_, 48, element<Vec6>(value));
+  r.list(damp_force_, 48, element<Vec6>(value));
+  r.list(damping_work_, 8, element<double>(value));
 
-  get_list(r, geometry_, geometry_.size(), "the geometry pool", [](ByteReader& in) { return in.vec2(); });
-  get_list(r, moments_, n, "the area moments", get_moments);
-  get_list(r, boxes_, n, "the boxes", get_aabb);
-  get_list(r, bisector_store_, bisector_store_.size(), "the bisector store", [](ByteReader& in) {
-    Bisector b;
-    b.line_a = in.i32();
-    b.line_b = in.i32();
-    b.d0 = in.f64();
-    return b;
-  });
+  get_list(r, geometry_, geometry_.size(), "the geometry pool", value);
+  get_list(r, moments_, n, "the area moments", moments);
+  get_list(r, boxes_, n, "the boxes", box);
+  get_list(r, bisector_store_, bisector_store_.size(), "the bisector store", bisector);
   if (r.count(1) != n) r.fail("the contact sides do not match the blocks");
   for (std::size_t i = 0; i < n; ++i) {
-    sides_[i].tol = r.f64();
-    const int count = r.i32();
+    Get io{r};
+    block_side(io, sides_[i]);
+    const int count = sides_[i].side.bisector_count;
     if (count < 0 || count > 2 * polygon_view(static_cast<int>(i)).count) r.fail("a block's bisector count is out of range");
-    sides_[i].side.bisector_count = count;
   }
-  for (std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", get_vec6);
-  get_list(r, start_centroid_, n, "the step-start centroids", [](ByteReader& in) { return in.vec2(); });
-  get_list(r, step_motion2_, n, "the step motions", [](ByteReader& in) { return in.f64(); });
-  get_list(r, stress_, n, "the stresses", get_vec3);
-  get_list(r, density_, n, "the densities", [](ByteReader& in) { return in.f64(); });
-  get_list(r, mass_, n, "the masses", [](ByteReader& in) { return in.f64(); });
-  get_list(r, reach_radius_, n, "the reach radii", [](ByteReader& in) { return in.f64(); });
+  for (std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", value);
+  get_list(r, start_centroid_, n, "the step-start centroids", value);
+  get_list(r, step_motion2_, n, "the step motions", value);
+  get_list(r, stress_, n, "the stresses", value);
+  get_list(r, density_, n, "the densities", value);
+  get_list(r, mass_, n, "the masses", value);
+  get_list(r, reach_radius_, n, "the reach radii", value);
   energy0_ = r.f64();
   energy_scale_ = r.f64();
   dropped_friction_work_ = r.f64();
 
   const int nb = block_count();
+  const auto read_pair = element<NearPair>(near_pair);
   r.list(near_pairs_, 12, [&](ByteReader& in) {
-    NearPair p;
-    p.i = in.i32();
-    p.j = in.i32();
-    p.witness = in.i32();
+    const NearPair p = read_pair(in);
     if (p.i < 0 || p.i >= p.j || p.j >= nb) in.fail("a near pair's blocks are out of range");
     return p;
   });
   const std::size_t pairs = near_pairs_.size();
-  get_list(r, pair_results_, pairs, "the pair results", [](ByteReader& in) {
-    PairResult x;
-    x.info = get_contact(in);
-    x.energy = in.f64();
-    x.depth = in.f64();
-    x.depth_bound = in.f64();
-    x.approach_energy = in.f64();
-    return x;
-  });
-  get_list(r, pair_friction_, friction_ ? pairs : 0, "the friction histories", [](ByteReader& in) {
-    PairFriction f;
-    f.history.d = in.vec2();
-    f.history.slide_dir = in.vec2();
-    f.history.point = in.vec2();
-    f.history.ft = in.vec2();
-    f.history.sliding = in.boolean();
-    f.friction_work = in.f64();
-    return f;
-  });
-  get_list(r, pair_loads_, pairs, "the pair loads", [](ByteReader& in) {
-    PairLoad l;
-    l.force = in.vec2();
-    l.point = in.vec2();
-    l.couple = in.f64();
-    l.candidate = in.boolean();
-    l.active = in.boolean();
-    return l;
-  });
-  get_list(r, near_pair_offset_, n + 1, "the block pair offsets", [](ByteReader& in) { return in.i32(); });
+  get_list(r, pair_results_, pairs, "the pair results", pair_result);
+  get_list(r, pair_friction_, friction_ ? pairs : 0, "the friction histories", friction_history);
+  get_list(r, pair_loads_, pairs, "the pair loads", pair_load);
+  get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
+  const auto read_block_pair = element<BlockPair>(block_pair);
   r.list(block_pairs_, 9, [&](ByteReader& in) {
-    BlockPair b;
-    b.pair = in.i32();
-    b.other = in.i32();
-    b.first = in.boolean();
+    const BlockPair b = read_block_pair(in);
     if (b.pair < 0 || static_cast<std::size_t>(b.pair) >= pairs || b.other < 0 || b.other >= nb)
       in.fail("a block's pair entry is out of range");
     return b;
@@ -301,13 +272,14 @@ void Simulation::restore_state(ByteReader& r) {
   if (near_pair_offset_.front() != 0 || near_pair_offset_.back() != static_cast<int>(block_pairs_.size()) ||
       !std::is_sorted(near_pair_offset_.begin(), near_pair_offset_.end()))
     r.fail("the block pair offsets do not index the block pair list");
+  const auto read_contact = element<ContactInfo>(contact);
   r.list(contact_info_, 1, [&](ByteReader& in) {
-    const ContactInfo c = get_contact(in);
+    const ContactInfo c = read_contact(in);
     if (c.cp < 0 || c.cp >= nb || c.tp < 0 || c.tp >= nb) in.fail("a contact's blocks are out of range");
     return c;
   });
   candidate_count_ = static_cast<std::size_t>(r.u64());
-  r.list(skin_boxes_, 32, get_aabb);
+  r.list(skin_boxes_, 32, element<Aabb>(box));
   if (!skin_boxes_.empty() && skin_boxes_.size() != n) r.fail("the grown boxes do not match the blocks");
   r.list(order_, 4, [&](ByteReader& in) {
     const int i = in.i32();

@@ -7,15 +7,13 @@
 
 namespace dda {
 
-void Simulation::step() { run_steps(1); }
-
-void Simulation::advance_to(double t) {
+void Engine::advance_to(double t) {
   std::int64_t count = 0;
   while (static_cast<double>(steps_ + count) * dt_ + 0.5 * dt_ < t) ++count;
   run_steps(count);
 }
 
-void Simulation::run_steps(std::int64_t count) {
+void Engine::run_steps(std::int64_t count) {
   // Paper A Sect. 2.3: velocity Verlet (Eqs. 6-8) with the potential
   // contact forces of Sect. 3 at t^{n+1}. One parallel region serves all
   // `count` steps: every thread runs this loop and each phase shares out its
@@ -60,7 +58,7 @@ void Simulation::run_steps(std::int64_t count) {
   collect_contacts();
 }
 
-void Simulation::compute_forces() {
+void Engine::compute_forces() {
   // Serial: the forces at the current state (the constructor's a^0).
   for (int i = 0; i < block_count(); ++i) body_force(i);
   rebuild_near_pairs();
@@ -69,7 +67,7 @@ void Simulation::compute_forces() {
   collect_contacts();
 }
 
-void Simulation::collect_contacts() {
+void Engine::collect_contacts() {
   // The active pairs in pair order, for the accessors and the guards.
   contact_info_.clear();
   candidate_count_ = 0;

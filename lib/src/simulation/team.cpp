@@ -14,7 +14,7 @@ using detail::team_size;
 using detail::kPrefetchBlocks;
 using detail::PhaseClock;
 
-void Simulation::start_team() {
+void Engine::start_team() {
   // The first shares, the barrier's reset and the phase times' slots, seen
   // by every thread after the single's implicit barrier; then each thread's
   // first phase begins.
@@ -28,7 +28,7 @@ void Simulation::start_team() {
   flags_[static_cast<std::size_t>(thread_index())].phase_start = PhaseClock::now();
 }
 
-void Simulation::team_barrier(PhaseIndex phase) {
+void Engine::team_barrier(PhaseIndex phase) {
   // Every thread of a team waits here for the others (a no-op alone). In
   // run_steps, the thread's time since its phase began counts as work in
   // `phase`, the wait as waiting, and its next phase begins.
@@ -43,7 +43,7 @@ void Simulation::team_barrier(PhaseIndex phase) {
   times.wait[phase] += std::chrono::duration<double>(mine.phase_start - arrived).count();
 }
 
-Simulation::BlockShare Simulation::block_share() const {
+Engine::BlockShare Engine::block_share() const {
   // This thread's contiguous share of the blocks (all of them outside a
   // team); which thread moves or kicks a block changes only the time.
   const int team = team_size(), t = thread_index();
@@ -59,7 +59,7 @@ Simulation::BlockShare Simulation::block_share() const {
   return s;
 }
 
-void Simulation::split_evenly(int team) {
+void Engine::split_evenly(int team) {
   // Equal numbers of pairs and of blocks per thread (a start, before any
   // work or core speed is known).
   const long n = static_cast<long>(near_pairs_.size());
@@ -71,7 +71,7 @@ void Simulation::split_evenly(int team) {
   work_scratch_.resize(pair_split_.size());
 }
 
-void Simulation::balance_block_split() {
+void Engine::balance_block_split() {
   // Shares of the blocks in proportion to each core's measured speed
   // (blocks per second in the per-block phases), so that the phases end
   // together. Kept as they are until every core has a measurement.
@@ -90,7 +90,7 @@ void Simulation::balance_block_split() {
   }
 }
 
-void Simulation::balance_pair_split() {
+void Engine::balance_pair_split() {
   // The cost of each share in the last pair loop (its estimated work at
   // its core's measured speed, pair_work), taken as spread evenly over the
   // share's pairs; the new boundaries cut that cost into equal parts (by
