@@ -29,8 +29,11 @@ void Engine::run_steps(std::int64_t count) {
   detail::TeamBarrier barrier;
   barrier_ = &barrier;
   flags_.assign(static_cast<std::size_t>(threads_), ThreadFlags{});
-  DDA_OMP(omp parallel num_threads(threads_) if (threads_ > 1))
-  {
+  // Alone, the loop runs outside any parallel region: an OpenMP team of one
+  // still pays two futex system calls per region (its start and the single's
+  // barrier), as much as a small scene's whole step when it is advanced one
+  // step at a time.
+  const auto team_steps = [&] {
     start_team();  // team.cpp: first shares, barrier reset
     for (std::int64_t k = 0; k < count; ++k) {
       const std::int64_t done = first + k + 1;
@@ -50,6 +53,12 @@ void Engine::run_steps(std::int64_t count) {
       // guards.cpp: a failed guard or a due energy check stops the run.
       if (guards_stop(done, energy_due, error)) break;
     }
+  };
+  if (threads_ > 1) {
+    DDA_OMP(omp parallel num_threads(threads_))
+    team_steps();
+  } else {
+    team_steps();
   }
   barrier_ = nullptr;
   if (error) std::rethrow_exception(error);
