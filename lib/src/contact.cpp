@@ -635,8 +635,18 @@ NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Po
     case 3: return by_tp_count<3>(cp, tp, ip, rule, tol, source, where);
     case 4: return by_tp_count<4>(cp, tp, ip, rule, tol, source, where);
     case 5: return by_tp_count<5>(cp, tp, ip, rule, tol, source, where);
-    default: return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+    default: break;
   }
+  // Two hexagons, heptagons or octagons (Box2D's limit; round particles
+  // made of polygons): the counts as constants too, so that no IP edge
+  // pays paper_side_edge_any's call and switch.
+  if (cp.poly.count == tp.poly.count) switch (cp.poly.count) {
+      case 6: return contact_force_n<6, 6>(cp, tp, ip, rule, tol, source, where);
+      case 7: return contact_force_n<7, 7>(cp, tp, ip, rule, tol, source, where);
+      case 8: return contact_force_n<8, 8>(cp, tp, ip, rule, tol, source, where);
+      default: break;
+    }
+  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
 }
 
 }  // namespace
