@@ -629,17 +629,12 @@ NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const 
   }
 }
 
-NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule, double tol,
-                      const IpEdge* source, LoadingPoint where) {
-  switch (cp.poly.count) {
-    case 3: return by_tp_count<3>(cp, tp, ip, rule, tol, source, where);
-    case 4: return by_tp_count<4>(cp, tp, ip, rule, tol, source, where);
-    case 5: return by_tp_count<5>(cp, tp, ip, rule, tol, source, where);
-    default: break;
-  }
-  // Two hexagons, heptagons or octagons (Box2D's limit; round particles
-  // made of polygons): the counts as constants too, so that no IP edge
-  // pays paper_side_edge_any's call and switch.
+// Two hexagons, heptagons or octagons (Box2D's limit; round particles made
+// of polygons): the counts as constants too, so that no IP edge pays
+// paper_side_edge_any's call and switch. Out of line: the common blocks
+// are triangles to pentagons.
+[[gnu::noinline]] NormalForce by_equal_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
+                                             Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
   if (cp.poly.count == tp.poly.count) switch (cp.poly.count) {
       case 6: return contact_force_n<6, 6>(cp, tp, ip, rule, tol, source, where);
       case 7: return contact_force_n<7, 7>(cp, tp, ip, rule, tol, source, where);
@@ -647,6 +642,16 @@ NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Po
       default: break;
     }
   return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+}
+
+NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule, double tol,
+                      const IpEdge* source, LoadingPoint where) {
+  switch (cp.poly.count) {
+    case 3: return by_tp_count<3>(cp, tp, ip, rule, tol, source, where);
+    case 4: return by_tp_count<4>(cp, tp, ip, rule, tol, source, where);
+    case 5: return by_tp_count<5>(cp, tp, ip, rule, tol, source, where);
+    default: return by_equal_count(cp, tp, ip, rule, tol, source, where);
+  }
 }
 
 }  // namespace
