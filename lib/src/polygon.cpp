@@ -152,7 +152,11 @@ namespace {
 //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
 // green_centroid: area and centroid only, one edge at a time. kN: the
 // vertex count when known at compile time (0: `n`), so that a
-// quadrilateral's loop is unrolled.
+// quadrilateral's loop is unrolled. The two edges at v[0] are left out:
+// one end is the origin, so c = a x b is a zero, and a zero added to the
+// sums (+0 at the start, never -0 after: x + (-x) rounds to +0) leaves
+// their bits as they are; every other vertex is an end of edges 1 to
+// count - 2, so a non-finite vertex still makes the sums non-finite.
 template <int kN = 0>
 AreaMoments green_centroid(const Vec2* v, int n) {
   const int count = kN ? kN : n;
@@ -160,9 +164,9 @@ AreaMoments green_centroid(const Vec2* v, int n) {
   if (count < 3) return m;
   const Vec2 o = v[0];
   double s = 0, sx = 0, sy = 0;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 1; i + 1 < count; ++i) {
     const Vec2 a = v[i] - o;
-    const Vec2 b = v[i + 1 == count ? 0 : i + 1] - o;
+    const Vec2 b = v[i + 1] - o;
     const double c = cross(a, b);
     s += c;
     sx += c * (a.x + b.x);
