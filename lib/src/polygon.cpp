@@ -187,7 +187,8 @@ AreaMoments green_centroid(const Vec2* v, int n) {
 // edge; the terms are then added edge by edge in order, S with Sxy, Sx
 // with Sy and Sxx with Syy in the two lanes of one sum (bx ay is the
 // ay bx of the cross product). The area and centroid are green_centroid's
-// bits; for them alone the scalar loop is as short as the lanes.
+// bits; for them alone the scalar loop is as short as the lanes. As in
+// green_centroid, the two edges at v[0] are left out (zero terms).
 template <int kN = 0>
 AreaMoments green_moments(const Vec2* v, int n) {
   using detail::high_lanes;
@@ -221,9 +222,10 @@ AreaMoments green_moments(const Vec2* v, int n) {
       sxx_syy += high_lanes(txx, tyy);
     }
   };
-  int i = 0;
-  for (; i + 1 < count; i += 2) add_edges(i, i + 1, true);
-  if (i < count) add_edges(i, i, false);
+  // Edges 1 to count - 2: the two at v[0] add zeros (green_centroid).
+  int i = 1;
+  for (; i + 2 < count; i += 2) add_edges(i, i + 1, true);
+  if (i + 1 < count) add_edges(i, i, false);
   const double s = s_sxy[0] * 0.5;
   const Lanes sx_sy6 = sx_sy / Lanes{6.0, 6.0};
   m.area = s;
