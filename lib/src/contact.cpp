@@ -683,10 +683,21 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
       // Keep normal.x <= offset; a vertex within snap of the line is on it.
       const Vec2 normal = nj - ni;
       const double offset = dot(nj, p.vertex(j)) - ci;
+      // A region wholly on the kept side (every d <= 0) is what clip_ring
+      // would copy, one wholly beyond (every d > 0) what it would empty:
+      // neither is cut (mostly the case, an IP being small beside its block).
+      bool inside = true, outside = true;
       for (int k = 0; k < count; ++k) {
         double dk = dot(normal, cell[k]) - offset;
         if (std::fabs(dk) <= snap) dk = 0.0;
         d[static_cast<std::size_t>(k)] = dk;
+        inside = inside && dk <= 0.0;
+        outside = outside && dk > 0.0;
+      }
+      if (inside) continue;
+      if (outside) {
+        count = 0;
+        continue;
       }
       count = clip_ring(cell, d.data(), count, ring[next].data());
       if (count < 3) count = 0;

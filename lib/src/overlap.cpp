@@ -524,19 +524,36 @@ void intersection_polygon(const PolygonView& contact, const PolygonView& target,
   clip_target(contact, target, tol, kAllLines, kSharpCornersUnknown, result, nullptr);
 }
 
-std::uint32_t sharp_corners(const PolygonView& poly) {
-  // Corner c lies between edges c - 1 and c; branch-free, the previous
-  // normal carried along.
-  const int n = std::min(poly.count, 32);
-  if (n < 3) return 0;
+namespace {
+
+// sharp_corners for kN vertices (0: poly.count, at most 32), two corners at
+// a time: lane 0 corner c, lane 1 corner c + 1 (an odd count's last corner
+// in both), each dot product lane by lane the scalar dot's operations.
+template <int kN>
+std::uint32_t sharp_corners_n(const PolygonView& poly) {
+  using detail::high_lanes;
+  using detail::lanes;
+  using detail::low_lanes;
+  const int n = kN ? kN : std::min(poly.count, 32);
+  const Lanes bevel{kBevelCos, kBevelCos};
   std::uint32_t sharp = 0;
-  Vec2 prev = poly.n[n - 1];
-  for (int c = 0; c < n; ++c) {
-    const Vec2 next = poly.n[c];
-    sharp |= static_cast<std::uint32_t>(dot(prev, next) < kBevelCos) << c;
-    prev = next;
+  for (int c = 0; c < n; c += 2) {
+    const int d = c + 1 < n ? c + 1 : c;
+    const Lanes pc = lanes(poly.n[c == 0 ? n - 1 : c - 1]), pd = lanes(poly.n[d - 1]);
+    const Lanes qc = lanes(poly.n[c]), qd = lanes(poly.n[d]);
+    const Lanes dots = low_lanes(pc, pd) * low_lanes(qc, qd) + high_lanes(pc, pd) * high_lanes(qc, qd);
+    sharp |= detail::lane_bits(dots < bevel) << c;
   }
-  return sharp;
+  return n & 1 ? sharp & ((std::uint32_t{1} << n) - 1u) : sharp;  // an odd n: its repeated lane's bit n off
+}
+
+}  // namespace
+
+std::uint32_t sharp_corners(const PolygonView& poly) {
+  // Corner c lies between edges c - 1 and c.
+  if (poly.count == 4) return sharp_corners_n<4>(poly);
+  if (poly.count < 3) return 0;
+  return sharp_corners_n<0>(poly);
 }
 
 Polygon intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol) {
