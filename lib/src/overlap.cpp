@@ -399,6 +399,7 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
     switch (in_count) {
       case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
       case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
+      case 5: count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label); break;
       default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
     }
     if (count < 0) continue;  // no vertex outside: the ring stays
