@@ -231,17 +231,49 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
 // quadrilaterals, the rest mostly pentagons and triangles (of the overlap
 // tests in the Sect. 6.1 collapse about 79 % are 4-4 pairs, 17 % 4-5 or
 // 5-4, 3 % other pairs of triangles to pentagons), so every pair of counts
-// 3 to 5 runs unrolled (the generic loops take about three times as many
+// 3 to 8 runs unrolled (the generic loops take two to three times as many
 // instructions). by_counts calls Op::run<kA, kB>(a, b, args) with kA, kB
-// the counts of a and b when both are 3 to 5, else Op::run<0, 0>;
-// by_counts_b: on B's count, A's known to be kA.
+// the counts of a and b when both are 3 to 8, else Op::run<0, 0>;
+// by_counts_b: on B's count, A's known to be kA (3 to 5). The pairs of
+// triangles to pentagons are told apart inline; the rest (a count of 6 or
+// more) go through by_counts_wide, out of line, so that the common
+// dispatch stays a short chain of compares with no call frame.
+template <class Op, int kA, class... Args>
+OverlapState by_counts_wide_b(const PolygonView& a, const PolygonView& b, Args&&... args) {
+  switch (b.count) {
+    case 3: return Op::template run<kA, 3>(a, b, args...);
+    case 4: return Op::template run<kA, 4>(a, b, args...);
+    case 5: return Op::template run<kA, 5>(a, b, args...);
+    case 6: return Op::template run<kA, 6>(a, b, args...);
+    case 7: return Op::template run<kA, 7>(a, b, args...);
+    case 8: return Op::template run<kA, 8>(a, b, args...);
+    default: return Op::template run<0, 0>(a, b, args...);
+  }
+}
+
+// Its arguments by value (those of OverlapAndClip::run): a reference to
+// the caller's tol would make the caller keep tol in memory.
+template <class Op>
+[[gnu::noinline]] OverlapState by_counts_wide(const PolygonView& a, const PolygonView& b, double tol, Polygon& ip,
+                                              IpEdge* source, int* witness, std::uint32_t sharp) {
+  switch (a.count) {
+    case 3: return by_counts_wide_b<Op, 3>(a, b, tol, ip, source, witness, sharp);
+    case 4: return by_counts_wide_b<Op, 4>(a, b, tol, ip, source, witness, sharp);
+    case 5: return by_counts_wide_b<Op, 5>(a, b, tol, ip, source, witness, sharp);
+    case 6: return by_counts_wide_b<Op, 6>(a, b, tol, ip, source, witness, sharp);
+    case 7: return by_counts_wide_b<Op, 7>(a, b, tol, ip, source, witness, sharp);
+    case 8: return by_counts_wide_b<Op, 8>(a, b, tol, ip, source, witness, sharp);
+    default: return Op::template run<0, 0>(a, b, tol, ip, source, witness, sharp);
+  }
+}
+
 template <class Op, int kA, class... Args>
 OverlapState by_counts_b(const PolygonView& a, const PolygonView& b, Args&&... args) {
   switch (b.count) {
     case 3: return Op::template run<kA, 3>(a, b, args...);
     case 4: return Op::template run<kA, 4>(a, b, args...);
     case 5: return Op::template run<kA, 5>(a, b, args...);
-    default: return Op::template run<0, 0>(a, b, args...);
+    default: return by_counts_wide<Op>(a, b, args...);
   }
 }
 
@@ -251,7 +283,7 @@ OverlapState by_counts(const PolygonView& a, const PolygonView& b, Args&&... arg
     case 3: return by_counts_b<Op, 3>(a, b, args...);
     case 4: return by_counts_b<Op, 4>(a, b, args...);
     case 5: return by_counts_b<Op, 5>(a, b, args...);
-    default: return Op::template run<0, 0>(a, b, args...);
+    default: return by_counts_wide<Op>(a, b, args...);
   }
 }
 
