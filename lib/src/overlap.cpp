@@ -411,13 +411,21 @@ struct ClipRing {
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
-// One cut of a ring of any count (cut_ring<0>), apart: rings of more than
-// five vertices are rare in the simulations, and one out-of-line call
-// keeps the clipping loop's registers (not cold: the pair benchmarks of
-// hexagons and octagons use it for most cuts).
+// One cut of a ring of more than five vertices, apart: such rings are rare
+// in the simulations, and one out-of-line call keeps the clipping loop's
+// registers (not cold: the pair benchmarks of hexagons and octagons use it
+// for most cuts). Rings of 6 to 10 vertices (the cuts of two hexagons or
+// octagons) with their count known at compile time, the rest cut_ring<0>.
 [[gnu::noinline]] int cut_ring_any(const Vec2* in, const int* in_label, int n, Vec2 nc, Vec2 pc, double tol,
                                    int line_label, Vec2* out, int* out_label) {
-  return cut_ring<0>(in, in_label, n, nc, pc, tol, line_label, out, out_label);
+  switch (n) {
+    case 6: return cut_ring<6>(in, in_label, 6, nc, pc, tol, line_label, out, out_label);
+    case 7: return cut_ring<7>(in, in_label, 7, nc, pc, tol, line_label, out, out_label);
+    case 8: return cut_ring<8>(in, in_label, 8, nc, pc, tol, line_label, out, out_label);
+    case 9: return cut_ring<9>(in, in_label, 9, nc, pc, tol, line_label, out, out_label);
+    case 10: return cut_ring<10>(in, in_label, 10, nc, pc, tol, line_label, out, out_label);
+    default: return cut_ring<0>(in, in_label, n, nc, pc, tol, line_label, out, out_label);
+  }
 }
 
 // clip_target's end when the contact has sharp corners (or they are not
