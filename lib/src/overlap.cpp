@@ -205,12 +205,14 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
   EdgeLanes<kA> ea;
   Lanes lo_b[EdgeLanes<kB>::kCapacity];
   Lanes lo_a[EdgeLanes<kA>::kCapacity], hi_a[EdgeLanes<kA>::kCapacity];
+  // B's axes first, folded into dmax before A's are evaluated (the same
+  // order of the fold), so that B's lanes are dead during A's.
   edge_lanes(b, pb, eb);
   extremes<false, kB, kA>(eb, pb, a, lo_b, nullptr);
-  edge_lanes(a, pa, ea);
-  extremes<kCuts, kA, kB>(ea, pa, b, lo_a, hi_a);
   Lanes dmax = {-DBL_MAX, -DBL_MAX};
   for (int k = 0; k < pb; ++k) dmax = lane_max(dmax, lo_b[k] - eb.off[k]);
+  edge_lanes(a, pa, ea);
+  extremes<kCuts, kA, kB>(ea, pa, b, lo_a, hi_a);
   for (int k = 0; k < pa; ++k) dmax = lane_max(dmax, lo_a[k] - ea.off[k]);
   const double d = std::max(dmax[0], dmax[1]);
   if (d > tol) {
