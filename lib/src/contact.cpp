@@ -528,11 +528,13 @@ enum class On { kNeither = 0, kCp = 1, kTp = 2 };
   return true;
 }
 
-// normal_contact_force for CP and TP with kNc and kNt vertices (0: any).
+// normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
+// ip.count >= 3. One named result, returned on every path, so that it is
+// built in the caller's slot (no copy of it at the end).
 template <int kNc, int kNt>
-NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
-                            double tol, const IpEdge* source, LoadingPoint where) {
-  if (ip.count < 3) return NormalForce{};
+[[gnu::always_inline]] inline NormalForce contact_force_ip(const PotentialSide& cp, const PotentialSide& tp,
+                                                           const Polygon& ip, Integration rule, double tol,
+                                                           const IpEdge* source, LoadingPoint where) {
   const AreaMoments am = area_centroid(ip);
   const Vec2 c = am.centroid;
   // The sums in locals, the result built once at the end: a NormalForce
@@ -603,16 +605,28 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
   }
   // Every member written (in declaration order: force, point, moment,
   // couple, ip_centroid, ip_area, ip_perimeter, segments, valid), so that
-  // nothing is zeroed first.
+  // nothing is zeroed first; a vanishing net force leaves force, point and
+  // moment zero (valid false).
   const double f2 = length_squared(force);
-  if (!(f2 > 0.0)) return NormalForce{Vec2{}, Vec2{}, 0.0, 0.0, c, am.area, perimeter, segments, false};
+  const bool valid = f2 > 0.0;
   // Acting line: points p with (p - c) x f = moment. pg = c + lambda t with
   // t = perp_left(f) / |f|, so lambda (t x f) = moment, t x f = -|f|.
-  const double fl = std::sqrt(f2);
-  const double lambda = -moment / fl;
-  NormalForce out{force, c + lambda * (perp_left(force) / fl), moment, 0.0, c, am.area, perimeter, segments, true};
-  if (where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
+  Vec2 point{};
+  if (valid) {
+    const double fl = std::sqrt(f2);
+    const double lambda = -moment / fl;
+    point = c + lambda * (perp_left(force) / fl);
+  }
+  NormalForce out{valid ? force : Vec2{}, point, valid ? moment : 0.0, 0.0, c, am.area, perimeter, segments, valid};
+  if (valid && where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
   return out;
+}
+
+template <int kNc, int kNt>
+NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
+                            double tol, const IpEdge* source, LoadingPoint where) {
+  if (ip.count < 3) return NormalForce{};
+  return contact_force_ip<kNc, kNt>(cp, tp, ip, rule, tol, source, where);
 }
 
 // contact_force_n with the vertex counts of CP and TP as compile-time
