@@ -7,6 +7,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "area_kernels.hpp"
 #include "lanes.hpp"
 
 namespace dda {
@@ -535,7 +536,7 @@ template <int kNc, int kNt>
 [[gnu::always_inline]] inline NormalForce contact_force_ip(const PotentialSide& cp, const PotentialSide& tp,
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
-  const AreaMoments am = area_centroid(ip);
+  const AreaMoments am = detail::green_centroid(ip.v.data(), ip.count);  // area_centroid(ip), inline
   const Vec2 c = am.centroid;
   // The sums in locals, the result built once at the end: a NormalForce
   // made first would be zeroed (a string store) and its counters summed

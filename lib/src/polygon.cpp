@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "area_kernels.hpp"
 #include "lanes.hpp"
 #include "ring_kernels.hpp"
 
@@ -150,36 +151,7 @@ namespace {
 //   S   += c / 2,  Sx += c (ax + bx) / 6,  Sy += c (ay + by) / 6,
 //   Sxx += c (ax^2 + ax bx + bx^2) / 12,  Syy likewise,
 //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
-// green_centroid: area and centroid only, one edge at a time. kN: the
-// vertex count when known at compile time (0: `n`), so that a
-// quadrilateral's loop is unrolled. The two edges at v[0] are left out:
-// one end is the origin, so c = a x b is a zero, and a zero added to the
-// sums (+0 at the start, never -0 after: x + (-x) rounds to +0) leaves
-// their bits as they are; every other vertex is an end of edges 1 to
-// count - 2, so a non-finite vertex still makes the sums non-finite.
-template <int kN = 0>
-AreaMoments green_centroid(const Vec2* v, int n) {
-  const int count = kN ? kN : n;
-  AreaMoments m;
-  if (count < 3) return m;
-  const Vec2 o = v[0];
-  double s = 0, sx = 0, sy = 0;
-  for (int i = 1; i + 1 < count; ++i) {
-    const Vec2 a = v[i] - o;
-    const Vec2 b = v[i + 1] - o;
-    const double c = cross(a, b);
-    s += c;
-    sx += c * (a.x + b.x);
-    sy += c * (a.y + b.y);
-  }
-  s *= 0.5;
-  sx /= 6.0;
-  sy /= 6.0;
-  m.area = s;
-  if (s == 0.0) return m;
-  m.centroid = o + Vec2{sx / s, sy / s};
-  return m;
-}
+// green_centroid (the area and centroid only): area_kernels.hpp.
 
 // All the moments, two edges at a time: lane 0 holds edge i, lane 1 edge
 // i + 1 (an odd count's last edge alone, repeated in lane 1 and not added),
@@ -250,12 +222,12 @@ AreaMoments area_moments(PolygonView poly) {
 // Mostly an intersection polygon: those of shallow contacts are triangles
 // and quadrilaterals (about half each in the Sect. 6.1 collapse).
 AreaMoments area_centroid(PolygonView poly) {
-  if (poly.count == 4) return green_centroid<4>(poly.v, 4);
-  if (poly.count == 3) return green_centroid<3>(poly.v, 3);
-  return green_centroid(poly.v, poly.count);
+  if (poly.count == 4) return detail::green_centroid<4>(poly.v, 4);
+  if (poly.count == 3) return detail::green_centroid<3>(poly.v, 3);
+  return detail::green_centroid(poly.v, poly.count);
 }
 
-AreaMoments area_centroid(const Vec2* ring, int count) { return green_centroid(ring, count); }
+AreaMoments area_centroid(const Vec2* ring, int count) { return detail::green_centroid(ring, count); }
 
 double area(PolygonView poly) {
   if (poly.count < 3) return 0.0;
