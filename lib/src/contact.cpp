@@ -449,10 +449,17 @@ template <int kN, bool kMinus>
 // of every contact; an edge no longer than tol (no reliable direction) may
 // call a point outside by round-off: bound_to_ip, which bounds by the
 // longer edges only, then finds it inside after all and keeps it.
+// cross(b - a, p - a) = (b - a).x (p - a).y - (b - a).y (p - a).x is
+// taken as the two lanes' products of b - a and the swapped p - a, then
+// their difference: the same operations, the same bits.
 bool inside_ip(const Polygon& ip, Vec2 p) {
+  const Lanes pl = detail::lanes(p);
+  Lanes a = detail::lanes(ip.vertex(0));
   for (int e = 0; e < ip.count; ++e) {
-    const Vec2 a = ip.vertex(e);
-    if (cross(ip.vertex(ip.next(e)) - a, p - a) < 0.0) return false;  // CCW: the inside is on the left
+    const Lanes b = detail::lanes(ip.vertex(ip.next(e)));
+    const Lanes t = (b - a) * detail::swapped(pl - a);
+    if (t[0] - t[1] < 0.0) return false;  // CCW: the inside is on the left
+    a = b;
   }
   return true;
 }
