@@ -190,9 +190,11 @@ struct BisectorSpan {
 // The edge's force L S0 / 2 n acts at a + (S1 / 3 S0) (b - a) (Eq. 17);
 // its moment about c is taken as L [S0 / 2 a + S1 / 6 (b - a)] x n,
 // which stays finite when S0 = 0.
+// No member initialisers: EdgeSums{} is zero, a plain declaration is left
+// for its producer to fill.
 struct EdgeSums {
-  double s0 = 0.0, s1 = 0.0;
-  int segments = 0;
+  double s0, s1;
+  int segments;
 };
 
 // The sums over the demarcation points of one edge: t = 0, the sorted
@@ -203,7 +205,7 @@ struct EdgeSums {
 template <class TractionAt>
 [[gnu::always_inline]] inline EdgeSums integrate_sorted(const double* t_sorted, int count, double f_start, double f_mid,
                                                         double f_end, TractionAt&& traction_at) {
-  EdgeSums sums;
+  EdgeSums sums{};
   double t0 = 0.0, fa = f_start;
   auto segment_to = [&](double t1, double fb) {
     const double dt = t1 - t0;
@@ -591,7 +593,7 @@ template <int kNc, int kNt>
     // side that is used on edge e (so e is not on that side's boundary),
     // its start a is on it when the previous IP edge is, its end when the
     // next one is.
-    EdgeSums sums;
+    EdgeSums sums;  // set when used
     bool used = false;
     if (on_this == On::kCp)
       used = one_side_edge<kNt, true>(tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol, on_prev == On::kTp,
