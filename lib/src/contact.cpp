@@ -585,7 +585,7 @@ template <int kNc, int kNt>
     on_this = on_next;
     on_next = on(e1);
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
-    const double len = length(ab);
+    const double len = detail::root(length_squared(ab));  // length(ab)
     if (len <= tol) continue;
     perimeter += len;
     // A vertex where an edge on CP's boundary starts or ends is on that
@@ -623,7 +623,7 @@ template <int kNc, int kNt>
   // t = perp_left(f) / |f|, so lambda (t x f) = moment, t x f = -|f|.
   Vec2 point{};
   if (valid) {
-    const double fl = std::sqrt(f2);
+    const double fl = detail::root(f2);
     const double lambda = -moment / fl;
     point = c + lambda * (perp_left(force) / fl);
   }

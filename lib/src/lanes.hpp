@@ -47,6 +47,17 @@ inline Lanes lane_sqrt(Lanes a) {
 #endif
 }
 
+// std::sqrt of one double (both correctly rounded), without the call
+// std::sqrt keeps for a negative argument (errno): SSE2's sqrtsd.
+inline double root(double a) {
+#if defined(__SSE2__)
+  const __m128d v = _mm_set_sd(a);
+  return _mm_cvtsd_f64(_mm_sqrt_sd(v, v));
+#else
+  return std::sqrt(a);
+#endif
+}
+
 // a where m is set, +0 elsewhere.
 inline Lanes lane_where(LaneMask m, Lanes a) { return (Lanes)(m & (LaneMask)a); }
 
