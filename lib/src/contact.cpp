@@ -572,9 +572,12 @@ template <int kNc, int kNt>
   // Where each IP edge lies (On), found by arithmetic, not by branches on
   // the source (which of an IP's edges lies on which polygon changes from
   // pair to pair).
-  auto on = [source](int k) {
-    if (!source) return On::kNeither;
-    const IpEdge s = source[k];
+  // Without sources every edge is unknown: a table of unknown edges, so
+  // that no edge tests for it.
+  static const IpEdge kUnknown[kMaxVertices]{};
+  const IpEdge* const sources = source ? source : kUnknown;
+  auto on = [sources](int k) {
+    const IpEdge s = sources[k];
     return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
   };
   // The previous, this and the next edge's, carried along the loop.
