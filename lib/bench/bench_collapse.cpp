@@ -27,11 +27,17 @@
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
-// --max-blocks 1000000: on to 3 x 10^5 and 10^6, far longer, and at the
-// ~2.4 kB of heap per block measured at 10^5 blocks some 2.4 GB per
-// simulation at 10^6); a table of blocks, pairs per step, us per step, ns per block-step
-// and ns per candidate pair with 1 and 2 threads, and the fitted exponent p of
-// cost ~ blocks^p. --csv FILE also writes the table as CSV. Shapes:
+// --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~2.3 kB of heap per block:
+// 2.3 GB per simulation at 10^6, two of them alive at once for the 1- and
+// 2-thread runs); --min-blocks N leaves out the rows below N, --max-threads 1
+// runs each row with 1 thread only (the 10^6 row in half the time). A table
+// of blocks, pairs per step, wall and CPU us per step, ns per block-step and
+// per candidate pair, the heap per block of the constructed simulation (of
+// it the pooled block geometry, and the near pairs per block times the bytes
+// each holds), the CPU time of generating the scene and of constructing the
+// simulation, and the fitted exponents p of cost ~ blocks^p (least squares
+// over the rows: time per step, generation, construction). --csv FILE also
+// writes the table as CSV. Shapes:
 //   wide   (default) the collapse's 50 m height, width grown: every block sees
 //          the same depth of rock, so per-block physics stays the same and
 //          the table shows the algorithm's growth;
@@ -331,8 +337,8 @@ struct ThreadRuns {
   // block and the solver state each holds (Simulation::bytes_per_near_pair).
   double near_pairs_per_block = 0.0;
   std::size_t bytes_per_near_pair = 0;
-  // Wall time of the first simulation's constructor (blocks, H, broad
-  // phase, forces at t = 0), s.
+  // CPU time of the first simulation's constructor (blocks, H, broad
+  // phase, forces at t = 0; serial), s.
   double construct_s = 0.0;
 };
 
@@ -342,9 +348,9 @@ ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps, int
   for (int threads : kThreadCounts) {
     if (threads > max_threads) break;
     const double before = heap_bytes();
-    const Clock::time_point t0 = Clock::now();
+    const std::clock_t t0 = std::clock();
     auto sim = std::make_unique<dda::Simulation>(scene);
-    const double construct_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double construct_s = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
     const double built = heap_bytes();
     const std::size_t near_pairs = sim->near_pair_count();
     out.runs.push_back(timed_run(*sim, threads, warmup, steps));
@@ -554,7 +560,7 @@ struct ScalingRow {
   int target = 0;
   double width = 0.0, height = 0.0;
   int warmup = 0;
-  double generate_s = 0.0;  // wall time of cutting the region into blocks (generate_blocks) and building the scene, s
+  double generate_s = 0.0;  // CPU time of cutting the region into blocks (generate_blocks) and building the scene, s
   ThreadRuns t;
 };
 
@@ -573,9 +579,9 @@ ScalingRow scaling_row(const dda::paper::Collapse& base, Shape shape, int target
   }
   row.width = w;
   row.height = h;
-  const Clock::time_point t0 = Clock::now();
+  const std::clock_t t0 = std::clock();
   const dda::Scene s = scaled_scene(base, w, h, dropped);
-  row.generate_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  row.generate_s = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
   const int n = static_cast<int>(s.blocks.size());
   const int steps = std::clamp(static_cast<int>(kBlockStepBudget / n), kMinScalingSteps, kMaxScalingSteps);
   row.warmup = warmup;
@@ -658,7 +664,7 @@ int run_scaling(const Options& o) {
                   " the CPU fit is the one to trust when cpu/wall < threads: the cores were shared)\n",
                   kThreadCounts[k], growth_exponent(rows, [k](const ScalingRow& r) { return r.t.runs[k].us_per_step(); }),
                   growth_exponent(rows, [k](const ScalingRow& r) { return r.t.runs[k].cpu_us_per_step(); }));
-    std::printf("   setup: generating the scene ~ blocks^%.2f, constructing the simulation ~ blocks^%.2f (wall time)\n",
+    std::printf("   setup: generating the scene ~ blocks^%.2f, constructing the simulation ~ blocks^%.2f (CPU time)\n",
                 growth_exponent(rows, [](const ScalingRow& r) { return r.generate_s; }),
                 growth_exponent(rows, [](const ScalingRow& r) { return r.t.construct_s; }));
   }
@@ -666,7 +672,7 @@ int run_scaling(const Options& o) {
               " same: 1- and 2-thread final states bit-identical;\n   kB/block: heap per block of the constructed "
               "simulation; geo B/blk: of it, the pooled block geometry (vertices, normals, offsets);\n   np/blk, B/np: "
               "of it, the near pairs per block at construction and the solver state of each;\n   B/touch: heap "
-              "growth over the run per touching pair at its end (mallinfo2); gen s, build s: wall time of\n   "
+              "growth over the run per touching pair at its end (mallinfo2); gen s, build s: CPU time of\n   "
               "generating the scene and of constructing the first simulation\n");
   if (!o.csv.empty()) {
     write_csv(o.csv, rows, o.shape);
