@@ -23,7 +23,11 @@
 // between two threads cost nothing (barriers, shared cache lines, uneven
 // shares), whatever the host does to both cores alike. --rounds N (default 3) repeats the three runs in turn (1
 // thread, 2 threads, the independent pair), and the table gives the median
-// round's, so that a minute of a busy host does not decide the verdict.
+// round's, so that a minute of a busy host does not decide the verdict; and
+// the speed-up over the ceiling per round (their median): 1 when splitting
+// the step costs nothing. A crowded host (load average above the cores)
+// pulls it far below 1: a descheduled thread of the team makes its partner
+// wait at each of the step's barriers, which two independent runs never do.
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
@@ -372,12 +376,12 @@ ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps, int
 }
 
 // The 1-minute load average (Linux), to judge whether other work shared the cores.
-std::string load_note() {
+std::string load_note(const char* when = "before the runs") {
   std::ifstream f("/proc/loadavg");
   double load = 0.0;
   if (!(f >> load)) return "load average unknown";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "load average %.2f before the runs", load);
+  std::snprintf(buf, sizeof buf, "load average %.2f %s", load, when);
   return buf;
 }
 
@@ -476,7 +480,7 @@ int run_collapse(const Options& o) {
   // Each round: 1 thread, 2 threads, the independent pair, one after the
   // other, so that the three see the same minute of the host.
   std::vector<ThreadRuns> rounds;
-  std::vector<double> speedup, ceiling, busy;
+  std::vector<double> speedup, ceiling, busy, of_ceiling;
   bool same = true;
   for (int r = 0; r < o.rounds; ++r) {
     rounds.push_back(run_thread_counts(s, o.warmup, o.steps));
@@ -486,6 +490,7 @@ int run_collapse(const Options& o) {
     speedup.push_back(t.runs[0].wall_s / t.runs[1].wall_s);
     ceiling.push_back(2.0 * t.runs[0].wall_s / pair);
     busy.push_back(pair / t.runs[1].wall_s);
+    of_ceiling.push_back(speedup.back() / ceiling.back());
   }
   const double trip_after = core_round_trip_ns();
   const std::size_t m = median_index(speedup);
@@ -506,6 +511,10 @@ int run_collapse(const Options& o) {
   std::printf("   2 threads against 1 with both cores busy: the independent pair's wall / the 2-thread run's\n"
               "   = %.2fx (median; rounds: %s; 2x if the pair loop, the barriers and the shared lines cost nothing)\n",
               busy[median_index(busy)], round_list(busy).c_str());
+  std::printf("   speed-up / ceiling: %.2f (median; rounds: %s; 1 when splitting the step costs nothing; on a\n"
+              "   crowded host, a descheduled thread of the team makes its partner wait at the step's barriers,\n"
+              "   which the independent runs never do: see the waits below and the %s)\n",
+              of_ceiling[median_index(of_ceiling)], round_list(of_ceiling).c_str(), load_note("after them").c_str());
   print_phases(rounds[m].runs);
   std::printf("   core-to-core round trip of a cache line: %.0f ns before, %.0f ns after the runs (the 2-thread\n"
               "   speed-up falls as it grows: barriers and the polygons and loads shared by the two cores pay it)\n",
