@@ -65,7 +65,8 @@ void BM_DdaNormalContact(benchmark::State& state) {
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   bench::each_pair(state, pairs(static_cast<int>(state.range(0)), true), [&](const Pair& p) {
     const double tol = p.tol();
-    if (dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data()) == dda::OverlapState::kOverlapping) {
+    if (dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data(), nullptr, p.a.sharp) ==
+        dda::OverlapState::kOverlapping) {
       const dda::NormalForce nf = dda::normal_contact_force(p.a.side, p.b.side, ip, dda::Integration::kPaperBisector,
                                                             tol, source.data(), dda::LoadingPoint::kWithinIp);
       benchmark::DoNotOptimize(nf);
@@ -78,7 +79,8 @@ void BM_DdaOverlapIp(benchmark::State& state) {
   dda::Polygon ip;
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   bench::each_pair(state, pairs(static_cast<int>(state.range(0)), true), [&](const Pair& p) {
-    const dda::OverlapState s = dda::overlap_and_intersection(p.a.poly, p.b.poly, p.tol(), ip, source.data());
+    const dda::OverlapState s =
+        dda::overlap_and_intersection(p.a.poly, p.b.poly, p.tol(), ip, source.data(), nullptr, p.a.sharp);
     benchmark::DoNotOptimize(s);
     benchmark::DoNotOptimize(ip);
   });

@@ -4,8 +4,10 @@
 // polygon (Sect. 3.2.3) and its geometric tolerance are built once, as the
 // simulation builds them once per block and step (update_block_geometry:
 // sides_[i].tol, the bisector store) and takes the pair's tolerance as the
-// larger of the two (pair_forces); Box2D's shapes likewise carry their
-// normals.
+// larger of the two (pair_forces), and its sharp corners (the clipper's
+// bevels when it is the contact polygon), as the simulation finds them
+// once per block and step (sharp_corners_); Box2D's shapes likewise carry
+// their normals.
 #pragma once
 #include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -43,6 +46,7 @@ struct Side {
   std::vector<dda::Bisector> bisectors;
   dda::PotentialSide side;
   double tol = 0.0;  // geometric_tolerance(poly), m
+  std::uint32_t sharp = 0;  // dda::sharp_corners(poly)
   b2PolygonShape b2;
 };
 
@@ -56,6 +60,7 @@ inline Side make_side(const dda::Polygon& p) {
   s.side.small_edge = small;
   s.side.bisector_count = nb;
   s.tol = dda::geometric_tolerance(p);
+  s.sharp = dda::sharp_corners(p);
   s.b2 = to_box2d(p);
   return s;
 }

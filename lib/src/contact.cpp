@@ -629,13 +629,28 @@ NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const 
   }
 }
 
+// Two hexagons, heptagons or octagons (Box2D's limit; round particles made
+// of polygons): the counts as constants too, so that no IP edge pays
+// paper_side_edge_any's call and switch. Out of line: the common blocks
+// are triangles to pentagons.
+[[gnu::noinline]] NormalForce by_equal_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
+                                             Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
+  if (cp.poly.count == tp.poly.count) switch (cp.poly.count) {
+      case 6: return contact_force_n<6, 6>(cp, tp, ip, rule, tol, source, where);
+      case 7: return contact_force_n<7, 7>(cp, tp, ip, rule, tol, source, where);
+      case 8: return contact_force_n<8, 8>(cp, tp, ip, rule, tol, source, where);
+      default: break;
+    }
+  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+}
+
 NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule, double tol,
                       const IpEdge* source, LoadingPoint where) {
   switch (cp.poly.count) {
     case 3: return by_tp_count<3>(cp, tp, ip, rule, tol, source, where);
     case 4: return by_tp_count<4>(cp, tp, ip, rule, tol, source, where);
     case 5: return by_tp_count<5>(cp, tp, ip, rule, tol, source, where);
-    default: return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+    default: return by_equal_count(cp, tp, ip, rule, tol, source, where);
   }
 }
 
@@ -668,10 +683,21 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
       // Keep normal.x <= offset; a vertex within snap of the line is on it.
       const Vec2 normal = nj - ni;
       const double offset = dot(nj, p.vertex(j)) - ci;
+      // A region wholly on the kept side (every d <= 0) is what clip_ring
+      // would copy, one wholly beyond (every d > 0) what it would empty:
+      // neither is cut (mostly the case, an IP being small beside its block).
+      bool inside = true, outside = true;
       for (int k = 0; k < count; ++k) {
         double dk = dot(normal, cell[k]) - offset;
         if (std::fabs(dk) <= snap) dk = 0.0;
         d[static_cast<std::size_t>(k)] = dk;
+        inside = inside && dk <= 0.0;
+        outside = outside && dk > 0.0;
+      }
+      if (inside) continue;
+      if (outside) {
+        count = 0;
+        continue;
       }
       count = clip_ring(cell, d.data(), count, ring[next].data());
       if (count < 3) count = 0;

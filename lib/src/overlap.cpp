@@ -205,12 +205,14 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
   EdgeLanes<kA> ea;
   Lanes lo_b[EdgeLanes<kB>::kCapacity];
   Lanes lo_a[EdgeLanes<kA>::kCapacity], hi_a[EdgeLanes<kA>::kCapacity];
+  // B's axes first, folded into dmax before A's are evaluated (the same
+  // order of the fold), so that B's lanes are dead during A's.
   edge_lanes(b, pb, eb);
   extremes<false, kB, kA>(eb, pb, a, lo_b, nullptr);
-  edge_lanes(a, pa, ea);
-  extremes<kCuts, kA, kB>(ea, pa, b, lo_a, hi_a);
   Lanes dmax = {-DBL_MAX, -DBL_MAX};
   for (int k = 0; k < pb; ++k) dmax = lane_max(dmax, lo_b[k] - eb.off[k]);
+  edge_lanes(a, pa, ea);
+  extremes<kCuts, kA, kB>(ea, pa, b, lo_a, hi_a);
   for (int k = 0; k < pa; ++k) dmax = lane_max(dmax, lo_a[k] - ea.off[k]);
   const double d = std::max(dmax[0], dmax[1]);
   if (d > tol) {
@@ -231,17 +233,49 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
 // quadrilaterals, the rest mostly pentagons and triangles (of the overlap
 // tests in the Sect. 6.1 collapse about 79 % are 4-4 pairs, 17 % 4-5 or
 // 5-4, 3 % other pairs of triangles to pentagons), so every pair of counts
-// 3 to 5 runs unrolled (the generic loops take about three times as many
+// 3 to 8 runs unrolled (the generic loops take two to three times as many
 // instructions). by_counts calls Op::run<kA, kB>(a, b, args) with kA, kB
-// the counts of a and b when both are 3 to 5, else Op::run<0, 0>;
-// by_counts_b: on B's count, A's known to be kA.
+// the counts of a and b when both are 3 to 8, else Op::run<0, 0>;
+// by_counts_b: on B's count, A's known to be kA (3 to 5). The pairs of
+// triangles to pentagons are told apart inline; the rest (a count of 6 or
+// more) go through by_counts_wide, out of line, so that the common
+// dispatch stays a short chain of compares with no call frame.
+template <class Op, int kA, class... Args>
+OverlapState by_counts_wide_b(const PolygonView& a, const PolygonView& b, Args&&... args) {
+  switch (b.count) {
+    case 3: return Op::template run<kA, 3>(a, b, args...);
+    case 4: return Op::template run<kA, 4>(a, b, args...);
+    case 5: return Op::template run<kA, 5>(a, b, args...);
+    case 6: return Op::template run<kA, 6>(a, b, args...);
+    case 7: return Op::template run<kA, 7>(a, b, args...);
+    case 8: return Op::template run<kA, 8>(a, b, args...);
+    default: return Op::template run<0, 0>(a, b, args...);
+  }
+}
+
+// Its arguments by value (those of OverlapAndClip::run): a reference to
+// the caller's tol would make the caller keep tol in memory.
+template <class Op>
+[[gnu::noinline]] OverlapState by_counts_wide(const PolygonView& a, const PolygonView& b, double tol, Polygon& ip,
+                                              IpEdge* source, int* witness, std::uint32_t sharp) {
+  switch (a.count) {
+    case 3: return by_counts_wide_b<Op, 3>(a, b, tol, ip, source, witness, sharp);
+    case 4: return by_counts_wide_b<Op, 4>(a, b, tol, ip, source, witness, sharp);
+    case 5: return by_counts_wide_b<Op, 5>(a, b, tol, ip, source, witness, sharp);
+    case 6: return by_counts_wide_b<Op, 6>(a, b, tol, ip, source, witness, sharp);
+    case 7: return by_counts_wide_b<Op, 7>(a, b, tol, ip, source, witness, sharp);
+    case 8: return by_counts_wide_b<Op, 8>(a, b, tol, ip, source, witness, sharp);
+    default: return Op::template run<0, 0>(a, b, tol, ip, source, witness, sharp);
+  }
+}
+
 template <class Op, int kA, class... Args>
 OverlapState by_counts_b(const PolygonView& a, const PolygonView& b, Args&&... args) {
   switch (b.count) {
     case 3: return Op::template run<kA, 3>(a, b, args...);
     case 4: return Op::template run<kA, 4>(a, b, args...);
     case 5: return Op::template run<kA, 5>(a, b, args...);
-    default: return Op::template run<0, 0>(a, b, args...);
+    default: return by_counts_wide<Op>(a, b, args...);
   }
 }
 
@@ -251,7 +285,7 @@ OverlapState by_counts(const PolygonView& a, const PolygonView& b, Args&&... arg
     case 3: return by_counts_b<Op, 3>(a, b, args...);
     case 4: return by_counts_b<Op, 4>(a, b, args...);
     case 5: return by_counts_b<Op, 5>(a, b, args...);
-    default: return Op::template run<0, 0>(a, b, args...);
+    default: return by_counts_wide<Op>(a, b, args...);
   }
 }
 
@@ -321,8 +355,8 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
 // tested twice). Returns false when some vertex is removable (then `result`
 // is to be cleaned). kN as cut_ring's.
 template <int kN>
-bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView& contact, const PolygonView& target,
-               double tol, Polygon& result, IpEdge* source) {
+[[gnu::always_inline]] inline bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView& contact,
+                                             const PolygonView& target, double tol, Polygon& result, IpEdge* source) {
   const int n = kN ? kN : n_in;
   const bool removable = detail::ring_needs_clean<kN>(in, n, tol * tol);
   for (int i = 0; i < n; ++i) {
@@ -354,80 +388,79 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
   }
 }
 
-// The target cut by the lines of the contact's edges whose bit is set in
-// `lines` (Table 3), with edge labels; normals taken from the labelled
-// source edges. Two rings (vertices and labels), ping-ponged by swapping
-// their pointers: each cut of a convex polygon by a half-plane adds at most
-// one vertex, so n + m fits in kMaxVertices. The rings are thread-local
-// scratch, as a local ring would be zeroed on every call (Vec2
-// zero-initialises); one pointer per ring, rather than a buffer index, keeps
-// the loop's addresses in registers. The first input is the target itself,
-// and a line that leaves every vertex inside (the usual case: a shallow
-// contact is cut by one or two of the contact polygon's edge lines) costs
-// one distance per vertex and no copy. The last ring goes to `result` in one
-// pass with its normals and sources, which also runs clean_ring's test; only
-// a ring that has a vertex to remove (rare) is then cleaned (clean_result).
-// Out of line: OverlapAndClip::run inlines all else it calls, and one copy
-// of the clipper serves every pair of counts.
-[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
-                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
-  struct Ring {
-    std::array<Vec2, kMaxVertices> v;
-    std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
-  };
-  static thread_local Ring rings[2];
-  // The target's own edges label themselves: label j for edge j.
-  static constexpr std::array<int, kMaxVertices> target_label = [] {
-    std::array<int, kMaxVertices> l{};
-    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
-    return l;
-  }();
-  const Vec2* in = target.v;
-  const int* in_label = target_label.data();
-  int in_count = target.count;
-  Ring* out_ring = &rings[0];
-  Ring* spare_ring = &rings[1];
-  // Only the lines whose bit is set, in increasing order.
-  if (contact.count < 32) lines &= (std::uint32_t{1} << contact.count) - 1u;
-  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
-    const int c = __builtin_ctz(lines);
-    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
-    Vec2* out = out_ring->v.data();
-    int* out_label = out_ring->label.data();
-    const int line = contact_label(c);
-    int count = 0;
-    switch (in_count) {
-      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
-      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
-      default: count = cut_ring<0>(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
-    }
-    if (count < 0) continue;  // no vertex outside: the ring stays
-    in_count = count;
-    in = out;
-    in_label = out_label;
-    std::swap(out_ring, spare_ring);
+// clip_target's scratch: a ring of vertices and their edge labels.
+struct ClipRing {
+  std::array<Vec2, kMaxVertices> v;
+  std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
+};
+
+// clip_target's end on its last ring in[0..n) (labels in_label, no
+// kMixedEdgeLabel): emit_ring, then cleaning only if a vertex is
+// removable; no IP when fewer than 3 vertices are left.
+[[gnu::always_inline]] inline void finish_ring(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
+                                               const PolygonView& target, double tol, Polygon& result,
+                                               IpEdge* source) {
+  if (n < 3) {
+    result.count = 0;
+    return;
   }
-  // Bevels at the contact's sharp corners. Every vertex left is
-  // within tol of every edge line of the contact (a vertex within tol of a
-  // line is kept where it is, and crossing points are convex combinations of
-  // such vertices), but near a corner of interior angle theta the points
-  // within tol of both lines reach tol / sin(theta / 2) from the corner:
-  // 1e6 tol at theta = 1e-6 rad (the "vertices far outside" at sharp
-  // wedges and crossings). A bevel is the line through the corner whose
-  // normal bisects the corner's outward normals: it supports the contact
-  // (any normal inside the corner's normal cone does, so the rounding of
-  // n0 + n1 at a needle's tip cannot tilt it out), and the corners it makes
-  // with the two edge lines have interior angles (pi + theta) / 2 >= pi / 2.
-  // Cutting by it (tol-snapped like every cut) bounds every vertex within
-  // sqrt(2) tol of the contact near a bevelled corner and within tol /
-  // sin(15 deg) = 3.9 tol near the others, plus round-off: hence
-  // kIpVertexReach. The target needs none: every vertex lies on the
-  // target's ring (its vertices or convex combinations of them). A bevel
-  // removes only what lies more than tol beyond the corner, so on ordinary
-  // contacts it is one distance per vertex and changes nothing; its edge
-  // has no source edge (kMixedEdgeLabel: normal from its end points).
-  // The sharp corners are a fact of the contact alone (sharp_corners), given
-  // by a caller that keeps it per polygon, else found here.
+  bool clean = false;
+  switch (n) {
+    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
+    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
+    default: clean = emit_ring<0>(in, in_label, n, contact, target, tol, result, source); break;
+  }
+  if (!clean) clean_result(in_label, contact, target, tol, result, source);
+}
+
+// One cut of a ring of more than five vertices, apart: such rings are rare
+// in the simulations, and one out-of-line call keeps the clipping loop's
+// registers (not cold: the pair benchmarks of hexagons and octagons use it
+// for most cuts). Rings of 6 to 10 vertices (the cuts of two hexagons or
+// octagons) with their count known at compile time, the rest cut_ring<0>.
+[[gnu::noinline]] int cut_ring_any(const Vec2* in, const int* in_label, int n, Vec2 nc, Vec2 pc, double tol,
+                                   int line_label, Vec2* out, int* out_label) {
+  switch (n) {
+    case 6: return cut_ring<6>(in, in_label, 6, nc, pc, tol, line_label, out, out_label);
+    case 7: return cut_ring<7>(in, in_label, 7, nc, pc, tol, line_label, out, out_label);
+    case 8: return cut_ring<8>(in, in_label, 8, nc, pc, tol, line_label, out, out_label);
+    case 9: return cut_ring<9>(in, in_label, 9, nc, pc, tol, line_label, out, out_label);
+    case 10: return cut_ring<10>(in, in_label, 10, nc, pc, tol, line_label, out, out_label);
+    default: return cut_ring<0>(in, in_label, n, nc, pc, tol, line_label, out, out_label);
+  }
+}
+
+// clip_target's end when the contact has sharp corners (or they are not
+// given, kSharpCornersUnknown: found here): the cuts by the bevels, then
+// finish_ring, or, when a bevel cut, the general (cleaning) end, as the
+// labels may hold kMixedEdgeLabel. Out of line: most contacts have no sharp
+// corner.
+//
+// Bevels at the contact's sharp corners. Every vertex left is within tol of
+// every edge line of the contact (a vertex within tol of a line is kept
+// where it is, and crossing points are convex combinations of such
+// vertices), but near a corner of interior angle theta the points within tol
+// of both lines reach tol / sin(theta / 2) from the corner: 1e6 tol at theta
+// = 1e-6 rad (vertices far outside the contact at sharp wedges and
+// crossings). A bevel is the line through the corner whose normal bisects
+// the corner's outward normals: it supports the contact (any normal inside
+// the corner's normal cone does, so the rounding of n0 + n1 at a needle's
+// tip cannot tilt it out), and the corners it makes with the two edge lines
+// have interior angles (pi + theta) / 2 >= pi / 2. Cutting by it
+// (tol-snapped like every cut) bounds every vertex within sqrt(2) tol of the
+// contact near a bevelled corner and within tol / sin(15 deg) = 3.9 tol near
+// the others, plus round-off: hence kIpVertexReach. The target needs none:
+// every vertex lies on the target's ring (its vertices or convex
+// combinations of them). A bevel removes only what lies more than tol beyond
+// the corner, so on ordinary contacts it is one distance per vertex and
+// changes nothing; its edge has no source edge (kMixedEdgeLabel: normal from
+// its end points). The sharp corners are a fact of the contact alone
+// (sharp_corners), given by a caller that keeps it per polygon, else found
+// here.
+[[gnu::noinline, gnu::cold]] void bevel_and_finish(const PolygonView& contact, const PolygonView& target, double tol,
+                                                   std::uint32_t sharp, const Vec2* in, const int* in_label,
+                                                   int in_count, ClipRing* out_ring, ClipRing* spare_ring,
+                                                   Polygon& result, IpEdge* source) {
   bool bevelled = false;
   if (sharp == kSharpCornersUnknown) sharp = sharp_corners(contact);
   for (; sharp != 0 && in_count >= 3; sharp &= sharp - 1u) {
@@ -444,23 +477,71 @@ bool emit_ring(const Vec2* in, const int* in_label, int n_in, const PolygonView&
     in_label = out_label;
     std::swap(out_ring, spare_ring);
   }
-  if (in_count < 3) {
-    result.count = 0;
+  if (in_count < 3 || !bevelled) {
+    finish_ring(in, in_label, in_count, contact, target, tol, result, source);
     return;
   }
-  if (bevelled) {  // labels may hold kMixedEdgeLabel: the general (cleaning) end
-    for (int i = 0; i < in_count; ++i) result.v[static_cast<std::size_t>(i)] = in[i];
-    result.count = in_count;
-    clean_result(in_label, contact, target, tol, result, source);
+  for (int i = 0; i < in_count; ++i) result.v[static_cast<std::size_t>(i)] = in[i];
+  result.count = in_count;
+  clean_result(in_label, contact, target, tol, result, source);
+}
+
+// The target cut by the lines of the contact's edges whose bit is set in
+// `lines` (Table 3; bits at or above contact.count must be clear), with
+// edge labels; normals taken from the labelled source edges. Two rings
+// (vertices and labels), ping-ponged by swapping their pointers: each cut
+// of a convex polygon by a half-plane adds at most one vertex, so n + m
+// fits in kMaxVertices. The rings are thread-local scratch, as a local ring
+// would be zeroed on every call (Vec2 zero-initialises); one pointer per
+// ring, rather than a buffer index, keeps the loop's addresses in
+// registers. The first input is the target itself, and a line that leaves
+// every vertex inside (the usual case: a shallow contact is cut by one or
+// two of the contact polygon's edge lines) costs one distance per vertex
+// and no copy. Then the bevels at the contact's sharp corners
+// (bevel_and_finish), if any. The last ring goes to `result` in one pass
+// with its normals and sources, which also runs clean_ring's test; only a
+// ring that has a vertex to remove (rare) is then cleaned (clean_result).
+// Out of line: OverlapAndClip::run inlines all else it calls, and one copy
+// of the clipper serves every pair of counts.
+[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
+                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
+  static thread_local ClipRing rings[2];
+  // The target's own edges label themselves: label j for edge j.
+  static constexpr std::array<int, kMaxVertices> target_label = [] {
+    std::array<int, kMaxVertices> l{};
+    for (int j = 0; j < kMaxVertices; ++j) l[static_cast<std::size_t>(j)] = j;
+    return l;
+  }();
+  const Vec2* in = target.v;
+  const int* in_label = target_label.data();
+  int in_count = target.count;
+  ClipRing* out_ring = &rings[0];
+  ClipRing* spare_ring = &rings[1];
+  // Only the lines whose bit is set, in increasing order.
+  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
+    const int c = __builtin_ctz(lines);
+    const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
+    Vec2* out = out_ring->v.data();
+    int* out_label = out_ring->label.data();
+    const int line = contact_label(c);
+    int count = 0;
+    switch (in_count) {
+      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
+      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
+      case 5: count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label); break;
+      default: count = cut_ring_any(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
+    }
+    if (count < 0) continue;  // no vertex outside: the ring stays
+    in_count = count;
+    in = out;
+    in_label = out_label;
+    std::swap(out_ring, spare_ring);
+  }
+  if (sharp != 0) {
+    bevel_and_finish(contact, target, tol, sharp, in, in_label, in_count, out_ring, spare_ring, result, source);
     return;
   }
-  bool clean = false;
-  switch (in_count) {
-    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
-    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: clean = emit_ring<0>(in, in_label, in_count, contact, target, tol, result, source); break;
-  }
-  if (!clean) clean_result(in_label, contact, target, tol, result, source);
+  finish_ring(in, in_label, in_count, contact, target, tol, result, source);
 }
 
 // overlap_and_intersection for the vertex counts kA, kB (0: read them):
@@ -521,22 +602,40 @@ OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonV
 
 void intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol, Polygon& result) {
   if (tol < 0.0) tol = pair_tolerance(contact, target);
-  clip_target(contact, target, tol, kAllLines, kSharpCornersUnknown, result, nullptr);
+  const std::uint32_t lines = contact.count < 32 ? (std::uint32_t{1} << contact.count) - 1u : kAllLines;
+  clip_target(contact, target, tol, lines, kSharpCornersUnknown, result, nullptr);
 }
 
-std::uint32_t sharp_corners(const PolygonView& poly) {
-  // Corner c lies between edges c - 1 and c; branch-free, the previous
-  // normal carried along.
-  const int n = std::min(poly.count, 32);
-  if (n < 3) return 0;
+namespace {
+
+// sharp_corners for kN vertices (0: poly.count, at most 32), two corners at
+// a time: lane 0 corner c, lane 1 corner c + 1 (an odd count's last corner
+// in both), each dot product lane by lane the scalar dot's operations.
+template <int kN>
+std::uint32_t sharp_corners_n(const PolygonView& poly) {
+  using detail::high_lanes;
+  using detail::lanes;
+  using detail::low_lanes;
+  const int n = kN ? kN : std::min(poly.count, 32);
+  const Lanes bevel{kBevelCos, kBevelCos};
   std::uint32_t sharp = 0;
-  Vec2 prev = poly.n[n - 1];
-  for (int c = 0; c < n; ++c) {
-    const Vec2 next = poly.n[c];
-    sharp |= static_cast<std::uint32_t>(dot(prev, next) < kBevelCos) << c;
-    prev = next;
+  for (int c = 0; c < n; c += 2) {
+    const int d = c + 1 < n ? c + 1 : c;
+    const Lanes pc = lanes(poly.n[c == 0 ? n - 1 : c - 1]), pd = lanes(poly.n[d - 1]);
+    const Lanes qc = lanes(poly.n[c]), qd = lanes(poly.n[d]);
+    const Lanes dots = low_lanes(pc, pd) * low_lanes(qc, qd) + high_lanes(pc, pd) * high_lanes(qc, qd);
+    sharp |= detail::lane_bits(dots < bevel) << c;
   }
-  return sharp;
+  return n & 1 ? sharp & ((std::uint32_t{1} << n) - 1u) : sharp;  // an odd n: its repeated lane's bit n off
+}
+
+}  // namespace
+
+std::uint32_t sharp_corners(const PolygonView& poly) {
+  // Corner c lies between edges c - 1 and c.
+  if (poly.count == 4) return sharp_corners_n<4>(poly);
+  if (poly.count < 3) return 0;
+  return sharp_corners_n<0>(poly);
 }
 
 Polygon intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol) {

@@ -152,7 +152,11 @@ namespace {
 //   Sxy += c (ax by + 2 ax ay + 2 bx by + bx ay) / 24.
 // green_centroid: area and centroid only, one edge at a time. kN: the
 // vertex count when known at compile time (0: `n`), so that a
-// quadrilateral's loop is unrolled.
+// quadrilateral's loop is unrolled. The two edges at v[0] are left out:
+// one end is the origin, so c = a x b is a zero, and a zero added to the
+// sums (+0 at the start, never -0 after: x + (-x) rounds to +0) leaves
+// their bits as they are; every other vertex is an end of edges 1 to
+// count - 2, so a non-finite vertex still makes the sums non-finite.
 template <int kN = 0>
 AreaMoments green_centroid(const Vec2* v, int n) {
   const int count = kN ? kN : n;
@@ -160,9 +164,9 @@ AreaMoments green_centroid(const Vec2* v, int n) {
   if (count < 3) return m;
   const Vec2 o = v[0];
   double s = 0, sx = 0, sy = 0;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 1; i + 1 < count; ++i) {
     const Vec2 a = v[i] - o;
-    const Vec2 b = v[i + 1 == count ? 0 : i + 1] - o;
+    const Vec2 b = v[i + 1] - o;
     const double c = cross(a, b);
     s += c;
     sx += c * (a.x + b.x);
@@ -183,7 +187,8 @@ AreaMoments green_centroid(const Vec2* v, int n) {
 // edge; the terms are then added edge by edge in order, S with Sxy, Sx
 // with Sy and Sxx with Syy in the two lanes of one sum (bx ay is the
 // ay bx of the cross product). The area and centroid are green_centroid's
-// bits; for them alone the scalar loop is as short as the lanes.
+// bits; for them alone the scalar loop is as short as the lanes. As in
+// green_centroid, the two edges at v[0] are left out (zero terms).
 template <int kN = 0>
 AreaMoments green_moments(const Vec2* v, int n) {
   using detail::high_lanes;
@@ -217,9 +222,10 @@ AreaMoments green_moments(const Vec2* v, int n) {
       sxx_syy += high_lanes(txx, tyy);
     }
   };
-  int i = 0;
-  for (; i + 1 < count; i += 2) add_edges(i, i + 1, true);
-  if (i < count) add_edges(i, i, false);
+  // Edges 1 to count - 2: the two at v[0] add zeros (green_centroid).
+  int i = 1;
+  for (; i + 2 < count; i += 2) add_edges(i, i + 1, true);
+  if (i + 1 < count) add_edges(i, i, false);
   const double s = s_sxy[0] * 0.5;
   const Lanes sx_sy6 = sx_sy / Lanes{6.0, 6.0};
   m.area = s;

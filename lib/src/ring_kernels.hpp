@@ -88,21 +88,23 @@ inline unsigned removable_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx
 // True when clean_ring would remove some vertex of v[0..n) (n >= 3): its
 // first sweep tests every vertex of the unchanged ring, so a ring with no
 // removable vertex comes back as it is. Two vertices at a time (pair k:
-// vertices 2k and 2k + 1, an odd count's last vertex paired with vertex 0,
-// tested twice). kN: n when known at compile time (0: read it).
+// vertices 2k and 2k + 1), an odd count's last vertex alone by
+// removable_vertex (the same products and comparisons). kN: n when known
+// at compile time (0: read it).
 template <int kN>
 inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
   const int n = kN ? kN : n_in;
   const Lanes t2 = {tol2, tol2};
   unsigned removable = 0;
-  for (int k = 0; k < (n + 1) / 2; ++k) {
-    const int i0 = 2 * k, i1 = 2 * k + 1 == n ? 0 : 2 * k + 1;
-    const Vec2 a0 = v[i0 == 0 ? n - 1 : i0 - 1], a1 = v[i1 == 0 ? n - 1 : i1 - 1];
+  for (int k = 0; k < n / 2; ++k) {
+    const int i0 = 2 * k, i1 = 2 * k + 1;
+    const Vec2 a0 = v[i0 == 0 ? n - 1 : i0 - 1], a1 = v[i0];
     const Vec2 b0 = v[i0], b1 = v[i1];
-    const Vec2 c0 = v[i0 + 1 == n ? 0 : i0 + 1], c1 = v[i1 + 1 == n ? 0 : i1 + 1];
+    const Vec2 c0 = v[i1], c1 = v[i1 + 1 == n ? 0 : i1 + 1];
     removable |= removable_lanes(Lanes{a0.x, a1.x}, Lanes{a0.y, a1.y}, Lanes{b0.x, b1.x}, Lanes{b0.y, b1.y},
                                  Lanes{c0.x, c1.x}, Lanes{c0.y, c1.y}, t2);
   }
+  if (n % 2 != 0 && removable_vertex(v[n - 2], v[n - 1], v[0], tol2)) return true;
   return removable != 0;
 }
 

@@ -55,17 +55,17 @@ void write_outputs(const std::string& dir, const std::vector<Run>& runs) {
        "wide block B of height 0.1 m (case 1) or 1 m (case 2); kn 50 MPa, dt 1e-4 s, frictionless",
        "dy = accumulated vertical displacement of A's centroid, m"});
   repro::write_table<Run>(dir + "/runs.csv",
-                          {{"b_height", [](const Run& r) { return r.b_height; }},
+                          {repro::field("b_height", &Run::b_height),
                            {"rule", [](const Run& r) { return r.rule == dda::HRule::kMinMaxEdge ? 0 : 1; }},
-                           {"H_A", [](const Run& r) { return r.h_a; }},
-                           {"H_B", [](const Run& r) { return r.h_b; }},
+                           repro::field("H_A", &Run::h_a),
+                           repro::field("H_B", &Run::h_b),
                            {"energy_error", [](const Run& r) { return r.stats.energy_error; }},
                            {"peak_thickness", [](const Run& r) { return r.stats.peak_thickness; }},
                            {"peak_vertex_depth", [](const Run& r) { return r.stats.peak_vertex_depth; }},
                            {"first_contact", [](const Run& r) { return r.stats.first_contact; }},
-                           {"first_rebound", [](const Run& r) { return r.first_rebound; }},
-                           {"mirror_asymmetry", [](const Run& r) { return r.max_mirror; }},
-                           {"seconds", [](const Run& r) { return r.seconds; }}},
+                           repro::field("first_rebound", &Run::first_rebound),
+                           repro::field("mirror_asymmetry", &Run::max_mirror),
+                           repro::field("seconds", &Run::seconds)},
                           runs, {"rule: 0 = unified (min-max edge) H, 1 = inscribed-radius H"});
 }
 

@@ -58,12 +58,17 @@ void CsvWriter::row(const std::vector<double>& values) {
     throw std::invalid_argument("CsvWriter(" + path() + "): row " + std::to_string(rows() + 1) + " has " +
                                 std::to_string(values.size()) + " values, header has " +
                                 std::to_string(header.size()));
-  for (std::size_t i = 0; i < values.size(); ++i)
-    if (!std::isfinite(values[i]))
-      throw std::invalid_argument("CsvWriter(" + path() + "): non-finite value " + format_full(values[i]) +
-                                  " in column '" + header[i] + "' (data row " + std::to_string(rows() + 1) + ")");
+  for (std::size_t i = 0; i < values.size(); ++i) number_field(values[i], i);
   values_.assign(values.begin(), values.end());
   file_.row(values_);
+}
+
+std::string CsvWriter::number_field(double value, std::size_t column) const {
+  const std::string text = format_full(value);
+  if (!std::isfinite(value))
+    throw std::invalid_argument("CsvWriter(" + path() + "): non-finite value " + text + " in column '" +
+                                file_.header().at(column) + "' (data row " + std::to_string(rows() + 1) + ")");
+  return text;
 }
 
 void CsvWriter::row(const std::vector<std::string>& fields) {

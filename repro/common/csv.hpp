@@ -32,6 +32,10 @@ class CsvWriter {
   void row(std::initializer_list<double> values) { row(std::vector<double>(values)); }
   // One row of text fields, quoted per RFC 4180 where needed.
   void row(const std::vector<std::string>& fields);
+  // The text of number `value` in column `column` of the next row, for a
+  // text row that mixes numbers in: shortest round-trip form. Throws
+  // std::invalid_argument for NaN/inf, as row(values) does.
+  std::string number_field(double value, std::size_t column) const;
 
   // Flushes, closes and atomically renames the tmp file to the final path.
   // Throws std::runtime_error on any I/O error (the tmp file is then removed).

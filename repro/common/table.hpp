@@ -84,14 +84,8 @@ class TableWriter {
       return;
     }
     fields_.clear();
-    for (std::size_t i = 0; i < cells_.size(); ++i) {
-      const Cell& c = cells_[i];
-      if (!c.is_text && !std::isfinite(c.number))
-        throw std::invalid_argument("CsvWriter(" + csv_.path() + "): non-finite value " + format_full(c.number) +
-                                    " in column '" + columns_[i].name + "' (data row " +
-                                    std::to_string(csv_.rows() + 1) + ")");
-      fields_.push_back(c.is_text ? c.text : format_full(c.number));
-    }
+    for (std::size_t i = 0; i < cells_.size(); ++i)
+      fields_.push_back(cells_[i].is_text ? cells_[i].text : csv_.number_field(cells_[i].number, i));
     csv_.row(fields_);
   }
   template <class Rows>

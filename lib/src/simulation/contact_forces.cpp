@@ -27,6 +27,8 @@ constexpr long kWorkTouching = 125;
 constexpr long kWorkCandidate = 6;
 constexpr long kWorkOther = 1;
 
+constexpr double kTwoPi = 6.28318530717958647692;  // 2 pi, the penetration guard's first tier
+
 }  // namespace
 
 // Inlined into the pair loop (its only caller): a call frame of its own
@@ -56,25 +58,39 @@ constexpr long kWorkOther = 1;
   if (g.max_penetration > 0.0 || g.max_approach_energy > 0.0) {
     // The penetration guard's measures (penetration_guard.cpp): the depth
     // and its bound, and at a first contact the relative approach energy.
-    // The IP's extent along the normal force (a few dot products on the IP
-    // at hand) bounds the depth from above, and the smaller inscribed
-    // radius bounds the bound from below: only a pair past that cheap test
-    // gets its IP's width and the blocks' half-thicknesses along the normal.
-    const double fn = length(nf.force);
+    // The depth W (the IP's width) is bounded from above in three tiers,
+    // each dearer and tighter than the last, and the bound from below by
+    // the smaller inscribed radius: a pair below the bound at a tier stops
+    // there (the verdict is the full test's, with r_min <= h_min).
+    //  1. W <= 2 pi A / P from the IP's area A and perimeter P, which the
+    //     normal force already has: a convex set of diameter D has
+    //     W D <= 2 A (the quadrilateral spanned by a diameter and the two
+    //     support points across it lies inside) and P <= pi D (Cauchy:
+    //     P is pi times the mean width); no vertex loop.
+    //  2. W <= the IP's extent along the normal force (a few dot products).
+    //  3. W itself, against the blocks' half-thicknesses along the normal.
+    double fn = 0.0;  // |normal force|, taken when a tier past the first or the approach energy needs it
     if (g.max_penetration > 0.0) {
-      r.depth = detail::extent_along(ip, nf.force) / fn;
       r.depth_bound = g.max_penetration * std::min(radius_[cp], radius_[tp]);
-      if (r.depth > r.depth_bound) {
-        r.depth = detail::min_width(ip);
-        r.depth_bound = 0.5 * g.max_penetration *
-                        std::min(detail::extent_along(sides_[cp].side.poly, nf.force),
-                                 detail::extent_along(sides_[tp].side.poly, nf.force)) /
-                        fn;
+      r.depth = kTwoPi * nf.ip_area / nf.ip_perimeter;
+      if (!(r.depth <= r.depth_bound)) {
+        fn = length(nf.force);
+        r.depth = detail::extent_along(ip, nf.force) / fn;
+        if (r.depth > r.depth_bound) {
+          r.depth = detail::min_width(ip);
+          r.depth_bound = 0.5 * g.max_penetration *
+                          std::min(detail::extent_along(sides_[cp].side.poly, nf.force),
+                                   detail::extent_along(sides_[tp].side.poly, nf.force)) /
+                          fn;
+        }
       }
     }
-    r.approach_energy = was_active || !(g.max_approach_energy > 0.0)
-                            ? 0.0
-                            : approach_energy(cp, tp, nf.point, nf.force / fn);
+    if (was_active || !(g.max_approach_energy > 0.0)) {
+      r.approach_energy = 0.0;
+    } else {
+      if (fn == 0.0) fn = length(nf.force);
+      r.approach_energy = approach_energy(cp, tp, nf.point, nf.force / fn);
+    }
     if (pair_guard_fault(r)) pair_fault = true;
   }
   PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
