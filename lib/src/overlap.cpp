@@ -566,7 +566,8 @@ struct OverlapAndClip {
                                                           double tol, Polygon& ip, IpEdge* source, int* witness,
                                                           const OverlapFacts& facts) {
     if (kA == 0 && (contact.count < 3 || target.count < 3)) return OverlapState::kSeparate;
-    if (kA == 0 && (contact.count > kMaxBlockVertices || target.count > kMaxBlockVertices)) {
+    if (kA == 0 && (facts.contact_support || facts.target_support) &&
+        (contact.count > kMaxBlockVertices || target.count > kMaxBlockVertices)) {
       // Support lines are kept for block polygons only: built here.
       const OverlapFacts own = {facts.contact_sharp, nullptr, nullptr};
       return run<0, 0>(contact, target, tol, ip, source, witness, own);
