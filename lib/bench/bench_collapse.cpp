@@ -23,15 +23,25 @@
 // between two threads cost nothing (barriers, shared cache lines, uneven
 // shares), whatever the host does to both cores alike. --rounds N (default 3) repeats the three runs in turn (1
 // thread, 2 threads, the independent pair), and the table gives the median
-// round's, so that a minute of a busy host does not decide the verdict.
+// round's, so that a minute of a busy host does not decide the verdict; and
+// the speed-up over the ceiling per round (their median): 1 when splitting
+// the step costs nothing. A crowded host (load average above the cores)
+// pulls it far below 1: a descheduled thread of the team makes its partner
+// wait at each of the step's barriers, which two independent runs never do.
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
-// --max-blocks 1000000: on to 3 x 10^5 and 10^6, far longer, and at the
-// ~2.4 kB of heap per block measured at 10^5 blocks some 2.4 GB per
-// simulation at 10^6); a table of blocks, pairs per step, us per step, ns per block-step
-// and ns per candidate pair with 1 and 2 threads, and the fitted exponent p of
-// cost ~ blocks^p. --csv FILE also writes the table as CSV. Shapes:
+// --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~2.3 kB of heap per block:
+// 2.3 GB per simulation at 10^6, two of them alive at once for the 1- and
+// 2-thread runs); --min-blocks N leaves out the rows below N, --max-threads 1
+// runs each row with 1 thread only (the 10^6 row in half the time). A table
+// of blocks, pairs per step, wall and CPU us per step, ns per block-step and
+// per candidate pair, the heap per block of the constructed simulation (of
+// it the pooled block geometry, and the near pairs per block times the bytes
+// each holds), the CPU time of generating the scene and of constructing the
+// simulation, and the fitted exponents p of cost ~ blocks^p (least squares
+// over the rows: time per step, generation, construction). --csv FILE also
+// writes the table as CSV. Shapes:
 //   wide   (default) the collapse's 50 m height, width grown: every block sees
 //          the same depth of rock, so per-block physics stays the same and
 //          the table shows the algorithm's growth;
@@ -123,6 +133,8 @@ struct Options {
   bool skips = false;
   Shape shape = Shape::kWide;
   int max_blocks = kDefaultMaxBlocks;
+  int min_blocks = 0;
+  int max_threads = 2;  // --max-threads 1: the scaling rows with 1 thread only (the biggest rows in half the time)
   std::string csv;
   double window = 0.0;  // s of simulated time (--window); 0: not this mode
   bool no_guards = false;
@@ -130,7 +142,7 @@ struct Options {
 
 [[noreturn]] void usage(const char* argv0) {
   std::cerr << "usage: " << argv0
-            << " [--steps N] [--warmup N] [--rounds N] [--scaling [--shape wide|column] [--max-blocks N] [--csv FILE]] [--skips]\n"
+            << " [--steps N] [--warmup N] [--rounds N] [--scaling [--shape wide|column] [--min-blocks N] [--max-blocks N] [--max-threads 1|2] [--csv FILE]] [--skips]\n"
             << "       [--window SECONDS [--no-guards]]\n"
             << "  --steps: timed steps of the collapse (the scaling runs take " << kBlockStepBudget
             << " / blocks steps, " << kMinScalingSteps << " to " << kMaxScalingSteps << ")\n";
@@ -155,6 +167,8 @@ Options parse(int argc, char** argv) {
     else if (a == "--warmup" && has_value) o.warmup = count_arg(argv[++i], argv[0]);
     else if (a == "--rounds" && has_value) o.rounds = count_arg(argv[++i], argv[0]);
     else if (a == "--max-blocks" && has_value) o.max_blocks = count_arg(argv[++i], argv[0]);
+    else if (a == "--min-blocks" && has_value) o.min_blocks = count_arg(argv[++i], argv[0]);
+    else if (a == "--max-threads" && has_value) o.max_threads = count_arg(argv[++i], argv[0]);
     else if (a == "--csv" && has_value) o.csv = argv[++i];
     else if (a == "--scaling") o.scaling = true;
     else if (a == "--skips") o.skips = true;
@@ -171,7 +185,7 @@ Options parse(int argc, char** argv) {
       else usage(argv[0]);
     } else usage(argv[0]);
   }
-  if (o.steps < 1 || o.rounds < 1) usage(argv[0]);
+  if (o.steps < 1 || o.rounds < 1 || o.max_threads < 1) usage(argv[0]);
   return o;
 }
 
@@ -323,19 +337,33 @@ struct ThreadRuns {
   // Of it, the block geometry: the pooled vertices and normals and their
   // offsets per block (Simulation::geometry_bytes_per_block).
   std::size_t geometry_per_block = 0;
+  // Of the rest, the broad phase's near pairs at construction: how many per
+  // block and the solver state each holds (Simulation::bytes_per_near_pair).
+  double near_pairs_per_block = 0.0;
+  std::size_t bytes_per_near_pair = 0;
+  // CPU time of the first simulation's constructor (blocks, H, broad
+  // phase, forces at t = 0; serial), s.
+  double construct_s = 0.0;
 };
 
-ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps) {
+ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps, int max_threads = 2) {
   ThreadRuns out;
   std::unique_ptr<dda::Simulation> first;
   for (int threads : kThreadCounts) {
+    if (threads > max_threads) break;
     const double before = heap_bytes();
+    const std::clock_t t0 = std::clock();
     auto sim = std::make_unique<dda::Simulation>(scene);
+    const double construct_s = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
     const double built = heap_bytes();
+    const std::size_t near_pairs = sim->near_pair_count();
     out.runs.push_back(timed_run(*sim, threads, warmup, steps));
     if (!first) {
       out.bytes_per_block = (built - before) / sim->scene_block_count();
       out.geometry_per_block = sim->geometry_bytes_per_block();
+      out.near_pairs_per_block = static_cast<double>(near_pairs) / sim->scene_block_count();
+      out.bytes_per_near_pair = sim->bytes_per_near_pair();
+      out.construct_s = construct_s;
       const double touching = static_cast<double>(sim->contacts().size());
       out.growth_per_touching = touching > 0.0 ? (heap_bytes() - built) / touching : 0.0;
       out.x_pairs = x_overlap_pairs(*sim);
@@ -348,12 +376,12 @@ ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps) {
 }
 
 // The 1-minute load average (Linux), to judge whether other work shared the cores.
-std::string load_note() {
+std::string load_note(const char* when = "before the runs") {
   std::ifstream f("/proc/loadavg");
   double load = 0.0;
   if (!(f >> load)) return "load average unknown";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "load average %.2f before the runs", load);
+  std::snprintf(buf, sizeof buf, "load average %.2f %s", load, when);
   return buf;
 }
 
@@ -452,7 +480,7 @@ int run_collapse(const Options& o) {
   // Each round: 1 thread, 2 threads, the independent pair, one after the
   // other, so that the three see the same minute of the host.
   std::vector<ThreadRuns> rounds;
-  std::vector<double> speedup, ceiling, busy;
+  std::vector<double> speedup, ceiling, busy, of_ceiling;
   bool same = true;
   for (int r = 0; r < o.rounds; ++r) {
     rounds.push_back(run_thread_counts(s, o.warmup, o.steps));
@@ -462,6 +490,7 @@ int run_collapse(const Options& o) {
     speedup.push_back(t.runs[0].wall_s / t.runs[1].wall_s);
     ceiling.push_back(2.0 * t.runs[0].wall_s / pair);
     busy.push_back(pair / t.runs[1].wall_s);
+    of_ceiling.push_back(speedup.back() / ceiling.back());
   }
   const double trip_after = core_round_trip_ns();
   const std::size_t m = median_index(speedup);
@@ -482,6 +511,10 @@ int run_collapse(const Options& o) {
   std::printf("   2 threads against 1 with both cores busy: the independent pair's wall / the 2-thread run's\n"
               "   = %.2fx (median; rounds: %s; 2x if the pair loop, the barriers and the shared lines cost nothing)\n",
               busy[median_index(busy)], round_list(busy).c_str());
+  std::printf("   speed-up / ceiling: %.2f (median; rounds: %s; 1 when splitting the step costs nothing; on a\n"
+              "   crowded host, a descheduled thread of the team makes its partner wait at the step's barriers,\n"
+              "   which the independent runs never do: see the waits below and the %s)\n",
+              of_ceiling[median_index(of_ceiling)], round_list(of_ceiling).c_str(), load_note("after them").c_str());
   print_phases(rounds[m].runs);
   std::printf("   core-to-core round trip of a cache line: %.0f ns before, %.0f ns after the runs (the 2-thread\n"
               "   speed-up falls as it grows: barriers and the polygons and loads shared by the two cores pay it)\n",
@@ -536,10 +569,11 @@ struct ScalingRow {
   int target = 0;
   double width = 0.0, height = 0.0;
   int warmup = 0;
+  double generate_s = 0.0;  // CPU time of cutting the region into blocks (generate_blocks) and building the scene, s
   ThreadRuns t;
 };
 
-ScalingRow scaling_row(const dda::paper::Collapse& base, Shape shape, int target, int warmup) {
+ScalingRow scaling_row(const dda::paper::Collapse& base, Shape shape, int target, int warmup, int max_threads) {
   ScalingRow row;
   row.target = target;
   // One correction of the size for the actual count (edge pieces, slivers).
@@ -554,22 +588,24 @@ ScalingRow scaling_row(const dda::paper::Collapse& base, Shape shape, int target
   }
   row.width = w;
   row.height = h;
+  const std::clock_t t0 = std::clock();
   const dda::Scene s = scaled_scene(base, w, h, dropped);
+  row.generate_s = static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC;
   const int n = static_cast<int>(s.blocks.size());
   const int steps = std::clamp(static_cast<int>(kBlockStepBudget / n), kMinScalingSteps, kMaxScalingSteps);
   row.warmup = warmup;
-  row.t = run_thread_counts(s, warmup, steps);
+  row.t = run_thread_counts(s, warmup, steps, max_threads);
   return row;
 }
 
-// Least-squares slope of log(cost per step) against log(blocks) for one
-// thread count; the cost is the wall time or (cpu) the CPU time per step.
-double growth_exponent(const std::vector<ScalingRow>& rows, std::size_t run, bool cpu) {
+// Least-squares slope of log(cost) against log(blocks) over the rows;
+// cost(row) is the cost of one row (time per step, setup time).
+template <class Cost>
+double growth_exponent(const std::vector<ScalingRow>& rows, Cost cost) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   const double n = static_cast<double>(rows.size());
   for (const ScalingRow& r : rows) {
-    const RunStats& s = r.t.runs[run];
-    const double x = std::log(s.blocks), y = std::log(cpu ? s.cpu_us_per_step() : s.us_per_step());
+    const double x = std::log(r.t.runs[0].blocks), y = std::log(cost(r));
     sx += x;
     sy += y;
     sxx += x * x;
@@ -585,15 +621,16 @@ void write_csv(const std::string& path, const std::vector<ScalingRow>& rows, Sha
     if (!f) throw std::runtime_error("cannot write " + tmp);
     f << "shape,blocks,width_m,height_m,threads,warmup_steps,steps,wall_s,candidates_per_step,touching_per_step,"
          "x_overlap_pairs,cpu_per_wall,us_per_step,cpu_us_per_step,ns_per_block_step,ns_per_candidate,ns_per_touching,identical_1_2,"
-         "bytes_per_block,growth_bytes_per_touching\n";
+         "bytes_per_block,growth_bytes_per_touching,near_pairs_per_block,bytes_per_near_pair,generate_s,construct_s\n";
     f.precision(9);
     for (const ScalingRow& r : rows)
       for (const RunStats& s : r.t.runs)
         f << (shape == Shape::kWide ? "wide" : "column") << ',' << s.blocks << ',' << r.width << ',' << r.height
           << ',' << s.threads << ',' << r.warmup << ',' << s.steps << ',' << s.wall_s << ',' << s.candidates_per_step << ','
           << s.touching_per_step << ',' << r.t.x_pairs << ',' << s.cpu_per_wall() << ',' << s.us_per_step() << ',' << s.cpu_us_per_step() << ',' << s.ns_per_block_step()
-          << ',' << s.ns_per_candidate() << ',' << s.ns_per_touching() << ',' << (r.t.same ? 1 : 0) << ','
-          << r.t.bytes_per_block << ',' << r.t.growth_per_touching << '\n';
+          << ',' << s.ns_per_candidate() << ',' << s.ns_per_touching() << ',' << (r.t.runs.size() < 2 ? "" : r.t.same ? "1" : "0") << ','
+          << r.t.bytes_per_block << ',' << r.t.growth_per_touching << ',' << r.t.near_pairs_per_block << ','
+          << r.t.bytes_per_near_pair << ',' << r.generate_s << ',' << r.t.construct_s << '\n';
     if (!f) throw std::runtime_error("error writing " + tmp);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename " + tmp + " to " + path);
@@ -609,33 +646,43 @@ int run_scaling(const Options& o) {
   std::printf("   sizeof(dda::Polygon) = %zu bytes (capacity %d vertices and normals; scratch and intersection "
               "polygons), sizeof(dda::PolygonView) = %zu bytes (a pooled block's view)\n",
               sizeof(dda::Polygon), dda::kMaxVertices, sizeof(dda::PolygonView));
-  std::printf("%6s %11s %3s %5s %8s %10s %10s %10s %9s %9s %11s %8s %8s %5s %8s %9s %8s\n", "blocks", "region m", "thr",
-              "steps", "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "cpu us", "ns/blk-step", "ns/cand",
-              "ns/touch", "same", "kB/block", "geo B/blk", "B/touch");
+  std::printf("%7s %11s %3s %5s %8s %10s %10s %10s %10s %10s %11s %8s %8s %5s %8s %9s %6s %7s %8s %7s %7s\n", "blocks",
+              "region m", "thr", "steps", "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "cpu us",
+              "ns/blk-step", "ns/cand", "ns/touch", "same", "kB/block", "geo B/blk", "np/blk", "B/np", "B/touch",
+              "gen s", "build s");
   std::vector<ScalingRow> rows;
   for (int target : kTargetBlocks) {
-    if (target > o.max_blocks) continue;
-    rows.push_back(scaling_row(base, o.shape, target, o.warmup));
+    if (target > o.max_blocks || target < o.min_blocks) continue;
+    rows.push_back(scaling_row(base, o.shape, target, o.warmup, o.max_threads));
     const ScalingRow& r = rows.back();
     for (const RunStats& s : r.t.runs)
-      std::printf("%6d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %9.1f %9.1f %11.1f %8.1f %8.1f %5s %8.2f %9zu %8.0f\n",
+      std::printf("%7d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %10.1f %10.1f %11.1f %8.1f %8.1f %5s %8.2f %9zu %6.2f %7zu %8.0f %7.2f %7.2f\n",
                   s.blocks, r.width, r.height, s.threads, static_cast<long long>(s.steps), s.cpu_per_wall(),
                   s.candidates_per_step, s.touching_per_step, static_cast<long long>(r.t.x_pairs), s.us_per_step(),
-                  s.cpu_us_per_step(), s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(), r.t.same ? "yes" : "NO",
-                  r.t.bytes_per_block / 1e3, r.t.geometry_per_block, r.t.growth_per_touching);
+                  s.cpu_us_per_step(), s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(),
+                  r.t.runs.size() < 2 ? "-" : r.t.same ? "yes" : "NO", r.t.bytes_per_block / 1e3, r.t.geometry_per_block,
+                  r.t.near_pairs_per_block, r.t.bytes_per_near_pair,
+                  r.t.growth_per_touching, r.generate_s, r.t.construct_s);
     std::fflush(stdout);
   }
   bool all_same = true;
   for (const ScalingRow& r : rows) all_same = all_same && r.t.same;
-  if (rows.size() >= 2)
-    for (std::size_t k = 0; k < std::size(kThreadCounts); ++k)
+  if (rows.size() >= 2) {
+    for (std::size_t k = 0; k < rows.front().t.runs.size(); ++k)
       std::printf("   %d thread(s): wall us/step ~ blocks^%.2f, CPU us/step ~ blocks^%.2f (least squares over the rows;"
                   " the CPU fit is the one to trust when cpu/wall < threads: the cores were shared)\n",
-                  kThreadCounts[k], growth_exponent(rows, k, false), growth_exponent(rows, k, true));
+                  kThreadCounts[k], growth_exponent(rows, [k](const ScalingRow& r) { return r.t.runs[k].us_per_step(); }),
+                  growth_exponent(rows, [k](const ScalingRow& r) { return r.t.runs[k].cpu_us_per_step(); }));
+    std::printf("   setup: generating the scene ~ blocks^%.2f, constructing the simulation ~ blocks^%.2f (CPU time)\n",
+                growth_exponent(rows, [](const ScalingRow& r) { return r.generate_s; }),
+                growth_exponent(rows, [](const ScalingRow& r) { return r.t.construct_s; }));
+  }
   std::printf("   x-overlap: pairs whose x-intervals overlap at the end (one x sort-and-sweep pass visits them);"
               " same: 1- and 2-thread final states bit-identical;\n   kB/block: heap per block of the constructed "
-              "simulation; geo B/blk: of it, the pooled block geometry (vertices, normals, offsets);\n   B/touch: heap "
-              "growth over the run per touching pair at its end (mallinfo2)\n");
+              "simulation; geo B/blk: of it, the pooled block geometry (vertices, normals, offsets);\n   np/blk, B/np: "
+              "of it, the near pairs per block at construction and the solver state of each;\n   B/touch: heap "
+              "growth over the run per touching pair at its end (mallinfo2); gen s, build s: CPU time of\n   "
+              "generating the scene and of constructing the first simulation\n");
   if (!o.csv.empty()) {
     write_csv(o.csv, rows, o.shape);
     std::printf("   wrote %s\n", o.csv.c_str());

@@ -182,6 +182,9 @@ class Simulation {
   // pair, result, load and two block-list entries; plus the friction
   // history only when the scene has friction), for the benchmarks.
   std::size_t bytes_per_near_pair() const;
+  // Broad-phase near pairs now (candidates and the pairs within the skin):
+  // each holds bytes_per_near_pair() of solver state.
+  std::size_t near_pair_count() const;
   // Times the sweep broad phase rebuilt its pair list (BroadPhase::kSweep).
   std::int64_t broad_phase_rebuilds() const;
   // Where each thread's wall time went in the steps run since the last

@@ -13,6 +13,10 @@ using detail::thread_index;
 
 namespace {
 
+// The near-pair list's spare room: at most 1 / kNearPairSlack of its pairs
+// (dimensionless; the list changes by a few pairs per rebuild).
+constexpr std::size_t kNearPairSlack = 8;
+
 // The near-pair order: by first block, then second.
 template <class P>
 bool pair_before(const P& x, const P& y) {
@@ -79,6 +83,10 @@ void Engine::rebuild_near_pairs() {
   // block whose boxes overlap now, by testing all pairs.
   const int n = block_count();
   std::vector<NearPair> pairs;
+  // Room for the last list and a little more: a rebuild lists about as
+  // many pairs, without the doublings of a growing vector (whose spare
+  // half would stay with the list, 12 bytes a pair).
+  pairs.reserve(near_pairs_.size() + near_pairs_.size() / kNearPairSlack);
   if (scene_.broad_phase == BroadPhase::kNone) {
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
@@ -118,6 +126,7 @@ void Engine::rebuild_near_pairs() {
     }
     std::sort(pairs.begin(), pairs.end(), pair_before<NearPair>);
   }
+  if (pairs.capacity() > pairs.size() + pairs.size() / kNearPairSlack) pairs.shrink_to_fit();
   // A pair on both lists keeps its slot's state (witness, contact, history):
   // one merge pass over the two sorted lists. A pair in contact now is on
   // both (its boxes overlap, so its grown boxes do).

@@ -18,7 +18,7 @@ double Engine::block_strain_omega2(int i) const {
   if (!strains_) return 0.0;
   const Mat6 m = mass_matrix(moments_[i], density_[i]);
   Eigen::Matrix4d k = Eigen::Matrix4d::Zero();
-  k.bottomRightCorner<3, 3>() = moments_[i].area * elastic_[i];
+  k.bottomRightCorner<3, 3>() = moments_[i].area * elastic(i);
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix4d> es(k, m.bottomRightCorner<4, 4>(), Eigen::EigenvaluesOnly);
   return es.eigenvalues().maxCoeff();
 }

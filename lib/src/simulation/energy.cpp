@@ -84,7 +84,7 @@ Energy Engine::block_energy() const {
     const Mat6 m = mass_matrix(moments_[i], density_[i]);
     e.kinetic += 0.5 * vel_[i].dot(m * vel_[i]);
     e.gravity -= mass_[i] * dot(scene_.gravity, moments_[i].centroid);
-    if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic_[i].ldlt().solve(stress_[i]));
+    if (strains_) e.strain += 0.5 * moments_[i].area * stress_[i].dot(elastic(i).ldlt().solve(stress_[i]));
   }
   return e;
 }

@@ -59,10 +59,10 @@ void Engine::move_blocks() {
       // the rigid part turned by r0 exactly, and the stress (this step's
       // increment on the start configuration) turned with the material.
       step_motion2_[i] = rotate_and_displace_vertices(polygon_span(i), c, dd);
-      if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic_[i] * dd.tail<3>(), dd[2]);
+      if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic(i) * dd.tail<3>(), dd[2]);
     } else {
       step_motion2_[i] = displace_vertices(polygon_span(i), c, dd);  // the largest vertex motion, squared (guard)
-      if (strains_) stress_[i] += elastic_[i] * dd.tail<3>();
+      if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
     update_block_geometry(i);
     body_force(i);

@@ -202,7 +202,12 @@ class Engine {
   // Per-block constants and bookkeeping.
   std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
   std::vector<double> kn_over_h_;  // kn / H of each block (H is fixed at construction), Pa/m
-  std::vector<Mat3> elastic_;
+  // The elastic matrix D of each material (Eq. 4), and a zero one last for
+  // the boundary polygons; block i's is elastic(i). One per material, not
+  // per block: 72 bytes a block fewer at 10^6 blocks.
+  std::vector<Mat3> elastic_table_;
+  std::vector<int> elastic_index_;  // per block: its row of elastic_table_
+  const Mat3& elastic(int i) const { return elastic_table_[static_cast<std::size_t>(elastic_index_[static_cast<std::size_t>(i)])]; }
   std::vector<char> fixed_;
   std::vector<int> group_;
   std::vector<double> friction_tan_table_;

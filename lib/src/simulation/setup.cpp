@@ -226,7 +226,11 @@ void Engine::build_blocks() {
   reach_radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
   kn_over_h_.assign(n, 0.0);
-  elastic_.assign(n, Mat3::Zero());
+  const int boundary_elastic = static_cast<int>(scene_.materials.size());
+  elastic_table_.assign(scene_.materials.size() + 1, Mat3::Zero());
+  for (std::size_t k = 0; k < scene_.materials.size(); ++k)
+    elastic_table_[k] = elastic_matrix(scene_.materials[k].young, scene_.materials[k].poisson);
+  elastic_index_.assign(n, boundary_elastic);
   fixed_.assign(n, 1);
   group_.assign(n, 0);
   for (std::size_t i = 0; i < scene_.blocks.size(); ++i) {
@@ -234,7 +238,7 @@ void Engine::build_blocks() {
     const Material& m = scene_.materials[static_cast<std::size_t>(b.material)];
     poly[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
     density_[i] = m.density;
-    elastic_[i] = elastic_matrix(m.young, m.poisson);
+    elastic_index_[i] = b.material;
     fixed_[i] = b.fixed ? 1 : 0;
     group_[i] = b.group;
     if (!b.fixed) {

@@ -46,6 +46,7 @@ Energy Simulation::energy() const { return engine_->energy(); }
 const std::vector<ContactInfo>& Simulation::contacts() const { return engine_->contact_info_; }
 std::size_t Simulation::candidate_count() const { return engine_->candidate_count_; }
 std::size_t Simulation::bytes_per_near_pair() const { return engine_->bytes_per_near_pair(); }
+std::size_t Simulation::near_pair_count() const { return engine_->near_pairs_.size(); }
 std::int64_t Simulation::broad_phase_rebuilds() const { return engine_->broad_phase_rebuilds_; }
 const std::vector<Simulation::PhaseTimes>& Simulation::phase_times() const { return engine_->phase_times_; }
 void Simulation::reset_phase_times() { engine_->phase_times_.clear(); }
