@@ -4,10 +4,11 @@
 // polygon (Sect. 3.2.3) and its geometric tolerance are built once, as the
 // simulation builds them once per block and step (update_block_geometry:
 // sides_[i].tol, the bisector store) and takes the pair's tolerance as the
-// larger of the two (pair_forces), and its sharp corners (the clipper's
+// larger of the two (pair_forces), its sharp corners (the clipper's
 // bevels when it is the contact polygon), as the simulation finds them
-// once per block and step (sharp_corners_); Box2D's shapes likewise carry
-// their normals.
+// once per block and step (sharp_corners_), and its edge lines
+// (dda::support_lines, what the overlap test reads of each polygon); Box2D's
+// shapes likewise carry their normals.
 #pragma once
 #include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
@@ -47,6 +48,7 @@ struct Side {
   dda::PotentialSide side;
   double tol = 0.0;  // geometric_tolerance(poly), m
   std::uint32_t sharp = 0;  // dda::sharp_corners(poly)
+  dda::SupportLines lines;     // dda::support_lines(poly)
   b2PolygonShape b2;
 };
 
@@ -61,6 +63,7 @@ inline Side make_side(const dda::Polygon& p) {
   s.side.bisector_count = nb;
   s.tol = dda::geometric_tolerance(p);
   s.sharp = dda::sharp_corners(p);
+  dda::support_lines(p, s.lines);
   s.b2 = to_box2d(p);
   return s;
 }

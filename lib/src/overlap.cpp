@@ -94,10 +94,21 @@ struct EdgeLanes {
   Lanes off[kCapacity];                // support offsets n . v of the edges' start vertices
 };
 
-// Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p.
+// Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p, or
+// (given) from its support_lines(), which holds the same values.
 template <int kN>
-[[gnu::always_inline]] inline void edge_lanes(const PolygonView& p, int pairs, EdgeLanes<kN>& e) {
+[[gnu::always_inline]] inline void edge_lanes(const PolygonView& p, int pairs, const SupportLines* given,
+                                              EdgeLanes<kN>& e) {
   const int n = kN ? kN : p.count;
+  if (given) {
+    for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
+      const SupportLines::Pair& g = given->pair[static_cast<std::size_t>(k)];
+      __builtin_memcpy(&e.nx[k], g.nx, sizeof(Lanes));
+      __builtin_memcpy(&e.ny[k], g.ny, sizeof(Lanes));
+      __builtin_memcpy(&e.off[k], g.off, sizeof(Lanes));
+    }
+    return;
+  }
   for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
     const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
     const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
@@ -195,7 +206,7 @@ constexpr double kCutMargin = 0.5;
 // distance is the same dot product, rounded the same way, either way.
 template <bool kCuts, int kA = 0, int kB = 0>
 OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, double tol, std::uint32_t* cuts,
-                               int* witness) {
+                               int* witness, const SupportLines* support_a, const SupportLines* support_b) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   const int pa = (na + 1) / 2, pb = (nb + 1) / 2;
   if (witness && static_cast<unsigned>(*witness) < static_cast<unsigned>(nb + na))
@@ -207,11 +218,11 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
   Lanes lo_a[EdgeLanes<kA>::kCapacity], hi_a[EdgeLanes<kA>::kCapacity];
   // B's axes first, folded into dmax before A's are evaluated (the same
   // order of the fold), so that B's lanes are dead during A's.
-  edge_lanes(b, pb, eb);
+  edge_lanes(b, pb, support_b, eb);
   extremes<false, kB, kA>(eb, pb, a, lo_b, nullptr);
   Lanes dmax = {-DBL_MAX, -DBL_MAX};
   for (int k = 0; k < pb; ++k) dmax = lane_max(dmax, lo_b[k] - eb.off[k]);
-  edge_lanes(a, pa, ea);
+  edge_lanes(a, pa, support_a, ea);
   extremes<kCuts, kA, kB>(ea, pa, b, lo_a, hi_a);
   for (int k = 0; k < pa; ++k) dmax = lane_max(dmax, lo_a[k] - ea.off[k]);
   const double d = std::max(dmax[0], dmax[1]);
@@ -257,15 +268,15 @@ OverlapState by_counts_wide_b(const PolygonView& a, const PolygonView& b, Args&&
 // the caller's tol would make the caller keep tol in memory.
 template <class Op>
 [[gnu::noinline]] OverlapState by_counts_wide(const PolygonView& a, const PolygonView& b, double tol, Polygon& ip,
-                                              IpEdge* source, int* witness, std::uint32_t sharp) {
+                                              IpEdge* source, int* witness, const OverlapFacts& facts) {
   switch (a.count) {
-    case 3: return by_counts_wide_b<Op, 3>(a, b, tol, ip, source, witness, sharp);
-    case 4: return by_counts_wide_b<Op, 4>(a, b, tol, ip, source, witness, sharp);
-    case 5: return by_counts_wide_b<Op, 5>(a, b, tol, ip, source, witness, sharp);
-    case 6: return by_counts_wide_b<Op, 6>(a, b, tol, ip, source, witness, sharp);
-    case 7: return by_counts_wide_b<Op, 7>(a, b, tol, ip, source, witness, sharp);
-    case 8: return by_counts_wide_b<Op, 8>(a, b, tol, ip, source, witness, sharp);
-    default: return Op::template run<0, 0>(a, b, tol, ip, source, witness, sharp);
+    case 3: return by_counts_wide_b<Op, 3>(a, b, tol, ip, source, witness, facts);
+    case 4: return by_counts_wide_b<Op, 4>(a, b, tol, ip, source, witness, facts);
+    case 5: return by_counts_wide_b<Op, 5>(a, b, tol, ip, source, witness, facts);
+    case 6: return by_counts_wide_b<Op, 6>(a, b, tol, ip, source, witness, facts);
+    case 7: return by_counts_wide_b<Op, 7>(a, b, tol, ip, source, witness, facts);
+    case 8: return by_counts_wide_b<Op, 8>(a, b, tol, ip, source, witness, facts);
+    default: return Op::template run<0, 0>(a, b, tol, ip, source, witness, facts);
   }
 }
 
@@ -553,10 +564,17 @@ struct OverlapAndClip {
   template <int kA, int kB>
   [[gnu::noinline, gnu::flatten]] static OverlapState run(const PolygonView& contact, const PolygonView& target,
                                                           double tol, Polygon& ip, IpEdge* source, int* witness,
-                                                          std::uint32_t sharp) {
+                                                          const OverlapFacts& facts) {
     if (kA == 0 && (contact.count < 3 || target.count < 3)) return OverlapState::kSeparate;
+    if (kA == 0 && (facts.contact_support || facts.target_support) &&
+        (contact.count > kMaxBlockVertices || target.count > kMaxBlockVertices)) {
+      // Support lines are kept for block polygons only: built here.
+      const OverlapFacts own = {facts.contact_sharp, nullptr, nullptr};
+      return run<0, 0>(contact, target, tol, ip, source, witness, own);
+    }
     std::uint32_t lines = 0;
-    const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness);
+    const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness,
+                                                               facts.contact_support, facts.target_support);
     if (state != OverlapState::kOverlapping) return state;
     // One verdict from one computation: the separating-axis test
     // says the interiors overlap by more than tol along every axis, yet the
@@ -564,7 +582,7 @@ struct OverlapAndClip {
     // e.g. a needle's tip deep in a block far from the origin, whose
     // vertices clean_ring merges): then the pair is touching, with no
     // intersection polygon and no contact force.
-    clip_target(contact, target, tol, lines, sharp, ip, source);
+    clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
     if (ip.count >= 3) return OverlapState::kOverlapping;
     ip.count = 0;
     return OverlapState::kTouching;
@@ -576,8 +594,8 @@ struct OverlapAndClip {
 [[gnu::noinline, gnu::cold]] OverlapState overlap_and_intersection_own_tol(const PolygonView& contact,
                                                                           const PolygonView& target, Polygon& ip,
                                                                           IpEdge* source, int* witness,
-                                                                          std::uint32_t sharp) {
-  return overlap_and_intersection(contact, target, pair_tolerance(contact, target), ip, source, witness, sharp);
+                                                                          const OverlapFacts& facts) {
+  return overlap_and_intersection(contact, target, pair_tolerance(contact, target), ip, source, witness, facts);
 }
 
 constexpr std::uint32_t kAllLines = ~std::uint32_t{0};
@@ -594,10 +612,43 @@ OverlapState overlap_state(const PolygonView& a, const PolygonView& b, double to
 }
 
 OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
-                                      IpEdge* source, int* witness, std::uint32_t contact_sharp) {
+                                      IpEdge* source, int* witness, const OverlapFacts& facts) {
   ip.count = 0;
-  if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness, contact_sharp);
-  return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness, contact_sharp);
+  if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness, facts);
+  return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness, facts);
+}
+
+OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
+                                      IpEdge* source, int* witness, std::uint32_t contact_sharp) {
+  const OverlapFacts facts = {contact_sharp, nullptr, nullptr};
+  return overlap_and_intersection(contact, target, tol, ip, source, witness, facts);
+}
+
+namespace {
+
+// support_lines for a count kN known at compile time (0: read it): the
+// lanes of edge_lanes, the same products and sums.
+template <int kN>
+void support_lines_n(const PolygonView& p, SupportLines& out) {
+  const int n = kN ? kN : p.count;
+  for (int k = 0; k < (n + 1) / 2; ++k) {
+    const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
+    const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
+    const Lanes nx = {n0.x, n1.x}, ny = {n0.y, n1.y};
+    const Lanes off = nx * Lanes{v0.x, v1.x} + ny * Lanes{v0.y, v1.y};  // dot(n, v) per lane
+    SupportLines::Pair& g = out.pair[static_cast<std::size_t>(k)];
+    __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
+    __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
+    __builtin_memcpy(g.off, &off, sizeof(Lanes));
+  }
+}
+
+}  // namespace
+
+void support_lines(const PolygonView& poly, SupportLines& out) {
+  if (poly.count == 4) return support_lines_n<4>(poly, out);
+  if (poly.count < 3 || poly.count > kMaxBlockVertices) return;
+  support_lines_n<0>(poly, out);
 }
 
 void intersection_polygon(const PolygonView& contact, const PolygonView& target, double tol, Polygon& result) {

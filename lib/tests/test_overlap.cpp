@@ -1,8 +1,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
+#include <vector>
 
 #include "dda/overlap.hpp"
 #include "test_helpers.hpp"
@@ -114,4 +116,50 @@ TEST_CASE("a sliver thinner than tol is touching, never overlapping without an I
     CHECK(overlap_state(cp, tp, tol) == s);
     CHECK(intersection_polygon(cp, tp, tol).count == ip.count);
   }
+}
+
+TEST_CASE("support lines kept by the caller give the overlap test's bits", "[overlap]") {
+  // overlap_and_intersection with the polygons' sharp corners and support
+  // lines given (as a simulation keeps them per block) must return the same
+  // verdict, IP vertices, normals and edge sources as when it builds them,
+  // for every pair of counts the dispatch tells apart (3 to 8) and a
+  // polygon of more than kMaxBlockVertices vertices (lines then ignored).
+  const auto ngon = [](int n, Vec2 c, double r, double turn) {
+    std::vector<Vec2> v;
+    for (int k = 0; k < n; ++k) {
+      const double a = turn + 2.0 * 3.141592653589793 * k / n;
+      v.push_back({c.x + r * std::cos(a), c.y + r * (1.0 + 0.3 * (k % 2)) * std::sin(a)});
+    }
+    return make_polygon(v.data(), n);
+  };
+  int overlapping = 0;
+  for (int na : {3, 4, 5, 6, 7, 8, 20}) {
+    for (int nb : {3, 4, 5, 8, 20}) {
+      for (int s = 0; s < 12; ++s) {
+        const Polygon a = ngon(na, {0.1, -0.2}, 1.0, 0.37 * s);
+        const Polygon b = ngon(nb, {0.25 * s - 1.0, 0.9 - 0.13 * s}, 0.8, 0.11 * s);
+        SupportLines la, lb;
+        support_lines(a, la);
+        support_lines(b, lb);
+        const double tol = pair_tolerance(a, b);
+        Polygon ip0, ip1;
+        std::array<IpEdge, kMaxVertices> src0{}, src1{};
+        const OverlapState s0 = overlap_and_intersection(a, b, tol, ip0, src0.data());
+        const OverlapState s1 =
+            overlap_and_intersection(a, b, tol, ip1, src1.data(), nullptr, OverlapFacts{sharp_corners(a), &la, &lb});
+        REQUIRE(s0 == s1);
+        REQUIRE(ip0.count == ip1.count);
+        if (s0 == OverlapState::kOverlapping) ++overlapping;
+        for (int k = 0; k < ip0.count; ++k) {
+          CHECK(ip0.vertex(k).x == ip1.vertex(k).x);
+          CHECK(ip0.vertex(k).y == ip1.vertex(k).y);
+          CHECK(ip0.normal(k).x == ip1.normal(k).x);
+          CHECK(ip0.normal(k).y == ip1.normal(k).y);
+          CHECK(src0[static_cast<std::size_t>(k)].on_contact == src1[static_cast<std::size_t>(k)].on_contact);
+          CHECK(src0[static_cast<std::size_t>(k)].edge == src1[static_cast<std::size_t>(k)].edge);
+        }
+      }
+    }
+  }
+  CHECK(overlapping > 50);  // the cases reach the clip, not only the verdict
 }

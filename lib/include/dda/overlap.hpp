@@ -1,6 +1,7 @@
 // Overlap examination with the entrance block (Paper A Sect. 3.1.2, Eq. 9)
 // and the intersection polygon by cutting (Sect. 3.1.3).
 #pragma once
+#include <array>
 #include <cstdint>
 
 #include "dda/polygon.hpp"
@@ -112,6 +113,25 @@ struct IpEdge {
   bool known() const { return edge >= 0; }
 };
 
+// A polygon's support lines as the overlap test reads them (Eq. 9's edge
+// lines): the components of the outward edge normals n_j and the support
+// offsets n_j . v_j of the edges' start vertices, two edges at a time
+// (pair k: edges 2k and 2k + 1, an odd count's last edge repeated in the
+// last pair), each pair's values together so that a quadrilateral's
+// lines are 96 contiguous bytes. A fact of the polygon alone, for a caller
+// that keeps it per block (at most kMaxBlockVertices vertices) and step
+// rather than the test building it for every pair
+// (overlap_and_intersection's contact_support, target_support).
+struct SupportLines {
+  struct Pair {
+    alignas(16) double nx[2];
+    double ny[2], off[2];
+  };
+  std::array<Pair, kMaxBlockVertices / 2> pair{};
+};
+// Fills `out` from `poly` (count 3 to kMaxBlockVertices; others: nothing).
+void support_lines(const PolygonView& poly, SupportLines& out);
+
 // The overlap verdict and, when overlapping, the intersection polygon with
 // its edge sources, in one pass (the hot path of a contact pair). The
 // verdict is overlap_state(contact, target, tol)'s; the IP is
@@ -134,6 +154,20 @@ struct IpEdge {
 OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
                                       IpEdge* source, int* witness = nullptr,
                                       std::uint32_t contact_sharp = kSharpCornersUnknown);
+
+// What a caller may keep per polygon and give the overlap test, in one
+// reference (a simulation builds them once per block and step):
+// contact_sharp as above; contact_support, target_support: support_lines()
+// of the two polygons as they are now (nullptr: built by the test; ignored
+// for a polygon of more than kMaxBlockVertices vertices). The verdict and
+// the IP are the same bits either way.
+struct OverlapFacts {
+  std::uint32_t contact_sharp = kSharpCornersUnknown;
+  const SupportLines* contact_support = nullptr;
+  const SupportLines* target_support = nullptr;
+};
+OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
+                                      IpEdge* source, int* witness, const OverlapFacts& facts);
 
 // Tolerance used for a pair: the larger of the two polygons' tolerances.
 double pair_tolerance(const PolygonView& a, const PolygonView& b);

@@ -104,7 +104,7 @@ void Engine::update_block_geometry(int i) {
   moments_[i] = g.moments;
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
-  sharp_corners_[i] = sharp_corners(polygon_view(i));  // the clipper's bevels when block i is the contact
+  block_facts(i);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes. The
@@ -120,6 +120,15 @@ void Engine::update_block_geometry(int i) {
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
   density_[i] = mass_[i] / moments_[i].area;
+}
+
+void Engine::block_facts(int i) {
+  // What the overlap test reads of block i's polygon in every pair, found
+  // once per block and step: the clipper's bevels when block i is the
+  // contact, and the edges' normals and support offsets n_j . v_j (Eq. 9).
+  const PolygonView poly = polygon_view(i);
+  sharp_corners_[i] = sharp_corners(poly);
+  support_lines(poly, support_lines_[i]);
 }
 
 void Engine::body_force(int i) {

@@ -108,6 +108,7 @@ class Engine {
   void move_blocks();
   void update_geometry();
   void update_block_geometry(int i);
+  void block_facts(int i);
   void body_force(int i);
   void gather_and_kick();
   void gather_contact_forces(int i);
@@ -259,7 +260,11 @@ class Engine {
   std::vector<Bisector> bisector_store_;
   std::vector<int> bisector_offset_;
   std::vector<BlockSide> sides_;
-  std::vector<std::uint32_t> sharp_corners_;  // sharp_corners() of each block's polygon, rebuilt with the geometry
+  // The overlap test's facts of each block's polygon, rebuilt with the
+  // geometry (block_facts): sharp_corners() (the clipper's bevels when the
+  // block is the contact) and support_lines() (Eq. 9's edge lines).
+  std::vector<std::uint32_t> sharp_corners_;
+  std::vector<SupportLines> support_lines_;
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last

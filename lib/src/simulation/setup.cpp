@@ -281,6 +281,7 @@ void Engine::build_blocks() {
   bisector_offset_.assign(n, 0);
   sides_.assign(n, BlockSide{});
   sharp_corners_.assign(n, 0u);
+  support_lines_.assign(n, SupportLines{});
   int total = 0;
   for (std::size_t i = 0; i < n; ++i) {
     bisector_offset_[i] = total;

@@ -288,8 +288,10 @@ void Engine::restore_state(ByteReader& r) {
   });
   if (!order_.empty() && order_.size() != n) r.fail("the broad phase's order does not match the blocks");
   broad_phase_rebuilds_ = r.i64();
-  // The contact sides read the pools through pointers: bind them again.
+  // The contact sides read the pools through pointers: bind them again;
+  // the overlap test's facts of each polygon are found again, not stored.
   bind_sides();
+  for (int i = 0; i < nb; ++i) block_facts(i);
 }
 
 }  // namespace dda
