@@ -65,7 +65,7 @@ void BM_DdaNormalContact(benchmark::State& state) {
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   bench::each_pair(state, pairs(static_cast<int>(state.range(0)), true), [&](const Pair& p) {
     const double tol = p.tol();
-    if (dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data(), nullptr, dda::OverlapFacts{p.a.sharp, &p.a.lines, &p.b.lines}) ==
+    if (dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data(), nullptr, dda::OverlapFacts{p.a.sharp, p.a.lines.pair.data(), p.b.lines.pair.data()}) ==
         dda::OverlapState::kOverlapping) {
       const dda::NormalForce nf = dda::normal_contact_force(p.a.side, p.b.side, ip, dda::Integration::kPaperBisector,
                                                             tol, source.data(), dda::LoadingPoint::kWithinIp);
@@ -80,7 +80,7 @@ void BM_DdaOverlapIp(benchmark::State& state) {
   std::array<dda::IpEdge, dda::kMaxVertices> source{};
   bench::each_pair(state, pairs(static_cast<int>(state.range(0)), true), [&](const Pair& p) {
     const dda::OverlapState s =
-        dda::overlap_and_intersection(p.a.poly, p.b.poly, p.tol(), ip, source.data(), nullptr, dda::OverlapFacts{p.a.sharp, &p.a.lines, &p.b.lines});
+        dda::overlap_and_intersection(p.a.poly, p.b.poly, p.tol(), ip, source.data(), nullptr, dda::OverlapFacts{p.a.sharp, p.a.lines.pair.data(), p.b.lines.pair.data()});
     benchmark::DoNotOptimize(s);
     benchmark::DoNotOptimize(ip);
   });

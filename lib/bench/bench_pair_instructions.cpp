@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       }
       const double tol = p.tol();
       const dda::OverlapState s =
-          dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data(), nullptr, dda::OverlapFacts{p.a.sharp, &p.a.lines, &p.b.lines});
+          dda::overlap_and_intersection(p.a.poly, p.b.poly, tol, ip, source.data(), nullptr, dda::OverlapFacts{p.a.sharp, p.a.lines.pair.data(), p.b.lines.pair.data()});
       if (mode == 0 && s == dda::OverlapState::kOverlapping) {
         const dda::NormalForce nf = dda::normal_contact_force(p.a.side, p.b.side, ip, dda::Integration::kPaperBisector,
                                                               tol, source.data(), dda::LoadingPoint::kWithinIp);

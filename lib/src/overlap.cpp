@@ -97,12 +97,12 @@ struct EdgeLanes {
 // Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p, or
 // (given) from its support_lines(), which holds the same values.
 template <int kN>
-[[gnu::always_inline]] inline void edge_lanes(const PolygonView& p, int pairs, const SupportLines* given,
+[[gnu::always_inline]] inline void edge_lanes(const PolygonView& p, int pairs, const SupportLines::Pair* given,
                                               EdgeLanes<kN>& e) {
   const int n = kN ? kN : p.count;
   if (given) {
     for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
-      const SupportLines::Pair& g = given->pair[static_cast<std::size_t>(k)];
+      const SupportLines::Pair& g = given[k];
       __builtin_memcpy(&e.nx[k], g.nx, sizeof(Lanes));
       __builtin_memcpy(&e.ny[k], g.ny, sizeof(Lanes));
       __builtin_memcpy(&e.off[k], g.off, sizeof(Lanes));
@@ -206,7 +206,8 @@ constexpr double kCutMargin = 0.5;
 // distance is the same dot product, rounded the same way, either way.
 template <bool kCuts, int kA = 0, int kB = 0>
 OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, double tol, std::uint32_t* cuts,
-                               int* witness, const SupportLines* support_a, const SupportLines* support_b) {
+                               int* witness, const SupportLines::Pair* support_a,
+                               const SupportLines::Pair* support_b) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   const int pa = (na + 1) / 2, pb = (nb + 1) / 2;
   if (witness && static_cast<unsigned>(*witness) < static_cast<unsigned>(nb + na))
@@ -629,14 +630,14 @@ namespace {
 // support_lines for a count kN known at compile time (0: read it): the
 // lanes of edge_lanes, the same products and sums.
 template <int kN>
-void support_lines_n(const PolygonView& p, SupportLines& out) {
+void support_lines_n(const PolygonView& p, SupportLines::Pair* out) {
   const int n = kN ? kN : p.count;
   for (int k = 0; k < (n + 1) / 2; ++k) {
     const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
     const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
     const Lanes nx = {n0.x, n1.x}, ny = {n0.y, n1.y};
     const Lanes off = nx * Lanes{v0.x, v1.x} + ny * Lanes{v0.y, v1.y};  // dot(n, v) per lane
-    SupportLines::Pair& g = out.pair[static_cast<std::size_t>(k)];
+    SupportLines::Pair& g = out[k];
     __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
     __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
     __builtin_memcpy(g.off, &off, sizeof(Lanes));
@@ -645,7 +646,7 @@ void support_lines_n(const PolygonView& p, SupportLines& out) {
 
 }  // namespace
 
-void support_lines(const PolygonView& poly, SupportLines& out) {
+void support_lines(const PolygonView& poly, SupportLines::Pair* out) {
   if (poly.count == 4) return support_lines_n<4>(poly, out);
   if (poly.count < 3 || poly.count > kMaxBlockVertices) return;
   support_lines_n<0>(poly, out);

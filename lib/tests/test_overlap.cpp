@@ -138,15 +138,21 @@ TEST_CASE("support lines kept by the caller give the overlap test's bits", "[ove
       for (int s = 0; s < 12; ++s) {
         const Polygon a = ngon(na, {0.1, -0.2}, 1.0, 0.37 * s);
         const Polygon b = ngon(nb, {0.25 * s - 1.0, 0.9 - 0.13 * s}, 0.8, 0.11 * s);
-        SupportLines la, lb;
-        support_lines(a, la);
-        support_lines(b, lb);
+        // Pooled as a simulation keeps them: b's pairs right after a's, and
+        // a sentinel pair after both that support_lines must leave alone.
+        const std::size_t pa = static_cast<std::size_t>(support_line_pairs(na));
+        const std::size_t pb = static_cast<std::size_t>(support_line_pairs(nb));
+        std::vector<SupportLines::Pair> pool(pa + pb + 1);
+        pool.back().off[0] = 12345.0;
+        support_lines(a, pool.data());
+        support_lines(b, pool.data() + pa);
+        REQUIRE(pool.back().off[0] == 12345.0);
         const double tol = pair_tolerance(a, b);
         Polygon ip0, ip1;
         std::array<IpEdge, kMaxVertices> src0{}, src1{};
         const OverlapState s0 = overlap_and_intersection(a, b, tol, ip0, src0.data());
         const OverlapState s1 =
-            overlap_and_intersection(a, b, tol, ip1, src1.data(), nullptr, OverlapFacts{sharp_corners(a), &la, &lb});
+            overlap_and_intersection(a, b, tol, ip1, src1.data(), nullptr, OverlapFacts{sharp_corners(a), pool.data(), pool.data() + pa});
         REQUIRE(s0 == s1);
         REQUIRE(ip0.count == ip1.count);
         if (s0 == OverlapState::kOverlapping) ++overlapping;

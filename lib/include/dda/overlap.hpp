@@ -121,7 +121,10 @@ struct IpEdge {
 // lines are 96 contiguous bytes. A fact of the polygon alone, for a caller
 // that keeps it per block (at most kMaxBlockVertices vertices) and step
 // rather than the test building it for every pair
-// (overlap_and_intersection's contact_support, target_support).
+// (overlap_and_intersection's contact_support, target_support). The test
+// reads a polygon's lines through a pointer to its first Pair, so that a
+// caller may pool them, support_line_pairs(count) per polygon; SupportLines
+// holds room for any block polygon's.
 struct SupportLines {
   struct Pair {
     alignas(16) double nx[2];
@@ -129,8 +132,15 @@ struct SupportLines {
   };
   std::array<Pair, kMaxBlockVertices / 2> pair{};
 };
-// Fills `out` from `poly` (count 3 to kMaxBlockVertices; others: nothing).
-void support_lines(const PolygonView& poly, SupportLines& out);
+// The number of Pairs support_lines writes for a polygon of `count`
+// vertices: (count + 1) / 2 for 3 to kMaxBlockVertices, 0 otherwise.
+constexpr int support_line_pairs(int count) {
+  return count >= 3 && count <= kMaxBlockVertices ? (count + 1) / 2 : 0;
+}
+// Fills out[0 .. support_line_pairs(poly.count)) from `poly` (count 3 to
+// kMaxBlockVertices; others: nothing).
+void support_lines(const PolygonView& poly, SupportLines::Pair* out);
+inline void support_lines(const PolygonView& poly, SupportLines& out) { support_lines(poly, out.pair.data()); }
 
 // The overlap verdict and, when overlapping, the intersection polygon with
 // its edge sources, in one pass (the hot path of a contact pair). The
@@ -157,14 +167,15 @@ OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonV
 
 // What a caller may keep per polygon and give the overlap test, in one
 // reference (a simulation builds them once per block and step):
-// contact_sharp as above; contact_support, target_support: support_lines()
-// of the two polygons as they are now (nullptr: built by the test; ignored
+// contact_sharp as above; contact_support, target_support: the first Pair
+// of the support_lines() of the two polygons as they are now, each followed
+// by the rest of its polygon's pairs (nullptr: built by the test; ignored
 // for a polygon of more than kMaxBlockVertices vertices). The verdict and
 // the IP are the same bits either way.
 struct OverlapFacts {
   std::uint32_t contact_sharp = kSharpCornersUnknown;
-  const SupportLines* contact_support = nullptr;
-  const SupportLines* target_support = nullptr;
+  const SupportLines::Pair* contact_support = nullptr;
+  const SupportLines::Pair* target_support = nullptr;
 };
 OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonView& target, double tol, Polygon& ip,
                                       IpEdge* source, int* witness, const OverlapFacts& facts);

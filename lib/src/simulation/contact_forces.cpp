@@ -122,7 +122,7 @@ void Engine::pair_forces(bool with_energy) {
   const Aabb* const boxes = boxes_.data();
   const BlockSide* const sides = sides_.data();
   const std::uint32_t* const sharp = sharp_corners_.data();
-  const SupportLines* const support = support_lines_.data();
+  const SupportLines::Pair* const* const support = support_.data();
   // The intersection polygon and its edges' sources, rewritten by every
   // overlap test.
   Polygon ip;
@@ -152,7 +152,7 @@ void Engine::pair_forces(bool with_energy) {
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
     const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
-    const OverlapFacts facts = {sharp[p.i], &support[p.i], &support[p.j]};
+    const OverlapFacts facts = {sharp[p.i], support[p.i], support[p.j]};
     if (overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &p.witness,
                                  facts) != OverlapState::kOverlapping ||
         ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol, pair_fault)) {

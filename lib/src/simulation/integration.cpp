@@ -128,7 +128,7 @@ void Engine::block_facts(int i) {
   // contact, and the edges' normals and support offsets n_j . v_j (Eq. 9).
   const PolygonView poly = polygon_view(i);
   sharp_corners_[i] = sharp_corners(poly);
-  support_lines(poly, support_lines_[i]);
+  support_lines(poly, support_[i]);
 }
 
 void Engine::body_force(int i) {

@@ -262,9 +262,14 @@ class Engine {
   std::vector<BlockSide> sides_;
   // The overlap test's facts of each block's polygon, rebuilt with the
   // geometry (block_facts): sharp_corners() (the clipper's bevels when the
-  // block is the contact) and support_lines() (Eq. 9's edge lines).
+  // block is the contact) and support_lines() (Eq. 9's edge lines), pooled
+  // by vertex count: block i's support_line_pairs(count) pairs begin at
+  // support_[i], in support_store_ (none for a block of more than
+  // kMaxBlockVertices vertices: the test builds its lines). A pointer per
+  // block rather than an offset: the pair loop reads it with one load.
   std::vector<std::uint32_t> sharp_corners_;
-  std::vector<SupportLines> support_lines_;
+  std::vector<SupportLines::Pair> support_store_;
+  std::vector<SupportLines::Pair*> support_;
   std::vector<int> order_;
   // Sweep broad phase with a skin (a Verlet list): near_pairs_ holds the
   // pairs whose boxes, grown by skin_ on every side, overlapped at the last
