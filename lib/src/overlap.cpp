@@ -94,6 +94,18 @@ struct EdgeLanes {
   Lanes off[kCapacity];                // support offsets n . v of the edges' start vertices
 };
 
+// Pair k of p's support lines (edges 2k and 2k + 1, an odd count's last
+// edge repeated): the normals' components and dot(n, v) per lane. One
+// computation for the test's own lanes and for support_lines(), so that a
+// caller's kept lines are the test's bits.
+[[gnu::always_inline]] inline void support_pair(const PolygonView& p, int n, int k, Lanes& nx, Lanes& ny, Lanes& off) {
+  const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
+  const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
+  nx = Lanes{n0.x, n1.x};
+  ny = Lanes{n0.y, n1.y};
+  off = nx * Lanes{v0.x, v1.x} + ny * Lanes{v0.y, v1.y};  // dot(n, v) per lane
+}
+
 // Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p, or
 // (given) from its support_lines(), which holds the same values.
 template <int kN>
@@ -109,13 +121,7 @@ template <int kN>
     }
     return;
   }
-  for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
-    const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
-    const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
-    e.nx[k] = Lanes{n0.x, n1.x};
-    e.ny[k] = Lanes{n0.y, n1.y};
-    e.off[k] = e.nx[k] * Lanes{v0.x, v1.x} + e.ny[k] * Lanes{v0.y, v1.y};  // dot(n, v) per lane
-  }
+  for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) support_pair(p, n, k, e.nx[k], e.ny[k], e.off[k]);
 }
 
 // lo[k] = min over q's vertices of n . q for both edges of pair k, and (kHi)
@@ -627,16 +633,13 @@ OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonV
 
 namespace {
 
-// support_lines for a count kN known at compile time (0: read it): the
-// lanes of edge_lanes, the same products and sums.
+// support_lines for a count kN known at compile time (0: read it).
 template <int kN>
 void support_lines_n(const PolygonView& p, SupportLines::Pair* out) {
   const int n = kN ? kN : p.count;
   for (int k = 0; k < (n + 1) / 2; ++k) {
-    const int j0 = 2 * k, j1 = std::min(2 * k + 1, n - 1);
-    const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
-    const Lanes nx = {n0.x, n1.x}, ny = {n0.y, n1.y};
-    const Lanes off = nx * Lanes{v0.x, v1.x} + ny * Lanes{v0.y, v1.y};  // dot(n, v) per lane
+    Lanes nx, ny, off;
+    support_pair(p, n, k, nx, ny, off);
     SupportLines::Pair& g = out[k];
     __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
     __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
