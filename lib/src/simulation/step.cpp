@@ -28,7 +28,11 @@ void Engine::run_steps(std::int64_t count) {
   std::exception_ptr error;
   detail::TeamBarrier barrier;
   barrier_ = &barrier;
-  flags_.assign(static_cast<std::size_t>(threads_), ThreadFlags{});
+  // The flags are set afresh in every step; the measured speeds (and in
+  // start_team the shares) carry over from the last call with the same
+  // team: an advance of a few steps at a time starts balanced.
+  if (flags_.size() != static_cast<std::size_t>(threads_)) flags_.assign(static_cast<std::size_t>(threads_), ThreadFlags{});
+  for (ThreadFlags& f : flags_) f.left_skin = f.guard_failed = f.pair_failed = false;
   // Alone, the loop runs outside any parallel region: an OpenMP team of one
   // still pays two futex system calls per region (its start and the single's
   // barrier), as much as a small scene's whole step when it is advanced one
