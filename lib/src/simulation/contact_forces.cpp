@@ -131,7 +131,7 @@ void Engine::pair_forces(bool with_energy) {
   bool pair_fault = false;  // a pair failed the penetration guard
   // The phase began at the last barrier (team_barrier keeps the time).
   const PhaseClock::time_point t0 = team > 1 ? flags_[static_cast<std::size_t>(t)].phase_start : PhaseClock::time_point{};
-  if (team > 1 && t == 0) align_block_split();
+  if (team > 1 && t == 0) balance_block_split();
   const long prefetch_end = team > 1 ? end - kPrefetchPairs : begin;
   for (long k = begin; k < end; ++k) {
     if (k < prefetch_end) {

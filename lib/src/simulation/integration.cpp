@@ -11,6 +11,9 @@ namespace dda {
 
 using detail::thread_index;
 using detail::kPrefetchBlocks;
+using detail::PhaseClock;
+using detail::seconds_since;
+using detail::smoothed;
 using detail::prefetch_polygon;
 
 namespace {
@@ -22,14 +25,18 @@ bool inside(const Aabb& b, const Aabb& grown) {
 }  // namespace
 
 template <class Prefetch, class Each>
-[[gnu::always_inline]] inline void Engine::over_block_share(Prefetch prefetch, Each each) {
+[[gnu::always_inline]] inline double Engine::over_block_share(const ThreadFlags& mine, Prefetch prefetch, Each each) {
   // Each block of this thread's share (block_share) in order, prefetching
-  // kPrefetchBlocks ahead in a team.
+  // kPrefetchBlocks ahead in a team; with a team, the share's seconds per
+  // block since the phase began (the last barrier's exit, team_barrier),
+  // else -1.
   const BlockShare share = block_share();
+  const PhaseClock::time_point t0 = mine.phase_start;
   for (int i = share.begin; i < share.end; ++i) {
     if (i < share.prefetch_end) prefetch(i + kPrefetchBlocks);
     each(i);
   }
+  return share.team && share.end > share.begin ? seconds_since(t0) / (share.end - share.begin) : -1.0;
 }
 
 void Engine::move_blocks() {
@@ -39,7 +46,7 @@ void Engine::move_blocks() {
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
-  over_block_share([&](int i) { prefetch_block(i); }, [&](int i) __attribute__((always_inline)) {
+  const double per_block = over_block_share(mine, [&](int i) { prefetch_block(i); }, [&](int i) __attribute__((always_inline)) {
     if (fixed_[i]) return;
     vel_[i] += 0.5 * dt_ * acc_[i];
     const Vec6 dd = dt_ * vel_[i];  // Eq. 8
@@ -62,6 +69,7 @@ void Engine::move_blocks() {
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   });
   mine.left_skin = left_skin;
+  if (per_block >= 0.0) mine.move_seconds_per_block = per_block;
   team_barrier(Simulation::kPhaseMove);
 }
 
@@ -180,13 +188,14 @@ void Engine::gather_and_kick() {
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
-  over_block_share([&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
+  const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
     gather_contact_forces(i);
     if (fixed_[i]) return;
     kick_block(i);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   });
   mine.guard_failed = failed;
+  if (per_block >= 0.0) mine.seconds_per_block = smoothed(mine.seconds_per_block, mine.move_seconds_per_block + per_block);
   team_barrier(Simulation::kPhaseKick);
 }
 

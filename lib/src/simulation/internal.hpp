@@ -125,7 +125,7 @@ class Engine {
   void prefetch_block(int i) const;
   void prefetch_gather(int i) const;
   template <class Prefetch, class Each>
-  void over_block_share(Prefetch prefetch, Each each);
+  double over_block_share(const ThreadFlags& mine, Prefetch prefetch, Each each);
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
   void update_near_pairs();
   void rebuild_near_pairs();
@@ -160,7 +160,7 @@ class Engine {
   void team_barrier(PhaseIndex phase);
   BlockShare block_share() const;
   void split_evenly(int team);
-  void align_block_split();
+  void balance_block_split();
   void balance_pair_split();
 
   // Block i's mutable polygon in the pool (it moves every step).
@@ -249,9 +249,9 @@ class Engine {
   std::vector<long> pair_split_, split_scratch_;
   std::vector<double> work_scratch_;
   // The per-block phases' shares: thread t moves and kicks blocks
-  // [block_split_[t], block_split_[t + 1]), those whose pairs (i, j > i)
-  // it takes in the pair loop (align_block_split, in the pair phase, when
-  // no thread reads them).
+  // [block_split_[t], block_split_[t + 1]), sized by each core's measured
+  // time per block (balance_block_split, in the pair phase, when no thread
+  // reads them).
   std::vector<int> block_split_;
 
   std::vector<Aabb> boxes_;
@@ -352,9 +352,13 @@ struct alignas(64) Engine::ThreadFlags {
   bool pair_failed = false;   // a pair of this thread's share failed the penetration guard
   double pair_work = 0.0;     // its share of the last pair loop: estimated work x seconds_per_work
   // Measured on this thread's core (team runs; only the shares, never the
-  // results, depend on it): seconds per unit of estimated pair work,
-  // smoothed over steps.
+  // results, depend on them): seconds per unit of estimated pair work and
+  // per block (move and kick), smoothed over steps; this step's move
+  // seconds per block of its share (the kick's share may differ: the
+  // split moves in between, in the pair phase).
   double seconds_per_work = 0.0;
+  double seconds_per_block = 0.0;
+  double move_seconds_per_block = 0.0;
   // When its current phase began (the last team_barrier's exit): phase_times
   // and the speeds above time the phase from it.
   std::chrono::steady_clock::time_point phase_start{};

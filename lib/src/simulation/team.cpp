@@ -1,6 +1,6 @@
-// The thread team of run_steps: its barrier and its shares of the near
-// pairs, balanced by each core's measured speed, and of the blocks, those
-// of its pairs. Only the time depends on the shares, never the results.
+// The thread team of run_steps: its barrier and its shares of the blocks
+// and of the near pairs, balanced by each core's measured speed. Only the
+// time depends on the shares, never the results.
 #include <algorithm>
 #include <cmath>
 
@@ -65,36 +65,34 @@ Engine::BlockShare Engine::block_share() const {
 }
 
 void Engine::split_evenly(int team) {
-  // Equal numbers of pairs per thread and the blocks of those pairs (a
-  // start, before any work or core speed is known).
+  // Equal numbers of pairs and of blocks per thread (a start, before any
+  // work or core speed is known).
   const long n = static_cast<long>(near_pairs_.size());
   pair_split_.resize(static_cast<std::size_t>(team) + 1);
   for (int t = 0; t <= team; ++t) pair_split_[static_cast<std::size_t>(t)] = n * t / team;
   block_split_.resize(static_cast<std::size_t>(team) + 1);
-  align_block_split();
+  for (int t = 0; t <= team; ++t) block_split_[static_cast<std::size_t>(t)] = block_count() * t / team;
   split_scratch_.resize(pair_split_.size());
   work_scratch_.resize(pair_split_.size());
 }
 
-void Engine::align_block_split() {
-  // Thread t moves and kicks the blocks whose pairs (i, j), i < j, it takes
-  // in the pair loop: from the first block of its first pair on (near pairs
-  // are sorted by i). Its pairs then read only its own blocks but for the
-  // pairs that reach across the boundary (j beyond it), and the lines a
-  // block's move writes are mostly read by the same core's pair loop: a
-  // line the other core read must be taken back from it (a core-to-core
-  // round trip, ~0.5 us on the 2-vCPU runner) before it is written. The
-  // block phases are not balanced by themselves: the pair loop is the
-  // larger part of the step (~4x the per-block phases on the collapse).
+void Engine::balance_block_split() {
+  // Shares of the blocks in proportion to each core's measured speed
+  // (blocks per second in the per-block phases), so that the phases end
+  // together. Kept as they are until every core has a measurement.
   const int team = static_cast<int>(block_split_.size()) - 1;
-  const long n = static_cast<long>(near_pairs_.size());
-  block_split_[0] = 0;
-  for (int t = 1; t < team; ++t) {
-    const long k = pair_split_[static_cast<std::size_t>(t)];
-    const int b = k < n ? near_pairs_[static_cast<std::size_t>(k)].i : block_count();
-    block_split_[static_cast<std::size_t>(t)] = std::max(b, block_split_[static_cast<std::size_t>(t) - 1]);
+  double speed_sum = 0.0;
+  for (int t = 0; t < team; ++t) {
+    const double c = flags_[static_cast<std::size_t>(t)].seconds_per_block;
+    if (!(c > 0.0)) return;
+    speed_sum += 1.0 / c;
   }
-  block_split_[static_cast<std::size_t>(team)] = block_count();
+  double before = 0.0;
+  for (int t = 1; t < team; ++t) {
+    before += 1.0 / flags_[static_cast<std::size_t>(t) - 1].seconds_per_block;
+    const int b = static_cast<int>(std::llround(block_count() * before / speed_sum));
+    block_split_[static_cast<std::size_t>(t)] = std::clamp(b, block_split_[static_cast<std::size_t>(t) - 1], block_count());
+  }
 }
 
 void Engine::balance_pair_split() {
@@ -106,7 +104,6 @@ void Engine::balance_pair_split() {
   // on the split: only the time.
   const int team = static_cast<int>(pair_split_.size()) - 1;
   if (team < 2) return;
-  const long n = static_cast<long>(near_pairs_.size());
   std::vector<double>& cum = work_scratch_;
   cum[0] = 0.0;
   for (int t = 0; t < team; ++t)
@@ -122,17 +119,7 @@ void Engine::balance_pair_split() {
     const double w = cum[static_cast<std::size_t>(u) + 1] - cum[static_cast<std::size_t>(u)];
     const double frac = w > 0.0 ? (target - cum[static_cast<std::size_t>(u)]) / w : 0.0;
     const long lo = old[static_cast<std::size_t>(u)], hi = old[static_cast<std::size_t>(u) + 1];
-    long b = lo + static_cast<long>(std::llround(frac * static_cast<double>(hi - lo)));
-    // Moved to the nearer end of the run of pairs whose first block is
-    // that of pair b: each block's pairs (i, j > i) in one share
-    // (align_block_split).
-    if (b > 0 && b < n) {
-      const int i = near_pairs_[static_cast<std::size_t>(b)].i;
-      long first = b, past = b + 1;
-      while (first > 0 && near_pairs_[static_cast<std::size_t>(first) - 1].i == i) --first;
-      while (past < n && near_pairs_[static_cast<std::size_t>(past)].i == i) ++past;
-      b = b - first <= past - b ? first : past;
-    }
+    const long b = lo + static_cast<long>(std::llround(frac * static_cast<double>(hi - lo)));
     pair_split_[static_cast<std::size_t>(t)] = std::max(b, pair_split_[static_cast<std::size_t>(t) - 1]);
   }
 }
