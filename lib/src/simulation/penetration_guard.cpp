@@ -95,9 +95,9 @@ void Engine::check_pairs() const {
   // The first pair in pair order that fails the penetration guard, with
   // what a user can change.
   const StabilityGuards& g = scene_.guards;
-  for (std::size_t k = 0; k < pair_results_.size(); ++k) {
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     if (!pair_loads_[k].active) continue;
-    const PairResult& r = pair_results_[k];
+    const PairResult& r = contact_results_[static_cast<std::size_t>(near_pairs_[k].slot)];
     if (!pair_guard_fault(r)) continue;
     const ContactInfo& c = r.info;
     const int a = c.cp, b = c.tp;

@@ -187,10 +187,25 @@ void Engine::save_state(ByteWriter& w) const {
   w.f64(energy_scale_);
   w.f64(dropped_friction_work_);
 
-  // The broad phase and the near pairs with their history.
+  // The broad phase and the near pairs with their history: per near pair,
+  // its contact (from its slot; a pair not touching has none, and stores a
+  // fresh one, PairResult{} and PairHistory{}, which no step reads) and its
+  // friction state. The slots themselves are not saved: where a contact
+  // sits never enters a result.
   put_list(w, near_pairs_, near_pair);
-  put_list(w, pair_results_, pair_result);
-  put_list(w, pair_friction_, friction_history);
+  {
+    std::vector<PairResult> results(near_pairs_.size());
+    std::vector<PairFriction> friction(friction_ ? near_pairs_.size() : 0);
+    for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+      const int slot = near_pairs_[k].slot;
+      if (slot >= 0) results[k] = contact_results_[static_cast<std::size_t>(slot)];
+      if (!friction_) continue;
+      if (slot >= 0) friction[k].history = contact_history_[static_cast<std::size_t>(slot)];
+      friction[k].friction_work = pair_friction_work_[k];
+    }
+    put_list(w, results, pair_result);
+    put_list(w, friction, friction_history);
+  }
   put_list(w, pair_loads_, pair_load);
   put_list(w, near_pair_offset_, value);
   put_list(w, block_pairs_, block_pair);
@@ -258,9 +273,29 @@ void Engine::restore_state(ByteReader& r) {
     return p;
   });
   const std::size_t pairs = near_pairs_.size();
-  get_list(r, pair_results_, pairs, "the pair results", pair_result);
-  get_list(r, pair_friction_, friction_ ? pairs : 0, "the friction histories", friction_history);
+  std::vector<PairResult> results;
+  std::vector<PairFriction> frictions;
+  get_list(r, results, pairs, "the pair results", pair_result);
+  get_list(r, frictions, friction_ ? pairs : 0, "the friction histories", friction_history);
   get_list(r, pair_loads_, pairs, "the pair loads", pair_load);
+  // The touching pairs' contacts into slots (in pair order); what the
+  // others stored is never read (a pair that begins to touch starts afresh).
+  std::size_t touching = 0;
+  for (const PairLoad& l : pair_loads_) touching += l.active ? 1 : 0;
+  contact_results_.clear();
+  contact_results_.reserve(touching);
+  contact_history_.clear();
+  contact_history_.reserve(friction_ ? touching : 0);
+  free_slots_.clear();
+  pair_friction_work_.assign(friction_ ? pairs : 0, 0.0);
+  for (std::size_t k = 0; k < pairs; ++k) {
+    if (friction_) pair_friction_work_[k] = frictions[k].friction_work;
+    near_pairs_[k].slot = -1;
+    if (!pair_loads_[k].active) continue;
+    near_pairs_[k].slot = static_cast<int>(contact_results_.size());
+    contact_results_.push_back(results[k]);
+    if (friction_) contact_history_.push_back(frictions[k].history);
+  }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
   const auto read_block_pair = element<BlockPair>(block_pair);
   r.list(block_pairs_, 9, [&](ByteReader& in) {
