@@ -161,8 +161,8 @@ void Engine::rebuild_near_pairs() {
   std::vector<int> fill(near_pair_offset_.begin(), near_pair_offset_.end() - 1);
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     const int i = near_pairs_[k].i, j = near_pairs_[k].j;
-    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j, true};
-    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i, false};
+    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j};
+    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i};
   }
 }
 

@@ -169,7 +169,7 @@ void Engine::gather_contact_forces(int i) {
     // the second, as the force): only then, so that every other sum keeps
     // its bits.
     if (load.couple != 0.0) g.g23[0] += load.couple;
-    if (bp.first) {
+    if (bp.other > i) {  // block i is the pair's first
       sum.g01 += g.g01;
       sum.g23 += g.g23;
       sum.g45 += g.g45;

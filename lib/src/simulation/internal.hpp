@@ -205,7 +205,6 @@ class Engine {
 
   // Per-block constants and bookkeeping.
   std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
-  std::vector<double> kn_over_h_;  // kn / H of each block (H is fixed at construction), Pa/m
   // The elastic matrix D of each material (Eq. 4), and a zero one last for
   // the boundary polygons; block i's is elastic(i). One per material, not
   // per block: 72 bytes a block fewer at 10^6 blocks.
@@ -369,11 +368,11 @@ struct Engine::PairLoad {
   bool active = false;     // in contact: force, point and the PairResult are this step's
 };
 
-// One entry of a block's near-pair list: the pair, the other block, and
-// whether this block is the pair's first (the force acts on it with +).
+// One entry of block i's near-pair list: the pair and the other block.
+// Block i is the pair's first (the force acts on it with +) when other > i
+// (a near pair is i < j).
 struct Engine::BlockPair {
   int pair = -1, other = -1;
-  bool first = false;
 };
 
 // One flag block per thread, each on its own cache line: set in a

@@ -67,8 +67,8 @@ namespace dda {
 double Engine::pair_energy_bound(int a, int b) const {
   // E_max above, J/m, with the areas of now and the inscribed radii of t = 0.
   const double area_a = moments_[a].area, area_b = moments_[b].area;
-  return kn_over_h_[b] * radius_[b] * std::min(0.5 * area_b, area_a) +
-         kn_over_h_[a] * radius_[a] * std::min(0.5 * area_a, area_b);
+  return sides_[b].side.kn_over_h * radius_[b] * std::min(0.5 * area_b, area_a) +
+         sides_[a].side.kn_over_h * radius_[a] * std::min(0.5 * area_a, area_b);
 }
 
 double Engine::approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed, double* mass) const {

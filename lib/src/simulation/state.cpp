@@ -109,6 +109,12 @@ constexpr auto pair_load = [](auto& io, auto& l) {
   io(l.candidate);
   io(l.active);
 };
+// A block's near-pair entry as the stream stores it: with whether the
+// block is the pair's first (BlockPair derives it: other > the block).
+struct BlockPairRecord {
+  int pair = -1, other = -1;
+  bool first = false;
+};
 constexpr auto block_pair = [](auto& io, auto& b) {
   io(b.pair);
   io(b.other);
@@ -208,7 +214,15 @@ void Engine::save_state(ByteWriter& w) const {
   }
   put_list(w, pair_loads_, pair_load);
   put_list(w, near_pair_offset_, value);
-  put_list(w, block_pairs_, block_pair);
+  {
+    std::vector<BlockPairRecord> records(block_pairs_.size());
+    for (int i = 0; i < block_count(); ++i)
+      for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
+        const BlockPair& b = block_pairs_[static_cast<std::size_t>(q)];
+        records[static_cast<std::size_t>(q)] = {b.pair, b.other, b.other > i};
+      }
+    put_list(w, records, block_pair);
+  }
   put_list(w, contact_info_, contact);
   w.u64(candidate_count_);
   put_list(w, skin_boxes_, box);
@@ -297,16 +311,24 @@ void Engine::restore_state(ByteReader& r) {
     if (friction_) contact_history_.push_back(frictions[k].history);
   }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
-  const auto read_block_pair = element<BlockPair>(block_pair);
-  r.list(block_pairs_, 9, [&](ByteReader& in) {
-    const BlockPair b = read_block_pair(in);
+  const auto read_block_pair = element<BlockPairRecord>(block_pair);
+  std::vector<BlockPairRecord> records;
+  r.list(records, 9, [&](ByteReader& in) {
+    const BlockPairRecord b = read_block_pair(in);
     if (b.pair < 0 || static_cast<std::size_t>(b.pair) >= pairs || b.other < 0 || b.other >= nb)
       in.fail("a block's pair entry is out of range");
     return b;
   });
-  if (near_pair_offset_.front() != 0 || near_pair_offset_.back() != static_cast<int>(block_pairs_.size()) ||
+  if (near_pair_offset_.front() != 0 || near_pair_offset_.back() != static_cast<int>(records.size()) ||
       !std::is_sorted(near_pair_offset_.begin(), near_pair_offset_.end()))
     r.fail("the block pair offsets do not index the block pair list");
+  block_pairs_.resize(records.size());
+  for (int i = 0; i < nb; ++i)
+    for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
+      const BlockPairRecord& b = records[static_cast<std::size_t>(q)];
+      if (b.first != (b.other > i)) r.fail("a block's pair entry names the wrong first block");
+      block_pairs_[static_cast<std::size_t>(q)] = {b.pair, b.other};
+    }
   const auto read_contact = element<ContactInfo>(contact);
   r.list(contact_info_, 1, [&](ByteReader& in) {
     const ContactInfo c = read_contact(in);
