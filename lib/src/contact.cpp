@@ -42,6 +42,7 @@ using detail::LaneMask;
 using detail::Lanes;
 using detail::lane_bits;
 using detail::lane_min;
+using detail::upper_lower;
 
 // d[1] < d[0] ? d[1] : d[0]: SSE2's minsd on the swapped pair (the plain
 // form costs GCC a register copy more); elsewhere the plain form.
@@ -50,15 +51,6 @@ inline double across_min(Lanes d) {
   return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(d, d), d));
 #else
   return d[1] < d[0] ? d[1] : d[0];
-#endif
-}
-
-// (a[1], b[0]): the line before each of b's when a holds the pair before b.
-inline Lanes upper_lower(Lanes a, Lanes b) {
-#if defined(__SSE2__)
-  return _mm_shuffle_pd(a, b, 1);
-#else
-  return Lanes{a[1], b[0]};
 #endif
 }
 

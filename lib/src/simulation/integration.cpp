@@ -100,11 +100,13 @@ void Engine::update_geometry() {
 }
 
 void Engine::update_block_geometry(int i) {
-  const PolygonGeometry g = update_polygon_geometry(polygon_span(i));
+  // The polygon's normals, moments and box, and with the normals at hand
+  // block_facts' sharp corners and support lines (the same bits).
+  const std::size_t b = static_cast<std::size_t>(i);
+  const PolygonGeometry g = update_polygon_geometry(polygon_span(i), support_[b], sharp_corners_[b]);
   moments_[i] = g.moments;
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
-  block_facts(i);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes. The
