@@ -693,7 +693,9 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
   const PolygonView& p = side.poly;
   const double snap = tol * 1e-3;  // a vertex this close to a cell line is on it
   double total = 0.0;
-  std::array<Vec2, kMaxVertices> ring[2];  // left uninitialised: counts say how many are set
+  // Scratch, not zeroed per call (Vec2's members are initialised): counts
+  // say how many are set.
+  static thread_local std::array<Vec2, kMaxVertices> ring[2];
   std::array<double, kMaxVertices> d;
   for (int i = 0; i < p.count; ++i) {
     const Vec2 ni = p.normal(i);

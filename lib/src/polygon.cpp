@@ -336,11 +336,6 @@ double perimeter(PolygonView poly) {
 
 double geometric_tolerance(PolygonView poly) { return geometric_tolerance(bounds(poly)); }
 
-double geometric_tolerance(const Aabb& b) {
-  const double coord = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
-  const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
-  return kRoundoffUlps * DBL_EPSILON * (coord + size);
-}
 
 PointLocation locate_point(PolygonView poly, Vec2 p, double tol) {
   if (tol < 0.0) tol = geometric_tolerance(poly);
