@@ -537,11 +537,12 @@ template <int kNc, int kNt>
 [[gnu::always_inline]] inline NormalForce contact_force_ip(const PotentialSide& cp, const PotentialSide& tp,
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
-  // area_centroid(ip), inline; unrolled for the common triangles and
-  // quadrilaterals (the same operations in the same order: the same bits).
+  // area_centroid(ip): inline and unrolled for the common triangles and
+  // quadrilaterals, a call for the rest (the same operations in the same
+  // order: the same bits).
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
-                                         : detail::green_centroid(ip.v.data(), ip.count);
+                                         : area_centroid(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   // The sums in locals, the result built once at the end: a NormalForce
   // made first would be zeroed (a string store) and its counters summed
