@@ -39,7 +39,10 @@ template <class Prefetch, class Each>
   return share.team && share.end > share.begin ? seconds_since(t0) / (share.end - share.begin) : -1.0;
 }
 
-void Engine::move_blocks() {
+// Flattened (as gather_and_kick): the per-block steps of this file
+// (update_block_geometry, body_force) inline in the block loop, no call
+// frames per block; the kernels of other files stay calls.
+[[gnu::flatten]] void Engine::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
   // block's geometry, its body forces, and whether its box left its grown
   // box (the broad phase's list then needs a rebuild).
@@ -185,7 +188,7 @@ void Engine::gather_contact_forces(int i) {
   reach_radius_[i] = reach;
 }
 
-void Engine::gather_and_kick() {
+[[gnu::flatten]] void Engine::gather_and_kick() {
   // Per block: its contact forces, a^{n+1}, the second half kick, and the
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
