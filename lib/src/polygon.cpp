@@ -300,7 +300,9 @@ PolygonGeometry update_polygon_geometry(PolygonSpan poly) {
   return polygon_geometry<0, false>(poly, nullptr, nullptr);
 }
 
-PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support, std::uint32_t& sharp) {
+// Flattened: the kernels above inline (no call per block and step).
+[[gnu::flatten]] PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support,
+                                                         std::uint32_t& sharp) {
   if (poly.count == 4) return polygon_geometry<4, true>(poly, support, &sharp);
   if (poly.count < 3 || poly.count > kMaxBlockVertices) {  // no support lines: sharp_corners
     sharp = sharp_corners(poly);
