@@ -31,14 +31,16 @@
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
-// --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~2.4 kB of heap per block:
-// 2.4 GB per simulation at 10^6, two of them alive at once for the 1- and
-// 2-thread runs); --min-blocks N leaves out the rows below N, --max-threads 1
+// --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~1.5 kB of heap per block
+// constructed and ~2.3 kB at the end of the run (the touching pairs' contact
+// slots): ~2.3 GB per simulation at 10^6, two of them alive at once for the
+// 1- and 2-thread runs); --min-blocks N leaves out the rows below N, --max-threads 1
 // runs each row with 1 thread only (the 10^6 row in half the time). A table
 // of blocks, pairs per step, wall and CPU us per step, ns per block-step and
 // per candidate pair, the heap per block of the constructed simulation (of
 // it the pooled block geometry, and the near pairs per block times the bytes
-// each holds), the CPU time of generating the scene and of constructing the
+// each holds; a touching pair's contact slot comes on top, in the heap
+// growth per touching pair and the heap per block at the run's end), the CPU time of generating the scene and of constructing the
 // simulation, and the fitted exponents p of cost ~ blocks^p (least squares
 // over the rows: time per step, generation, construction). --csv FILE also
 // writes the table as CSV. Shapes:
@@ -55,8 +57,8 @@
 // time per step after the warm-up, heap per block and per touching pair, for
 //   the collapse as is (friction 15 deg, deformable blocks);
 //   the collapse without friction (kt = 0): no friction force (Eqs. 24-26),
-//          no friction energy or work banking; the PairHistory slot of each
-//          near pair is still allocated (unused);
+//          no friction energy or work banking, no friction history per
+//          touching pair nor friction work per near pair;
 //   the collapse with rigid blocks (Scene::strains false): no stress update,
 //          no strain forces, no strain modes in the critical step;
 //   Sect. 4.1's two squares with the default all-pairs test
@@ -332,8 +334,9 @@ struct ThreadRuns {
   // Memory of the first (1-thread) simulation: heap bytes per scene block
   // when constructed (polygons, the 6-DOF state, mass matrices, bisectors,
   // broad-phase boxes), and the heap growth over the warm-up and the timed
-  // steps per touching pair at the end (the contacts' state and buffers).
-  double bytes_per_block = 0.0, growth_per_touching = 0.0;
+  // steps per touching pair at the end (the contacts' state and buffers),
+  // and the heap per scene block at the end of the run (both together).
+  double bytes_per_block = 0.0, growth_per_touching = 0.0, end_bytes_per_block = 0.0;
   // Of it, the block geometry: the pooled vertices and normals and their
   // offsets per block (Simulation::geometry_bytes_per_block).
   std::size_t geometry_per_block = 0;
@@ -365,7 +368,9 @@ ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps, int
       out.bytes_per_near_pair = sim->bytes_per_near_pair();
       out.construct_s = construct_s;
       const double touching = static_cast<double>(sim->contacts().size());
-      out.growth_per_touching = touching > 0.0 ? (heap_bytes() - built) / touching : 0.0;
+      const double end = heap_bytes();
+      out.growth_per_touching = touching > 0.0 ? (end - built) / touching : 0.0;
+      out.end_bytes_per_block = (end - before) / sim->scene_block_count();
       out.x_pairs = x_overlap_pairs(*sim);
       first = std::move(sim);
     } else {
@@ -621,7 +626,8 @@ void write_csv(const std::string& path, const std::vector<ScalingRow>& rows, Sha
     if (!f) throw std::runtime_error("cannot write " + tmp);
     f << "shape,blocks,width_m,height_m,threads,warmup_steps,steps,wall_s,candidates_per_step,touching_per_step,"
          "x_overlap_pairs,cpu_per_wall,us_per_step,cpu_us_per_step,ns_per_block_step,ns_per_candidate,ns_per_touching,identical_1_2,"
-         "bytes_per_block,growth_bytes_per_touching,near_pairs_per_block,bytes_per_near_pair,generate_s,construct_s\n";
+         "bytes_per_block,growth_bytes_per_touching,near_pairs_per_block,bytes_per_near_pair,generate_s,construct_s,"
+         "end_bytes_per_block\n";
     f.precision(9);
     for (const ScalingRow& r : rows)
       for (const RunStats& s : r.t.runs)
@@ -630,7 +636,8 @@ void write_csv(const std::string& path, const std::vector<ScalingRow>& rows, Sha
           << s.touching_per_step << ',' << r.t.x_pairs << ',' << s.cpu_per_wall() << ',' << s.us_per_step() << ',' << s.cpu_us_per_step() << ',' << s.ns_per_block_step()
           << ',' << s.ns_per_candidate() << ',' << s.ns_per_touching() << ',' << (r.t.runs.size() < 2 ? "" : r.t.same ? "1" : "0") << ','
           << r.t.bytes_per_block << ',' << r.t.growth_per_touching << ',' << r.t.near_pairs_per_block << ','
-          << r.t.bytes_per_near_pair << ',' << r.generate_s << ',' << r.t.construct_s << '\n';
+          << r.t.bytes_per_near_pair << ',' << r.generate_s << ',' << r.t.construct_s << ',' << r.t.end_bytes_per_block
+          << '\n';
     if (!f) throw std::runtime_error("error writing " + tmp);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename " + tmp + " to " + path);
@@ -646,23 +653,23 @@ int run_scaling(const Options& o) {
   std::printf("   sizeof(dda::Polygon) = %zu bytes (capacity %d vertices and normals; scratch and intersection "
               "polygons), sizeof(dda::PolygonView) = %zu bytes (a pooled block's view)\n",
               sizeof(dda::Polygon), dda::kMaxVertices, sizeof(dda::PolygonView));
-  std::printf("%7s %11s %3s %5s %8s %10s %10s %10s %10s %10s %11s %8s %8s %5s %8s %9s %6s %7s %8s %7s %7s\n", "blocks",
+  std::printf("%7s %11s %3s %5s %8s %10s %10s %10s %10s %10s %11s %8s %8s %5s %8s %9s %6s %7s %8s %10s %7s %7s\n", "blocks",
               "region m", "thr", "steps", "cpu/wall", "cand/step", "touch/step", "x-overlap", "us/step", "cpu us",
               "ns/blk-step", "ns/cand", "ns/touch", "same", "kB/block", "geo B/blk", "np/blk", "B/np", "B/touch",
-              "gen s", "build s");
+              "end kB/blk", "gen s", "build s");
   std::vector<ScalingRow> rows;
   for (int target : kTargetBlocks) {
     if (target > o.max_blocks || target < o.min_blocks) continue;
     rows.push_back(scaling_row(base, o.shape, target, o.warmup, o.max_threads));
     const ScalingRow& r = rows.back();
     for (const RunStats& s : r.t.runs)
-      std::printf("%7d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %10.1f %10.1f %11.1f %8.1f %8.1f %5s %8.2f %9zu %6.2f %7zu %8.0f %7.2f %7.2f\n",
+      std::printf("%7d %5.0fx%-5.0f %3d %5lld %8.2f %10.1f %10.1f %10lld %10.1f %10.1f %11.1f %8.1f %8.1f %5s %8.2f %9zu %6.2f %7zu %8.0f %10.2f %7.2f %7.2f\n",
                   s.blocks, r.width, r.height, s.threads, static_cast<long long>(s.steps), s.cpu_per_wall(),
                   s.candidates_per_step, s.touching_per_step, static_cast<long long>(r.t.x_pairs), s.us_per_step(),
                   s.cpu_us_per_step(), s.ns_per_block_step(), s.ns_per_candidate(), s.ns_per_touching(),
                   r.t.runs.size() < 2 ? "-" : r.t.same ? "yes" : "NO", r.t.bytes_per_block / 1e3, r.t.geometry_per_block,
                   r.t.near_pairs_per_block, r.t.bytes_per_near_pair,
-                  r.t.growth_per_touching, r.generate_s, r.t.construct_s);
+                  r.t.growth_per_touching, r.t.end_bytes_per_block / 1e3, r.generate_s, r.t.construct_s);
     std::fflush(stdout);
   }
   bool all_same = true;
@@ -681,7 +688,8 @@ int run_scaling(const Options& o) {
               " same: 1- and 2-thread final states bit-identical;\n   kB/block: heap per block of the constructed "
               "simulation; geo B/blk: of it, the pooled block geometry (vertices, normals, offsets);\n   np/blk, B/np: "
               "of it, the near pairs per block at construction and the solver state of each;\n   B/touch: heap "
-              "growth over the run per touching pair at its end (mallinfo2); gen s, build s: CPU time of\n   "
+              "growth over the run per touching pair at its end (mallinfo2); end kB/blk: heap per block at the\n   "
+              "end of the run (kB/block + touching pairs x B/touch); gen s, build s: CPU time of\n   "
               "generating the scene and of constructing the first simulation\n");
   if (!o.csv.empty()) {
     write_csv(o.csv, rows, o.shape);

@@ -179,8 +179,10 @@ class Simulation {
   // of a step can be measured.
   std::size_t candidate_count() const;
   // Bytes of solver state per broad-phase near pair in this scene (its
-  // pair, result, load and two block-list entries; plus the friction
-  // history only when the scene has friction), for the benchmarks.
+  // pair, load and two block-list entries; plus its friction work only when
+  // the scene has friction), for the benchmarks. A touching pair holds a
+  // contact slot besides (its result, and its friction history when the
+  // scene has friction).
   std::size_t bytes_per_near_pair() const;
   // Broad-phase near pairs now (candidates and the pairs within the skin):
   // each holds bytes_per_near_pair() of solver state.

@@ -90,7 +90,7 @@ void Engine::rebuild_near_pairs() {
   if (scene_.broad_phase == BroadPhase::kNone) {
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) pairs.push_back({i, j, -1});
+        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) pairs.push_back({i, j, -1, -1});
   } else {
     ++broad_phase_rebuilds_;
     skin_boxes_.resize(static_cast<std::size_t>(n));
@@ -121,32 +121,34 @@ void Engine::rebuild_near_pairs() {
         if (g[j].lo.x > g[i].hi.x) break;
         if (fixed_[i] && fixed_[j]) continue;
         if (g[j].lo.y > g[i].hi.y || g[i].lo.y > g[j].hi.y) continue;
-        pairs.push_back({std::min(i, j), std::max(i, j), -1});
+        pairs.push_back({std::min(i, j), std::max(i, j), -1, -1});
       }
     }
     std::sort(pairs.begin(), pairs.end(), pair_before<NearPair>);
   }
   if (pairs.capacity() > pairs.size() + pairs.size() / kNearPairSlack) pairs.shrink_to_fit();
-  // A pair on both lists keeps its slot's state (witness, contact, history):
-  // one merge pass over the two sorted lists. A pair in contact now is on
-  // both (its boxes overlap, so its grown boxes do).
+  // A pair on both lists keeps its state (witness, load, friction work and
+  // its contact slot): one merge pass over the two sorted lists. A pair in
+  // contact now is on both with the sweep (its boxes overlap, so its grown
+  // boxes do); a pair that leaves the list frees its slot.
   if (friction_) bank_friction_work(pairs);  // energy.cpp: the leaving pairs' friction work
-  std::vector<PairResult> results(pairs.size());
-  std::vector<PairFriction> friction(friction_ ? pairs.size() : 0);
+  std::vector<double> friction_work(friction_ ? pairs.size() : 0);
   std::vector<PairLoad> loads(pairs.size());
   std::size_t h = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     while (h < near_pairs_.size() && pair_before(near_pairs_[h], pairs[k])) ++h;
     if (h < near_pairs_.size() && !pair_before(pairs[k], near_pairs_[h])) {
       pairs[k].witness = near_pairs_[h].witness;
-      results[k] = pair_results_[h];
-      if (friction_) friction[k] = pair_friction_[h];
+      pairs[k].slot = near_pairs_[h].slot;
+      near_pairs_[h].slot = -1;  // handed on
+      if (friction_) friction_work[k] = pair_friction_work_[h];
       loads[k] = pair_loads_[h];
     }
   }
+  for (const NearPair& p : near_pairs_)
+    if (p.slot >= 0) free_slots_.push_back(p.slot);
   near_pairs_.swap(pairs);
-  pair_results_.swap(results);
-  pair_friction_.swap(friction);
+  pair_friction_work_.swap(friction_work);
   pair_loads_.swap(loads);
   // Each block's pairs in increasing order (CSR).
   near_pair_offset_.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -159,14 +161,15 @@ void Engine::rebuild_near_pairs() {
   std::vector<int> fill(near_pair_offset_.begin(), near_pair_offset_.end() - 1);
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     const int i = near_pairs_[k].i, j = near_pairs_[k].j;
-    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j, true};
-    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i, false};
+    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j};
+    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i};
   }
 }
 
 std::size_t Engine::bytes_per_near_pair() const {
-  return sizeof(NearPair) + sizeof(PairResult) + sizeof(PairLoad) + 2 * sizeof(BlockPair) +
-         (friction_ ? sizeof(PairFriction) : 0);
+  // A near pair's own state; a touching pair's contact slot is apart
+  // (sizeof(PairResult), with friction + sizeof(PairHistory)).
+  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(BlockPair) + (friction_ ? sizeof(double) : 0);
 }
 
 }  // namespace dda

@@ -29,20 +29,41 @@ constexpr long kWorkOther = 1;
 
 constexpr double kTwoPi = 6.28318530717958647692;  // 2 pi, the penetration guard's first tier
 
+// The contacts a thread's born or ended list keeps room for after a merge
+// (a step's births and ends are a few per thousand blocks; more, as at the
+// first force evaluation, is given back).
+constexpr std::size_t kBornListRoom = 256;
+
 }  // namespace
 
 // Inlined into the pair loop (its only caller): a call frame of its own
-// costs about as much as the bookkeeping it does.
-[[gnu::always_inline]] inline bool Engine::pair_force(long k, bool was_active, const Polygon& ip,
-                                                          const IpEdge* source, double tol, bool& pair_fault) {
+// costs about as much as the bookkeeping it does. The pair's contact (null:
+// no contact): in its slot when it touched at the last step, else a new
+// entry of its thread's born list.
+[[gnu::always_inline]] inline Engine::PairResult* Engine::pair_force(long k, bool was_active, const Polygon& ip,
+                                                                     const IpEdge* source, double tol,
+                                                                     bool& pair_fault, ThreadContacts& mine) {
   const int cp = near_pairs_[static_cast<std::size_t>(k)].i, tp = near_pairs_[static_cast<std::size_t>(k)].j;
   const ContactParams& c = scene_.contact;
   // Eqs. 11-20; pg kept within the IP where Eq. 20's crossing leaves it
   // (segment forces that nearly cancel), the rest of the moment a couple.
   const NormalForce nf =
       normal_contact_force(sides_[cp].side, sides_[tp].side, ip, c.integration, tol, source, LoadingPoint::kWithinIp);
-  if (!nf.valid) return false;
-  PairResult& r = pair_results_[static_cast<std::size_t>(k)];
+  if (!nf.valid) return nullptr;
+  const int slot = near_pairs_[static_cast<std::size_t>(k)].slot;
+  PairResult* result;
+  PairHistory* history;
+  if (slot >= 0) {
+    result = &contact_results_[static_cast<std::size_t>(slot)];
+    history = friction_ ? &contact_history_[static_cast<std::size_t>(slot)] : nullptr;
+  } else {
+    mine.born.emplace_back();
+    BornContact& b = mine.born.back();
+    b.pair = k;
+    result = &b.result;
+    history = &b.history;
+  }
+  PairResult& r = *result;
   ContactInfo& info = r.info;
   info.cp = cp;
   info.tp = tp;
@@ -53,7 +74,7 @@ constexpr double kTwoPi = 6.28318530717958647692;  // 2 pi, the penetration guar
   info.ip_area = nf.ip_area;
   info.ip_length = 0.5 * nf.ip_perimeter;
   info.sliding = false;
-  if (friction_) pair_friction(r, pair_friction_[static_cast<std::size_t>(k)], was_active, nf);  // friction.cpp, Eqs. 24-26
+  if (friction_) pair_friction(r, *history, pair_friction_work_[static_cast<std::size_t>(k)], was_active, nf);  // friction.cpp, Eqs. 24-26
   const StabilityGuards& g = scene_.guards;
   if (g.max_penetration > 0.0 || g.max_approach_energy > 0.0) {
     // The penetration guard's measures (penetration_guard.cpp): the depth
@@ -98,7 +119,7 @@ constexpr double kTwoPi = 6.28318530717958647692;  // 2 pi, the penetration guar
   load.force = info.normal_force + info.tangential_force;
   load.point = info.point;
   load.couple = nf.couple;
-  return true;
+  return result;
 }
 
 void Engine::pair_forces(bool with_energy) {
@@ -122,6 +143,7 @@ void Engine::pair_forces(bool with_energy) {
   const Aabb* const boxes = boxes_.data();
   const BlockSide* const sides = sides_.data();
   const std::uint32_t* const sharp = sharp_corners_.data();
+  ThreadContacts& changed = thread_contacts_[static_cast<std::size_t>(t)];
   const SupportLines::Pair* const* const support = support_.data();
   // The intersection polygon and its edges' sources, rewritten by every
   // overlap test.
@@ -148,23 +170,24 @@ void Engine::pair_forces(bool with_energy) {
     load.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
     if (!load.candidate) {
       work += kWorkOther;
+      if (was_active) changed.ended.push_back(k);  // its slot is freed by merge_contacts
       continue;
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
     const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
     const OverlapFacts facts = {sharp[p.i], support[p.i], support[p.j]};
+    PairResult* r = nullptr;
     if (overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &p.witness,
                                  facts) != OverlapState::kOverlapping ||
-        ip.count < 3 || !pair_force(k, was_active, ip, source.data(), tol, pair_fault)) {
+        ip.count < 3 || !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
       work += kWorkCandidate;
+      if (was_active) changed.ended.push_back(k);
       continue;
     }
     work += kWorkTouching;
     // The penalty energy of the contact, as energy() computes it (the same
     // IP: the lines left out of the cut leave it unchanged).
-    if (with_energy) {
-      pair_results_[static_cast<std::size_t>(k)].energy = contact_energy(sides[p.i].side, sides[p.j].side, ip, tol);
-    }
+    if (with_energy) r->energy = contact_energy(sides[p.i].side, sides[p.j].side, ip, tol);
   }
   // Read by every thread after the barrier below (run_steps' flags; none
   // before the first step).
@@ -177,6 +200,52 @@ void Engine::pair_forces(bool with_energy) {
     mine.pair_work = static_cast<double>(work) * (mine.seconds_per_work > 0.0 ? mine.seconds_per_work : 1.0);
   }
   team_barrier(Simulation::kPhasePairs);
+}
+
+}  // namespace dda
+
+namespace dda {
+
+void Engine::merge_contacts() {
+  // Serial (thread 0, after the pair loop's barrier; the phase after it
+  // reads only the pairs' loads): the slots of the pairs that stopped
+  // touching are freed, then each pair that began to touch takes a free
+  // slot (or a new one) for its contact. The table grows by an eighth at a
+  // time (no doubling whose spare half would stay with it).
+  for (ThreadContacts& tc : thread_contacts_) {
+    for (const long k : tc.ended) {
+      int& slot = near_pairs_[static_cast<std::size_t>(k)].slot;
+      free_slots_.push_back(slot);
+      slot = -1;
+    }
+    tc.ended.clear();
+  }
+  for (ThreadContacts& tc : thread_contacts_) {
+    for (const BornContact& b : tc.born) {
+      int slot;
+      if (!free_slots_.empty()) {
+        slot = free_slots_.back();
+        free_slots_.pop_back();
+      } else {
+        slot = static_cast<int>(contact_results_.size());
+        if (contact_results_.size() == contact_results_.capacity()) {
+          const std::size_t room = contact_results_.size() + contact_results_.size() / 8 + 16;
+          contact_results_.reserve(room);
+          if (friction_) contact_history_.reserve(room);
+        }
+        contact_results_.emplace_back();
+        if (friction_) contact_history_.emplace_back();
+      }
+      near_pairs_[static_cast<std::size_t>(b.pair)].slot = slot;
+      contact_results_[static_cast<std::size_t>(slot)] = b.result;
+      if (friction_) contact_history_[static_cast<std::size_t>(slot)] = b.history;
+    }
+    // A list that held many (the first force evaluation: every contact)
+    // gives its room back; a step's few births keep theirs.
+    if (tc.born.capacity() > kBornListRoom) std::vector<BornContact>().swap(tc.born);
+    tc.born.clear();
+    if (tc.ended.capacity() > kBornListRoom) std::vector<long>().swap(tc.ended);
+  }
 }
 
 }  // namespace dda

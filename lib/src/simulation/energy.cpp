@@ -55,11 +55,12 @@ void Engine::add_friction_energy(Energy& e) const {
   const bool restarts = scene_.contact.friction_update == FrictionUpdate::kPaper;
   const double half_compliance = 0.5 / scene_.contact.kt;
   double work = dropped_friction_work_;
-  for (std::size_t k = 0; k < pair_results_.size(); ++k) {
-    const PairFriction& fr = pair_friction_[k];
-    work += fr.friction_work;
-    if (!pair_loads_[k].active || (restarts && fr.history.sliding)) continue;
-    e.friction_spring += half_compliance * length_squared(pair_results_[k].info.tangential_force);
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+    work += pair_friction_work_[k];
+    if (!pair_loads_[k].active) continue;
+    const std::size_t slot = static_cast<std::size_t>(near_pairs_[k].slot);
+    if (restarts && contact_history_[slot].sliding) continue;
+    e.friction_spring += half_compliance * length_squared(contact_results_[slot].info.tangential_force);
   }
   e.dissipated = work - e.friction_spring;
 }
@@ -72,7 +73,7 @@ void Engine::bank_friction_work(const std::vector<NearPair>& kept) {
   for (std::size_t h = 0; h < near_pairs_.size(); ++h) {
     while (k < kept.size() && before(kept[k], near_pairs_[h])) ++k;
     const bool stays = k < kept.size() && !before(near_pairs_[h], kept[k]);
-    if (!stays) dropped_friction_work_ += pair_friction_[h].friction_work;
+    if (!stays) dropped_friction_work_ += pair_friction_work_[h];
   }
 }
 

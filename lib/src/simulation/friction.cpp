@@ -9,13 +9,13 @@ double Engine::friction_tan(int a, int b) const {
   return friction_tan_table_[static_cast<std::size_t>(group_[a] * group_count_ + group_[b])];
 }
 
-void Engine::pair_friction(PairResult& r, PairFriction& fr, bool was_active, const NormalForce& nf) {
+void Engine::pair_friction(PairResult& r, PairHistory& hist, double& friction_work, bool was_active,
+                           const NormalForce& nf) {
   // Coulomb friction with stick/slide history, Eqs. 24-26. A pair that
   // was not in contact at the last step starts afresh.
   const int cp = r.info.cp, tp = r.info.tp;
   const ContactParams& c = scene_.contact;
   ContactInfo& info = r.info;
-  PairHistory& hist = fr.history;
   Vec2 step_d{};  // this step's Delta d (none for a fresh contact)
   if (was_active) {
     // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at the last pg;
@@ -79,7 +79,7 @@ void Engine::pair_friction(PairResult& r, PairFriction& fr, bool was_active, con
   // CP and -ft on TP do ft . Delta d on the blocks, taken by the trapezoid
   // rule, as velocity Verlet's kinetic energy takes the work of every force
   // (it changes by 1/2 (F^n + F^{n+1}) . Delta x per step, up to O(h^3)).
-  fr.friction_work -= 0.5 * dot(hist.ft + ft, step_d);
+  friction_work -= 0.5 * dot(hist.ft + ft, step_d);
   hist.ft = ft;
   info.tangential_force = ft;
   info.sliding = hist.sliding;

@@ -174,7 +174,7 @@ void Engine::gather_contact_forces(int i) {
     // the second, as the force): only then, so that every other sum keeps
     // its bits.
     if (load.couple != 0.0) g.g23[0] += load.couple;
-    if (bp.first) {
+    if (bp.other > i) {  // block i is the pair's first
       sum.g01 += g.g01;
       sum.g23 += g.g23;
       sum.g45 += g.g45;
@@ -192,6 +192,9 @@ void Engine::gather_contact_forces(int i) {
   // Per block: its contact forces, a^{n+1}, the second half kick, and the
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
+  // Thread 0 first gives the pairs that began to touch their contact
+  // slots (contact_forces.cpp): this phase reads only the pairs' loads.
+  if (thread_index() == 0) merge_contacts();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
     gather_contact_forces(i);

@@ -88,8 +88,10 @@ class Engine {
   friend class dda::Simulation;  // its accessors read the state below
 
   struct PairHistory;   // a pair's friction history
-  struct PairFriction;  // its history and friction work (scenes with friction only)
-  struct PairResult;    // a near pair's contact of the last force evaluation
+  struct PairFriction;  // its history and friction work, as a checkpoint stores it per near pair
+  struct PairResult;    // a touching pair's contact of the last force evaluation
+  struct BornContact;   // a pair that began to touch in the pair loop, until merge_contacts
+  struct alignas(64) ThreadContacts;  // a thread's pairs that began or stopped touching
   struct NearPair;      // a broad-phase pair
   struct PairLoad;      // what a block's force sum reads of a pair
   struct BlockPair;     // an entry of a block's near-pair list
@@ -132,9 +134,11 @@ class Engine {
   bool near_pairs_unchanged() const;  // BroadPhase::kNone: would a rebuild list the same pairs?
   // contact_forces.cpp: per near pair, overlap, IP, contact force
   void pair_forces(bool with_energy);
-  bool pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault);
+  PairResult* pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault,
+                         ThreadContacts& mine);
+  void merge_contacts();  // serial: the slots of the pairs that began or stopped touching
   // friction.cpp
-  void pair_friction(PairResult& r, PairFriction& fr, bool was_active, const NormalForce& nf);
+  void pair_friction(PairResult& r, PairHistory& hist, double& friction_work, bool was_active, const NormalForce& nf);
   double friction_tan(int a, int b) const;
   // guards.cpp, penetration_guard.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
@@ -201,7 +205,6 @@ class Engine {
 
   // Per-block constants and bookkeeping.
   std::vector<double> density_, mass_, h_;  // density follows area: mass_ is conserved
-  std::vector<double> kn_over_h_;  // kn / H of each block (H is fixed at construction), Pa/m
   // The elastic matrix D of each material (Eq. 4), and a zero one last for
   // the boundary polygons; block i's is elastic(i). One per material, not
   // per block: 72 bytes a block fewer at 10^6 blocks.
@@ -221,15 +224,25 @@ class Engine {
   double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m
 
   // Contacts. The broad phase's near pairs (i < j, sorted) each own a
-  // result slot (pair_results_, pair_loads_) that lives as long as the pair
-  // stays near: its friction history stays in place from step to step.
+  // load (pair_loads_) and, with friction, their friction work, as long as
+  // the pair stays near. Only a touching pair (a few in ten of the near
+  // ones) owns a contact slot: its result (contact_results_) and friction
+  // history (contact_history_), kept in place from step to step while it
+  // touches. A pair that begins to touch writes its contact to its thread's
+  // ThreadContacts; merge_contacts (serial, after the pair loop) gives it a
+  // slot and frees the slots of the pairs that stopped touching. A slot's
+  // place never enters a result: each pair's contact is its own, and every
+  // sum over contacts runs in near-pair order.
   // near_pair_offset_ and block_pairs_ list each block's near pairs in
   // increasing order (CSR), so that each block sums its contact forces in
   // that fixed order.
   std::vector<NearPair> near_pairs_;
-  std::vector<PairResult> pair_results_;
-  std::vector<PairFriction> pair_friction_;  // same slots; empty without friction
   std::vector<PairLoad> pair_loads_;
+  std::vector<double> pair_friction_work_;   // per near pair, J/m; empty without friction
+  std::vector<PairResult> contact_results_;  // per slot (NearPair::slot)
+  std::vector<PairHistory> contact_history_;  // per slot; empty without friction
+  std::vector<int> free_slots_;
+  std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
   std::vector<BlockPair> block_pairs_;
   std::vector<ContactInfo> contact_info_;  // active pairs in near-pair order, after each advance
@@ -296,8 +309,9 @@ struct Engine::PairHistory {
   bool sliding = false;
 };
 
-// A near pair's friction state, in its own array (pair_friction_, beside
-// pair_results_) that a frictionless scene never allocates.
+// A near pair's friction state as a checkpoint stores it (the history
+// from its contact slot, a fresh one when it does not touch; the work from
+// pair_friction_work_).
 struct Engine::PairFriction {
   PairHistory history;
   // Work friction took out of the two blocks while this pair was near
@@ -305,8 +319,8 @@ struct Engine::PairFriction {
   double friction_work = 0.0;
 };
 
-// One near pair's contact, computed independently of all others (whether
-// it is a candidate and in contact: its PairLoad).
+// One touching pair's contact, computed independently of all others
+// (whether it is a candidate and in contact: its PairLoad).
 struct Engine::PairResult {
   ContactInfo info;
   double energy = 0.0;  // penalty energy, J/m (set on steps with an energy check)
@@ -325,6 +339,23 @@ struct Engine::PairResult {
 struct Engine::NearPair {
   int i = -1, j = -1;
   int witness = -1;  // separating axis the overlap test found last (-1: none yet)
+  int slot = -1;     // its contact slot while it touches (PairLoad::active), else -1
+};
+
+// A pair that began to touch at this step, kept by its thread until
+// merge_contacts gives it a slot.
+struct Engine::BornContact {
+  long pair = -1;
+  PairResult result;
+  PairHistory history;
+};
+
+// What a thread's share of the pair loop changed in the contact slots,
+// on its own cache lines: the pairs that began to touch and those (with a
+// slot) that stopped.
+struct alignas(64) Engine::ThreadContacts {
+  std::vector<BornContact> born;
+  std::vector<long> ended;
 };
 
 // What the per-block sum reads of each near pair, compact (a PairResult
@@ -337,11 +368,11 @@ struct Engine::PairLoad {
   bool active = false;     // in contact: force, point and the PairResult are this step's
 };
 
-// One entry of a block's near-pair list: the pair, the other block, and
-// whether this block is the pair's first (the force acts on it with +).
+// One entry of block i's near-pair list: the pair and the other block.
+// Block i is the pair's first (the force acts on it with +) when other > i
+// (a near pair is i < j).
 struct Engine::BlockPair {
   int pair = -1, other = -1;
-  bool first = false;
 };
 
 // One flag block per thread, each on its own cache line: set in a

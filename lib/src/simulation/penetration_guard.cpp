@@ -67,8 +67,8 @@ namespace dda {
 double Engine::pair_energy_bound(int a, int b) const {
   // E_max above, J/m, with the areas of now and the inscribed radii of t = 0.
   const double area_a = moments_[a].area, area_b = moments_[b].area;
-  return kn_over_h_[b] * radius_[b] * std::min(0.5 * area_b, area_a) +
-         kn_over_h_[a] * radius_[a] * std::min(0.5 * area_a, area_b);
+  return sides_[b].side.kn_over_h * radius_[b] * std::min(0.5 * area_b, area_a) +
+         sides_[a].side.kn_over_h * radius_[a] * std::min(0.5 * area_a, area_b);
 }
 
 double Engine::approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed, double* mass) const {
@@ -95,9 +95,9 @@ void Engine::check_pairs() const {
   // The first pair in pair order that fails the penetration guard, with
   // what a user can change.
   const StabilityGuards& g = scene_.guards;
-  for (std::size_t k = 0; k < pair_results_.size(); ++k) {
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     if (!pair_loads_[k].active) continue;
-    const PairResult& r = pair_results_[k];
+    const PairResult& r = contact_results_[static_cast<std::size_t>(near_pairs_[k].slot)];
     if (!pair_guard_fault(r)) continue;
     const ContactInfo& c = r.info;
     const int a = c.cp, b = c.tp;

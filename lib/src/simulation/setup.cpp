@@ -225,7 +225,6 @@ void Engine::build_blocks() {
   radius_.assign(n, 0.0);
   reach_radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
-  kn_over_h_.assign(n, 0.0);
   const int boundary_elastic = static_cast<int>(scene_.materials.size());
   elastic_table_.assign(scene_.materials.size() + 1, Mat3::Zero());
   for (std::size_t k = 0; k < scene_.materials.size(); ++k)
@@ -346,8 +345,7 @@ void Engine::choose_potential_length() {
   }
   for (int i = 0; i < block_count(); ++i) {
     h_[i] = c.h_rule == HRule::kInscribedRadius ? inscribed_circle(polygon_view(i)).radius : h;
-    kn_over_h_[i] = c.kn / h_[i];
-    sides_[i].side.kn_over_h = kn_over_h_[i];
+    sides_[i].side.kn_over_h = c.kn / h_[i];
     sides_[i].side.small_edge = c.small_edge_fraction * h_[i];
   }
 }

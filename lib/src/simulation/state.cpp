@@ -109,6 +109,12 @@ constexpr auto pair_load = [](auto& io, auto& l) {
   io(l.candidate);
   io(l.active);
 };
+// A block's near-pair entry as the stream stores it: with whether the
+// block is the pair's first (BlockPair derives it: other > the block).
+struct BlockPairRecord {
+  int pair = -1, other = -1;
+  bool first = false;
+};
 constexpr auto block_pair = [](auto& io, auto& b) {
   io(b.pair);
   io(b.other);
@@ -187,13 +193,36 @@ void Engine::save_state(ByteWriter& w) const {
   w.f64(energy_scale_);
   w.f64(dropped_friction_work_);
 
-  // The broad phase and the near pairs with their history.
+  // The broad phase and the near pairs with their history: per near pair,
+  // its contact (from its slot; a pair not touching has none, and stores a
+  // fresh one, PairResult{} and PairHistory{}, which no step reads) and its
+  // friction state. The slots themselves are not saved: where a contact
+  // sits never enters a result.
   put_list(w, near_pairs_, near_pair);
-  put_list(w, pair_results_, pair_result);
-  put_list(w, pair_friction_, friction_history);
+  {
+    std::vector<PairResult> results(near_pairs_.size());
+    std::vector<PairFriction> friction(friction_ ? near_pairs_.size() : 0);
+    for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+      const int slot = near_pairs_[k].slot;
+      if (slot >= 0) results[k] = contact_results_[static_cast<std::size_t>(slot)];
+      if (!friction_) continue;
+      if (slot >= 0) friction[k].history = contact_history_[static_cast<std::size_t>(slot)];
+      friction[k].friction_work = pair_friction_work_[k];
+    }
+    put_list(w, results, pair_result);
+    put_list(w, friction, friction_history);
+  }
   put_list(w, pair_loads_, pair_load);
   put_list(w, near_pair_offset_, value);
-  put_list(w, block_pairs_, block_pair);
+  {
+    std::vector<BlockPairRecord> records(block_pairs_.size());
+    for (int i = 0; i < block_count(); ++i)
+      for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
+        const BlockPair& b = block_pairs_[static_cast<std::size_t>(q)];
+        records[static_cast<std::size_t>(q)] = {b.pair, b.other, b.other > i};
+      }
+    put_list(w, records, block_pair);
+  }
   put_list(w, contact_info_, contact);
   w.u64(candidate_count_);
   put_list(w, skin_boxes_, box);
@@ -258,20 +287,48 @@ void Engine::restore_state(ByteReader& r) {
     return p;
   });
   const std::size_t pairs = near_pairs_.size();
-  get_list(r, pair_results_, pairs, "the pair results", pair_result);
-  get_list(r, pair_friction_, friction_ ? pairs : 0, "the friction histories", friction_history);
+  std::vector<PairResult> results;
+  std::vector<PairFriction> frictions;
+  get_list(r, results, pairs, "the pair results", pair_result);
+  get_list(r, frictions, friction_ ? pairs : 0, "the friction histories", friction_history);
   get_list(r, pair_loads_, pairs, "the pair loads", pair_load);
+  // The touching pairs' contacts into slots (in pair order); what the
+  // others stored is never read (a pair that begins to touch starts afresh).
+  std::size_t touching = 0;
+  for (const PairLoad& l : pair_loads_) touching += l.active ? 1 : 0;
+  contact_results_.clear();
+  contact_results_.reserve(touching);
+  contact_history_.clear();
+  contact_history_.reserve(friction_ ? touching : 0);
+  free_slots_.clear();
+  pair_friction_work_.assign(friction_ ? pairs : 0, 0.0);
+  for (std::size_t k = 0; k < pairs; ++k) {
+    if (friction_) pair_friction_work_[k] = frictions[k].friction_work;
+    near_pairs_[k].slot = -1;
+    if (!pair_loads_[k].active) continue;
+    near_pairs_[k].slot = static_cast<int>(contact_results_.size());
+    contact_results_.push_back(results[k]);
+    if (friction_) contact_history_.push_back(frictions[k].history);
+  }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
-  const auto read_block_pair = element<BlockPair>(block_pair);
-  r.list(block_pairs_, 9, [&](ByteReader& in) {
-    const BlockPair b = read_block_pair(in);
+  const auto read_block_pair = element<BlockPairRecord>(block_pair);
+  std::vector<BlockPairRecord> records;
+  r.list(records, 9, [&](ByteReader& in) {
+    const BlockPairRecord b = read_block_pair(in);
     if (b.pair < 0 || static_cast<std::size_t>(b.pair) >= pairs || b.other < 0 || b.other >= nb)
       in.fail("a block's pair entry is out of range");
     return b;
   });
-  if (near_pair_offset_.front() != 0 || near_pair_offset_.back() != static_cast<int>(block_pairs_.size()) ||
+  if (near_pair_offset_.front() != 0 || near_pair_offset_.back() != static_cast<int>(records.size()) ||
       !std::is_sorted(near_pair_offset_.begin(), near_pair_offset_.end()))
     r.fail("the block pair offsets do not index the block pair list");
+  block_pairs_.resize(records.size());
+  for (int i = 0; i < nb; ++i)
+    for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
+      const BlockPairRecord& b = records[static_cast<std::size_t>(q)];
+      if (b.first != (b.other > i)) r.fail("a block's pair entry names the wrong first block");
+      block_pairs_[static_cast<std::size_t>(q)] = {b.pair, b.other};
+    }
   const auto read_contact = element<ContactInfo>(contact);
   r.list(contact_info_, 1, [&](ByteReader& in) {
     const ContactInfo c = read_contact(in);

@@ -29,6 +29,7 @@ void Engine::run_steps(std::int64_t count) {
   detail::TeamBarrier barrier;
   barrier_ = &barrier;
   flags_.assign(static_cast<std::size_t>(threads_), ThreadFlags{});
+  if (thread_contacts_.size() < static_cast<std::size_t>(threads_)) thread_contacts_.resize(static_cast<std::size_t>(threads_));
   // Alone, the loop runs outside any parallel region: an OpenMP team of one
   // still pays two futex system calls per region (its start and the single's
   // barrier), as much as a small scene's whole step when it is advanced one
@@ -71,7 +72,9 @@ void Engine::compute_forces() {
   // Serial: the forces at the current state (the constructor's a^0).
   for (int i = 0; i < block_count(); ++i) body_force(i);
   rebuild_near_pairs();
+  if (thread_contacts_.empty()) thread_contacts_.resize(1);
   pair_forces(false);
+  merge_contacts();  // contact_forces.cpp: slots for the pairs in contact
   for (int i = 0; i < block_count(); ++i) gather_contact_forces(i);
   collect_contacts();
 }
@@ -82,7 +85,7 @@ void Engine::collect_contacts() {
   candidate_count_ = 0;
   for (std::size_t k = 0; k < pair_loads_.size(); ++k) {
     candidate_count_ += pair_loads_[k].candidate ? 1 : 0;
-    if (pair_loads_[k].active) contact_info_.push_back(pair_results_[k].info);
+    if (pair_loads_[k].active) contact_info_.push_back(contact_results_[static_cast<std::size_t>(near_pairs_[k].slot)].info);
   }
 }
 
