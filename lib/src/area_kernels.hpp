@@ -18,7 +18,7 @@ namespace dda::detail {
 // their bits as they are; every other vertex is an end of edges 1 to
 // count - 2, so a non-finite vertex still makes the sums non-finite.
 template <int kN = 0>
-AreaMoments green_centroid(const Vec2* v, int n) {
+[[gnu::always_inline]] inline AreaMoments green_centroid(const Vec2* v, int n) {
   const int count = kN ? kN : n;
   AreaMoments m;
   if (count < 3) return m;

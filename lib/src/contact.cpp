@@ -42,6 +42,7 @@ using detail::LaneMask;
 using detail::Lanes;
 using detail::lane_bits;
 using detail::lane_min;
+using detail::upper_lower;
 
 // d[1] < d[0] ? d[1] : d[0]: SSE2's minsd on the swapped pair (the plain
 // form costs GCC a register copy more); elsewhere the plain form.
@@ -50,15 +51,6 @@ inline double across_min(Lanes d) {
   return _mm_cvtsd_f64(_mm_min_sd(_mm_unpackhi_pd(d, d), d));
 #else
   return d[1] < d[0] ? d[1] : d[0];
-#endif
-}
-
-// (a[1], b[0]): the line before each of b's when a holds the pair before b.
-inline Lanes upper_lower(Lanes a, Lanes b) {
-#if defined(__SSE2__)
-  return _mm_shuffle_pd(a, b, 1);
-#else
-  return Lanes{a[1], b[0]};
 #endif
 }
 
@@ -545,7 +537,12 @@ template <int kNc, int kNt>
 [[gnu::always_inline]] inline NormalForce contact_force_ip(const PotentialSide& cp, const PotentialSide& tp,
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
-  const AreaMoments am = detail::green_centroid(ip.v.data(), ip.count);  // area_centroid(ip), inline
+  // area_centroid(ip): inline and unrolled for the common triangles and
+  // quadrilaterals, a call for the rest (the same operations in the same
+  // order: the same bits).
+  const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
+                         : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
+                                         : area_centroid(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   // The sums in locals, the result built once at the end: a NormalForce
   // made first would be zeroed (a string store) and its counters summed
@@ -697,7 +694,9 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
   const PolygonView& p = side.poly;
   const double snap = tol * 1e-3;  // a vertex this close to a cell line is on it
   double total = 0.0;
-  std::array<Vec2, kMaxVertices> ring[2];  // left uninitialised: counts say how many are set
+  // Scratch, not zeroed per call (Vec2's members are initialised): counts
+  // say how many are set.
+  static thread_local std::array<Vec2, kMaxVertices> ring[2];
   std::array<double, kMaxVertices> d;
   for (int i = 0; i < p.count; ++i) {
     const Vec2 ni = p.normal(i);

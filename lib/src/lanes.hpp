@@ -75,6 +75,15 @@ inline Lanes lanes(Vec2 p) { return Lanes{p.x, p.y}; }
 inline Vec2 vec2(Lanes l) { return {l[0], l[1]}; }
 // (l[1], l[0]).
 inline Lanes swapped(Lanes l) { return Lanes{l[1], l[0]}; }
+// (a[1], b[0]): the element before each of b's when a holds the pair
+// before b (two at a time around a polygon: its lines, its normals).
+inline Lanes upper_lower(Lanes a, Lanes b) {
+#if defined(__SSE2__)
+  return _mm_shuffle_pd(a, b, 1);
+#else
+  return Lanes{a[1], b[0]};
+#endif
+}
 // The low lanes (a[0], b[0]) and the high lanes (a[1], b[1]) of two values:
 // the x and the y components of two points.
 inline Lanes low_lanes(Lanes a, Lanes b) { return Lanes{a[0], b[0]}; }

@@ -6,6 +6,7 @@
 
 #include "lanes.hpp"
 #include "ring_kernels.hpp"
+#include "support_kernels.hpp"
 
 namespace dda {
 
@@ -321,15 +322,6 @@ inline void set_labelled_edge(int i, int l, const PolygonView& contact, const Po
   if (source) source[i] = {on_contact, e};
 }
 
-// Cosine of the turn between consecutive edge normals below which a contact
-// corner gets a bevel (dimensionless): dot(n_prev, n) < -cos(30 deg), a turn
-// of more than 150 degrees, i.e. an interior angle theta below 30 degrees.
-// Unbevelled corners (theta >= 30 deg) keep every IP vertex within
-// tol / sin(15 deg) = 3.9 tol of the contact (see clip_target). Why not
-// 60 or 90 degrees (bound 2 or 1.4 tol): joint-set blocks have many corners
-// of 30..60 degrees; bevelling them was 2e6 extra cuts per 3000 steps of the
-// Sect. 6.1 collapse (+11 % run time, measured) against 8e3 below 30 deg.
-constexpr double kBevelCos = -0.86602540378443865;
 
 // One cut of clip_target: the ring in[0..n) with its labels cut by the line
 // through pc with unit normal nc, keeping the inner side. Signed distances
@@ -672,7 +664,7 @@ std::uint32_t sharp_corners_n(const PolygonView& poly) {
   using detail::lanes;
   using detail::low_lanes;
   const int n = kN ? kN : std::min(poly.count, 32);
-  const Lanes bevel{kBevelCos, kBevelCos};
+  const Lanes bevel{detail::kBevelCos, detail::kBevelCos};
   std::uint32_t sharp = 0;
   for (int c = 0; c < n; c += 2) {
     const int d = c + 1 < n ? c + 1 : c;

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dda/overlap.hpp"
+
 #include "area_kernels.hpp"
 #include "lanes.hpp"
 #include "ring_kernels.hpp"
+#include "support_kernels.hpp"
 
 namespace dda {
 
@@ -46,9 +49,12 @@ using detail::Lanes;
 // (lane_min skips a NaN as std::min(m, l2) does; squares are never -0, so
 // the two lanes' minima combine to the minimum over all edges whatever the
 // order). kN: the vertex count when known at compile time (0: poly.count),
-// so that a quadrilateral's loop is unrolled.
+// so that a quadrilateral's loop is unrolled. support (optional): also
+// writes support_lines()' pairs (Eq. 9's edge lines: lane by lane the
+// normals just made and n . v of the edges' start vertices, as
+// support_lines computes them from the stored normals: the same bits).
 template <int kN>
-Lanes edge_normals(const PolygonSpan& poly) {
+[[gnu::always_inline]] inline Lanes edge_normals(const PolygonSpan& poly, SupportLines::Pair* support = nullptr) {
   using detail::high_lanes;
   using detail::lanes;
   using detail::low_lanes;
@@ -57,6 +63,7 @@ Lanes edge_normals(const PolygonSpan& poly) {
   Lanes min2{DBL_MAX, DBL_MAX};
   for (int i = 0; i < count; i += 2) {
     const int j = i + 1 < count ? i + 1 : i;
+    const Lanes vi = lanes(poly.v[i]), vj = lanes(poly.v[j]);
     const Lanes ei = edge(i), ej = edge(j);
     const Lanes ex = low_lanes(ei, ej), ey = high_lanes(ei, ej);
     const Lanes l2 = ex * ex + ey * ey;
@@ -66,6 +73,15 @@ Lanes edge_normals(const PolygonSpan& poly) {
     poly.n[static_cast<std::size_t>(i)] = {nx[0], ny[0]};
     poly.n[static_cast<std::size_t>(j)] = {nx[1], ny[1]};
     min2 = detail::lane_min(min2, l2);
+    if (support) {
+      // support_lines' pair i / 2 (edges i and j): the normals as stored,
+      // the offsets dot(n, v) of the edges' start vertices per lane.
+      SupportLines::Pair& g = support[i / 2];
+      const Lanes off = nx * low_lanes(vi, vj) + ny * high_lanes(vi, vj);
+      __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
+      __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
+      __builtin_memcpy(g.off, &off, sizeof(Lanes));
+    }
   }
   return min2;
 }
@@ -263,13 +279,15 @@ Aabb bounds(PolygonView poly) { return bounds_n<0>(poly); }
 
 namespace {
 
-// update_polygon_geometry for kN vertices (0: poly.count).
-template <int kN>
-PolygonGeometry polygon_geometry(const PolygonSpan& poly) {
+// update_polygon_geometry for kN vertices (0: poly.count); kFacts: also
+// the support lines and, from their normals, the sharp corners.
+template <int kN, bool kFacts>
+PolygonGeometry polygon_geometry(const PolygonSpan& poly, SupportLines::Pair* support, std::uint32_t* sharp) {
   const int count = kN ? kN : poly.count;
   PolygonGeometry g;
-  const Lanes min2 = edge_normals<kN>(poly);
+  const Lanes min2 = edge_normals<kN>(poly, kFacts ? support : nullptr);
   g.min_edge2 = std::min(min2[0], min2[1]);
+  if (kFacts) *sharp = detail::sharp_corners_lines<kN>(support, count);
   g.moments = green_moments<kN>(poly.v, count);
   g.box = bounds_n<kN>(poly);
   return g;
@@ -278,8 +296,19 @@ PolygonGeometry polygon_geometry(const PolygonSpan& poly) {
 }  // namespace
 
 PolygonGeometry update_polygon_geometry(PolygonSpan poly) {
-  if (poly.count == 4) return polygon_geometry<4>(poly);
-  return polygon_geometry<0>(poly);
+  if (poly.count == 4) return polygon_geometry<4, false>(poly, nullptr, nullptr);
+  return polygon_geometry<0, false>(poly, nullptr, nullptr);
+}
+
+// Flattened: the kernels above inline (no call per block and step).
+[[gnu::flatten]] PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support,
+                                                         std::uint32_t& sharp) {
+  if (poly.count == 4) return polygon_geometry<4, true>(poly, support, &sharp);
+  if (poly.count < 3 || poly.count > kMaxBlockVertices) {  // no support lines: sharp_corners
+    sharp = sharp_corners(poly);
+    return polygon_geometry<0, false>(poly, nullptr, nullptr);
+  }
+  return polygon_geometry<0, true>(poly, support, &sharp);
 }
 
 double diameter(PolygonView poly) {
@@ -309,11 +338,6 @@ double perimeter(PolygonView poly) {
 
 double geometric_tolerance(PolygonView poly) { return geometric_tolerance(bounds(poly)); }
 
-double geometric_tolerance(const Aabb& b) {
-  const double coord = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
-  const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
-  return kRoundoffUlps * DBL_EPSILON * (coord + size);
-}
 
 PointLocation locate_point(PolygonView poly, Vec2 p, double tol) {
   if (tol < 0.0) tol = geometric_tolerance(poly);

@@ -141,6 +141,12 @@ constexpr int support_line_pairs(int count) {
 // kMaxBlockVertices; others: nothing).
 void support_lines(const PolygonView& poly, SupportLines::Pair* out);
 inline void support_lines(const PolygonView& poly, SupportLines& out) { support_lines(poly, out.pair.data()); }
+// update_polygon_geometry(poly) and, in the same pass over the edges,
+// support_lines(poly, support) and sharp = sharp_corners(poly) (defined in
+// polygon.cpp; the same bits): a simulation's per-block update, with the
+// normals at hand. A polygon support_lines writes nothing for leaves
+// support as it is.
+PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support, std::uint32_t& sharp);
 
 // The overlap verdict and, when overlapping, the intersection polygon with
 // its edge sources, in one pass (the hot path of a contact pair). The

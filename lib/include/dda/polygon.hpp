@@ -2,8 +2,10 @@
 // moments (for the DDA mass matrix, Paper A Eq. 5a), bounds, point location,
 // and cutting by a line. Nothing here allocates.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cfloat>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 #include "dda/vec2.hpp"
@@ -160,8 +162,13 @@ double perimeter(PolygonView poly);
 // bounding box (not the diameter: the box is at hand per step, and it is
 // within a factor sqrt(2) of the diameter). Scales with offsets and size.
 double geometric_tolerance(PolygonView poly);
-// The same from the polygon's bounds (a caller that has them).
-double geometric_tolerance(const Aabb& bounds);
+// The same from the polygon's bounds (a caller that has them; inline: a
+// simulation takes it per block and step).
+inline double geometric_tolerance(const Aabb& b) {
+  const double coord = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
+  const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+  return kRoundoffUlps * DBL_EPSILON * (coord + size);
+}
 
 // What a moved block needs of its polygon at every step, in one call: the
 // normals (recomputed in place, as update_normals), the area moments and

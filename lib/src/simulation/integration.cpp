@@ -39,7 +39,10 @@ template <class Prefetch, class Each>
   return share.team && share.end > share.begin ? seconds_since(t0) / (share.end - share.begin) : -1.0;
 }
 
-void Engine::move_blocks() {
+// Flattened (as gather_and_kick): the per-block steps of this file
+// (update_block_geometry, body_force) inline in the block loop, no call
+// frames per block; the kernels of other files stay calls.
+[[gnu::flatten]] void Engine::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
   // block's geometry, its body forces, and whether its box left its grown
   // box (the broad phase's list then needs a rebuild).
@@ -100,11 +103,13 @@ void Engine::update_geometry() {
 }
 
 void Engine::update_block_geometry(int i) {
-  const PolygonGeometry g = update_polygon_geometry(polygon_span(i));
+  // The polygon's normals, moments and box, and with the normals at hand
+  // block_facts' sharp corners and support lines (the same bits).
+  const std::size_t b = static_cast<std::size_t>(i);
+  const PolygonGeometry g = update_polygon_geometry(polygon_span(i), support_[b], sharp_corners_[b]);
   moments_[i] = g.moments;
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
-  block_facts(i);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     // Without a small edge the bisectors are the vertex rays, the same list
     // from step to step: rebuilt only when a small edge comes or goes. The
@@ -183,7 +188,7 @@ void Engine::gather_contact_forces(int i) {
   reach_radius_[i] = reach;
 }
 
-void Engine::gather_and_kick() {
+[[gnu::flatten]] void Engine::gather_and_kick() {
   // Per block: its contact forces, a^{n+1}, the second half kick, and the
   // per-block guards (flagged here, reported by check_state).
   bool failed = false;
