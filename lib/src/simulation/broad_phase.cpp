@@ -168,7 +168,7 @@ void Engine::rebuild_near_pairs() {
 
 std::size_t Engine::bytes_per_near_pair() const {
   // A near pair's own state; a touching pair's contact slot is apart
-  // (sizeof(PairResult), with friction + sizeof(PairHistory)).
+  // (sizeof(ContactSlot): the result and the friction history).
   return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(BlockPair) + (friction_ ? sizeof(double) : 0);
 }
 

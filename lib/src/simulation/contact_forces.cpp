@@ -54,8 +54,9 @@ constexpr std::size_t kBornListRoom = 256;
   PairResult* result;
   PairHistory* history;
   if (slot >= 0) {
-    result = &contact_results_[static_cast<std::size_t>(slot)];
-    history = friction_ ? &contact_history_[static_cast<std::size_t>(slot)] : nullptr;
+    ContactSlot& s = contact_slots_[static_cast<std::size_t>(slot)];
+    result = &s.result;
+    history = friction_ ? &s.history : nullptr;
   } else {
     mine.born.emplace_back();
     BornContact& b = mine.born.back();
@@ -227,18 +228,15 @@ void Engine::merge_contacts() {
         slot = free_slots_.back();
         free_slots_.pop_back();
       } else {
-        slot = static_cast<int>(contact_results_.size());
-        if (contact_results_.size() == contact_results_.capacity()) {
-          const std::size_t room = contact_results_.size() + contact_results_.size() / 8 + 16;
-          contact_results_.reserve(room);
-          if (friction_) contact_history_.reserve(room);
-        }
-        contact_results_.emplace_back();
-        if (friction_) contact_history_.emplace_back();
+        slot = static_cast<int>(contact_slots_.size());
+        if (contact_slots_.size() == contact_slots_.capacity())
+          contact_slots_.reserve(contact_slots_.size() + contact_slots_.size() / 8 + 16);
+        contact_slots_.emplace_back();
       }
       near_pairs_[static_cast<std::size_t>(b.pair)].slot = slot;
-      contact_results_[static_cast<std::size_t>(slot)] = b.result;
-      if (friction_) contact_history_[static_cast<std::size_t>(slot)] = b.history;
+      ContactSlot& s = contact_slots_[static_cast<std::size_t>(slot)];
+      s.result = b.result;
+      s.history = friction_ ? b.history : PairHistory{};
     }
     // A list that held many (the first force evaluation: every contact)
     // gives its room back; a step's few births keep theirs.

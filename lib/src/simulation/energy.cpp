@@ -59,8 +59,8 @@ void Engine::add_friction_energy(Energy& e) const {
     work += pair_friction_work_[k];
     if (!pair_loads_[k].active) continue;
     const std::size_t slot = static_cast<std::size_t>(near_pairs_[k].slot);
-    if (restarts && contact_history_[slot].sliding) continue;
-    e.friction_spring += half_compliance * length_squared(contact_results_[slot].info.tangential_force);
+    if (restarts && contact_slots_[slot].history.sliding) continue;
+    e.friction_spring += half_compliance * length_squared(contact_slots_[slot].result.info.tangential_force);
   }
   e.dissipated = work - e.friction_spring;
 }

@@ -151,7 +151,7 @@ void Engine::check_state(bool energy_due) {
     // energy() with this step's stored contact energies, in pair order.
     Energy e = block_energy();
     for (std::size_t k = 0; k < pair_loads_.size(); ++k)
-      if (pair_loads_[k].active) e.contact += contact_results_[static_cast<std::size_t>(near_pairs_[k].slot)].energy;
+      if (pair_loads_[k].active) e.contact += contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result.energy;
     energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
     const double scale = std::max(energy_scale_, DBL_MIN);
     // The block reported: the one with the largest translational kinetic energy.

@@ -97,7 +97,7 @@ void Engine::check_pairs() const {
   const StabilityGuards& g = scene_.guards;
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     if (!pair_loads_[k].active) continue;
-    const PairResult& r = contact_results_[static_cast<std::size_t>(near_pairs_[k].slot)];
+    const PairResult& r = contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result;
     if (!pair_guard_fault(r)) continue;
     const ContactInfo& c = r.info;
     const int a = c.cp, b = c.tp;

@@ -204,9 +204,9 @@ void Engine::save_state(ByteWriter& w) const {
     std::vector<PairFriction> friction(friction_ ? near_pairs_.size() : 0);
     for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
       const int slot = near_pairs_[k].slot;
-      if (slot >= 0) results[k] = contact_results_[static_cast<std::size_t>(slot)];
+      if (slot >= 0) results[k] = contact_slots_[static_cast<std::size_t>(slot)].result;
       if (!friction_) continue;
-      if (slot >= 0) friction[k].history = contact_history_[static_cast<std::size_t>(slot)];
+      if (slot >= 0) friction[k].history = contact_slots_[static_cast<std::size_t>(slot)].history;
       friction[k].friction_work = pair_friction_work_[k];
     }
     put_list(w, results, pair_result);
@@ -296,19 +296,16 @@ void Engine::restore_state(ByteReader& r) {
   // others stored is never read (a pair that begins to touch starts afresh).
   std::size_t touching = 0;
   for (const PairLoad& l : pair_loads_) touching += l.active ? 1 : 0;
-  contact_results_.clear();
-  contact_results_.reserve(touching);
-  contact_history_.clear();
-  contact_history_.reserve(friction_ ? touching : 0);
+  contact_slots_.clear();
+  contact_slots_.reserve(touching);
   free_slots_.clear();
   pair_friction_work_.assign(friction_ ? pairs : 0, 0.0);
   for (std::size_t k = 0; k < pairs; ++k) {
     if (friction_) pair_friction_work_[k] = frictions[k].friction_work;
     near_pairs_[k].slot = -1;
     if (!pair_loads_[k].active) continue;
-    near_pairs_[k].slot = static_cast<int>(contact_results_.size());
-    contact_results_.push_back(results[k]);
-    if (friction_) contact_history_.push_back(frictions[k].history);
+    near_pairs_[k].slot = static_cast<int>(contact_slots_.size());
+    contact_slots_.push_back({results[k], friction_ ? frictions[k].history : PairHistory{}});
   }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
   const auto read_block_pair = element<BlockPairRecord>(block_pair);

@@ -89,7 +89,7 @@ void Engine::collect_contacts() {
   candidate_count_ = 0;
   for (std::size_t k = 0; k < pair_loads_.size(); ++k) {
     candidate_count_ += pair_loads_[k].candidate ? 1 : 0;
-    if (pair_loads_[k].active) contact_info_.push_back(contact_results_[static_cast<std::size_t>(near_pairs_[k].slot)].info);
+    if (pair_loads_[k].active) contact_info_.push_back(contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result.info);
   }
 }
 
