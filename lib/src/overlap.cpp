@@ -104,7 +104,7 @@ struct EdgeLanes {
   const Vec2 n0 = p.normal(j0), n1 = p.normal(j1), v0 = p.vertex(j0), v1 = p.vertex(j1);
   nx = Lanes{n0.x, n1.x};
   ny = Lanes{n0.y, n1.y};
-  off = nx * Lanes{v0.x, v1.x} + ny * Lanes{v0.y, v1.y};  // dot(n, v) per lane
+  off = detail::support_offsets(nx, ny, Lanes{v0.x, v1.x}, Lanes{v0.y, v1.y});
 }
 
 // Fills the first `pairs` = (count + 1) / 2 pairs of e from polygon p, or
@@ -116,9 +116,9 @@ template <int kN>
   if (given) {
     for (int k = 0; k < (kN ? (kN + 1) / 2 : pairs); ++k) {
       const SupportLines::Pair& g = given[k];
-      __builtin_memcpy(&e.nx[k], g.nx, sizeof(Lanes));
-      __builtin_memcpy(&e.ny[k], g.ny, sizeof(Lanes));
-      __builtin_memcpy(&e.off[k], g.off, sizeof(Lanes));
+      e.nx[k] = detail::load_lanes(g.nx);
+      e.ny[k] = detail::load_lanes(g.ny);
+      e.off[k] = detail::load_lanes(g.off);
     }
     return;
   }
@@ -632,10 +632,7 @@ void support_lines_n(const PolygonView& p, SupportLines::Pair* out) {
   for (int k = 0; k < (n + 1) / 2; ++k) {
     Lanes nx, ny, off;
     support_pair(p, n, k, nx, ny, off);
-    SupportLines::Pair& g = out[k];
-    __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
-    __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
-    __builtin_memcpy(g.off, &off, sizeof(Lanes));
+    detail::store_support_pair(out[k], nx, ny, off);
   }
 }
 

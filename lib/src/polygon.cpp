@@ -76,11 +76,8 @@ template <int kN>
     if (support) {
       // support_lines' pair i / 2 (edges i and j): the normals as stored,
       // the offsets dot(n, v) of the edges' start vertices per lane.
-      SupportLines::Pair& g = support[i / 2];
-      const Lanes off = nx * low_lanes(vi, vj) + ny * high_lanes(vi, vj);
-      __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
-      __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
-      __builtin_memcpy(g.off, &off, sizeof(Lanes));
+      detail::store_support_pair(support[i / 2], nx, ny,
+                                 detail::support_offsets(nx, ny, low_lanes(vi, vj), high_lanes(vi, vj)));
     }
   }
   return min2;

@@ -19,6 +19,27 @@ namespace dda::detail {
 // Sect. 6.1 collapse (+11 % run time, measured) against 8e3 below 30 deg.
 constexpr double kBevelCos = -0.86602540378443865;
 
+// Eq. 9's support offsets of an edge pair, lane by lane: dot(n, v) of each
+// edge's normal (nx, ny) and start vertex (vx, vy). The one formula for the
+// overlap test's own lanes, support_lines() and the block geometry update,
+// so that lines kept by a caller are the test's bits.
+[[gnu::always_inline]] inline Lanes support_offsets(Lanes nx, Lanes ny, Lanes vx, Lanes vy) {
+  return nx * vx + ny * vy;
+}
+
+// A support-line pair as SupportLines keeps it (plain arrays) from lanes,
+// and back.
+[[gnu::always_inline]] inline void store_support_pair(SupportLines::Pair& g, Lanes nx, Lanes ny, Lanes off) {
+  __builtin_memcpy(g.nx, &nx, sizeof(Lanes));
+  __builtin_memcpy(g.ny, &ny, sizeof(Lanes));
+  __builtin_memcpy(g.off, &off, sizeof(Lanes));
+}
+[[gnu::always_inline]] inline Lanes load_lanes(const double* a) {
+  Lanes l;
+  __builtin_memcpy(&l, a, sizeof(Lanes));
+  return l;
+}
+
 // sharp_corners_n from the support lines' normals, pair k (edges 2k and
 // 2k + 1) giving corners 2k and 2k + 1: lane by lane the dot products of
 // edges (2k - 1, 2k) and (2k, 2k + 1), the same operations in the same
@@ -28,15 +49,10 @@ template <int kN>
 inline std::uint32_t sharp_corners_lines(const SupportLines::Pair* lines, int count) {
   const int n = kN ? kN : count, pairs = (n + 1) / 2;
   const Lanes bevel{kBevelCos, kBevelCos};
-  const auto load = [](const double* a) {
-    Lanes l;
-    __builtin_memcpy(&l, a, sizeof(Lanes));
-    return l;
-  };
-  Lanes px = load(lines[pairs - 1].nx), py = load(lines[pairs - 1].ny);  // the pair before pair 0
+  Lanes px = load_lanes(lines[pairs - 1].nx), py = load_lanes(lines[pairs - 1].ny);  // the pair before pair 0
   std::uint32_t sharp = 0;
   for (int k = 0; k < pairs; ++k) {
-    const Lanes qx = load(lines[k].nx), qy = load(lines[k].ny);
+    const Lanes qx = load_lanes(lines[k].nx), qy = load_lanes(lines[k].ny);
     const Lanes dots = upper_lower(px, qx) * qx + upper_lower(py, qy) * qy;
     sharp |= lane_bits(dots < bevel) << (2 * k);
     px = qx;
