@@ -4,6 +4,8 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "dda/overlap.hpp"
@@ -116,6 +118,48 @@ TEST_CASE("a sliver thinner than tol is touching, never overlapping without an I
     CHECK(overlap_state(cp, tp, tol) == s);
     CHECK(intersection_polygon(cp, tp, tol).count == ip.count);
   }
+}
+
+TEST_CASE("the block geometry update's support lines and sharp corners are support_lines' and sharp_corners' bits",
+          "[overlap]") {
+  // A simulation builds each block's support lines and sharp corners in the
+  // edge-normal pass of its geometry update; a restored one builds them
+  // from the stored normals with support_lines and sharp_corners. Both must
+  // give the same bits, for every count a block may have and corners on
+  // both sides of the bevel angle, and the geometry must be the plain
+  // update's.
+  int with_sharp = 0, without_sharp = 0;
+  for (int n = 3; n <= kMaxBlockVertices; ++n) {
+    for (int s = 0; s < 8; ++s) {
+      // An n-gon on an ellipse, flatter with s: the flat ones have corners
+      // far below 30 degrees at their ends.
+      const double squash = std::pow(0.35, s);
+      std::vector<Vec2> v;
+      for (int k = 0; k < n; ++k) {
+        const double a = 0.3 * s + 2.0 * 3.141592653589793 * k / n;
+        v.push_back({3.0 + 2.0 * std::cos(a), -1.0 + 2.0 * squash * std::sin(a)});
+      }
+      Polygon plain = make_polygon(v.data(), n);
+      Polygon fused = plain;
+      const PolygonGeometry g0 = update_polygon_geometry(plain);
+      const std::size_t pairs = static_cast<std::size_t>(support_line_pairs(n));
+      std::vector<SupportLines::Pair> lines(pairs + 1), expect(pairs);
+      lines.back().off[0] = 12345.0;  // a sentinel the update must leave alone
+      std::uint32_t sharp = ~0u;
+      const PolygonGeometry g1 = update_polygon_geometry(fused, lines.data(), sharp);
+      CHECK(std::memcmp(&g0, &g1, sizeof g0) == 0);
+      CHECK(std::memcmp(plain.n.data(), fused.n.data(), sizeof(Vec2) * static_cast<std::size_t>(n)) == 0);
+      support_lines(plain, expect.data());
+      CHECK(std::memcmp(lines.data(), expect.data(), sizeof(SupportLines::Pair) * pairs) == 0);
+      CHECK(lines.back().off[0] == 12345.0);
+      const std::uint32_t want = sharp_corners(plain);
+      CHECK(sharp == want);
+      ++(want ? with_sharp : without_sharp);
+    }
+  }
+  // Both kinds of polygon were met (the comparison is not of zeros only).
+  CHECK(with_sharp > 20);
+  CHECK(without_sharp > 20);
 }
 
 TEST_CASE("support lines kept by the caller give the overlap test's bits", "[overlap]") {
