@@ -32,8 +32,8 @@
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
 // --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~1.5 kB of heap per block
-// constructed and ~2.3 kB at the end of the run (the touching pairs' contact
-// slots): ~2.3 GB per simulation at 10^6, two of them alive at once for the
+// constructed and ~1.9 kB at the end of the run (the touching pairs' contact
+// slots): ~1.9 GB per simulation at 10^6, two of them alive at once for the
 // 1- and 2-thread runs); --min-blocks N leaves out the rows below N, --max-threads 1
 // runs each row with 1 thread only (the 10^6 row in half the time). A table
 // of blocks, pairs per step, wall and CPU us per step, ns per block-step and
@@ -225,7 +225,7 @@ void sampled_advance(dda::Simulation& sim, int steps, double& candidates, double
     const int n = std::min(kSampleEvery, steps - k);
     sim.advance(n);
     candidates += n * static_cast<double>(sim.candidate_count());
-    touching += n * static_cast<double>(sim.contacts().size());
+    touching += n * static_cast<double>(sim.contact_count());
   }
 }
 
@@ -367,7 +367,7 @@ ThreadRuns run_thread_counts(const dda::Scene& scene, int warmup, int steps, int
       out.near_pairs_per_block = static_cast<double>(near_pairs) / sim->scene_block_count();
       out.bytes_per_near_pair = sim->bytes_per_near_pair();
       out.construct_s = construct_s;
-      const double touching = static_cast<double>(sim->contacts().size());
+      const double touching = static_cast<double>(sim->contact_count());
       const double end = heap_bytes();
       out.growth_per_touching = touching > 0.0 ? (end - built) / touching : 0.0;
       out.end_bytes_per_block = (end - before) / sim->scene_block_count();
@@ -734,7 +734,7 @@ int run_skips(const Options& o) {
     const double built = heap_bytes();
     const int whole = static_cast<int>(std::lround(r.scene.duration / r.scene.dt));
     const RunStats st = r.whole_run ? timed_run(sim, 1, 0, whole) : timed_run(sim, 1, o.warmup, o.steps);
-    const double touching = static_cast<double>(sim.contacts().size());
+    const double touching = static_cast<double>(sim.contact_count());
     const double cpu_us = 1e6 * st.cpu_s / static_cast<double>(st.steps);
     // Per touching pair only where a pair touches on most steps (the squares touch for ~2 % of theirs).
     char per_touch[32] = "-", per_touch_heap[32] = "-";
@@ -791,7 +791,7 @@ int run_window(const Options& o) {
   sim.set_threads(1);
   sim.advance_to(o.window);
   std::printf("window %.3g s: %lld steps, %zu touching pairs at the end, guards %s, state fingerprint %016llx\n",
-              o.window, static_cast<long long>(sim.step_count()), sim.contacts().size(), o.no_guards ? "off" : "on",
+              o.window, static_cast<long long>(sim.step_count()), sim.contact_count(), o.no_guards ? "off" : "on",
               static_cast<unsigned long long>(state_fingerprint(sim)));
   return 0;
 }

@@ -73,6 +73,8 @@ void check_round_trip(const Scene& s, int before, int after, int threads) {
   CHECK(a.dissipated == b.dissipated);
   CHECK(a.friction_spring == b.friction_spring);
   CHECK(original.contacts().size() == restored.contacts().size());
+  CHECK(restored.contact_count() == restored.contacts().size());
+  CHECK(original.contact_count() == original.contacts().size());
   CHECK(original.broad_phase_rebuilds() == restored.broad_phase_rebuilds());
 }
 

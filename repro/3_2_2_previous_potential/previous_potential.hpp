@@ -163,7 +163,7 @@ inline Impact impact_depth(const dda::paper::SmallEdgeImpact& si) {
   r.lower_depth = sub_polygons(sim.polygon(si.lower)).depth;
   while (sim.time() < si.scene.duration - 0.5 * sim.dt()) {
     sim.step();
-    if (sim.contacts().empty()) continue;
+    if (sim.contact_count() == 0) continue;
     ++r.contact_steps;
     const dda::Polygon& lo = sim.polygon(si.lower);
     const dda::Polygon ip = dda::intersection_polygon(lo, sim.polygon(si.upper));

@@ -60,7 +60,7 @@ inline Result run(const dda::Scene& scene, repro::TableWriter<Sample>* table) {
   while (sim.time() < scene.duration) {
     sim.step();
     r.worst_momentum = std::max(r.worst_momentum, std::fabs(sim.momentum().x - p0) / std::fabs(p0));
-    if (!sim.contacts().empty()) {
+    if (sim.contact_count() > 0) {
       if (r.t_first < 0.0) r.t_first = sim.time();
       r.t_last = sim.time();
     }

@@ -56,7 +56,7 @@ inline Run run(double b_height, dda::HRule rule, const std::string& label, void 
     r.max_mirror = std::max(r.max_mirror, dda::paper::mirror_symmetry_error(sim, bb.falling, 0.0));
     const double dy = sim.centroid(bb.falling).y - y0;
     // Phase 0 falling, 1 first contact, 2 first flight after it, 3 later.
-    const bool touching = !sim.contacts().empty();
+    const bool touching = sim.contact_count() > 0;
     if ((phase == 0 && touching) || (phase == 1 && !touching) || (phase == 2 && touching)) ++phase;
     if (phase == 2) {
       r.first_rebound = std::max(r.first_rebound, dy);

@@ -105,7 +105,7 @@ inline Result run(const dda::paper::SmallEdgeImpact& si, int case_id, repro::Tab
   }
   if (snaps) write_snapshot(*snaps, sim, case_id);
   r.stats = mon.stats();
-  r.apart_at_end = sim.contacts().empty();
+  r.apart_at_end = sim.contact_count() == 0;
   r.vertex_end = sim.polygon(si.upper).vertex(si.contact_vertex);
   r.seconds = clock.elapsed_seconds();
   return r;

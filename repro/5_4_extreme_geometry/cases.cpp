@@ -34,8 +34,8 @@ Outcome attempt(const Case& c, double dt, bool motion_guard, dda::Integration in
     dda::paper::RunMonitor mon(sim, c.a, c.b);
     bool touched = false;
     auto watch = [&] {
-      if (!sim.contacts().empty()) touched = true;
-      if (touched && sim.contacts().empty() && o.first_release_asymmetry < 0.0 && c.asymmetry)
+      if (sim.contact_count() > 0) touched = true;
+      if (touched && sim.contact_count() == 0 && o.first_release_asymmetry < 0.0 && c.asymmetry)
         o.first_release_asymmetry = c.asymmetry(sim);
       for (const dda::ContactInfo& ci : sim.contacts()) {
         const Vec2 f = ci.cp == c.pushed ? ci.normal_force : (ci.tp == c.pushed ? -1.0 * ci.normal_force : Vec2{});
@@ -69,14 +69,14 @@ Outcome attempt(const Case& c, double dt, bool motion_guard, dda::Integration in
       why.push_back("pierced: A's base went " + format_short(c.floor_y - lowest, 3) +
                     " m below B's bottom (through B's whole thickness), the normal force on A never pointing down, "
                     "A rebounding at up to " + format_short(max_up, 3) + " m/s");
-    if (c.apart_at_end && !sim.contacts().empty()) why.push_back("still in contact at the end");
+    if (c.apart_at_end && sim.contact_count() > 0) why.push_back("still in contact at the end");
     if (!(o.energy_error < 0.01)) why.push_back("energy error " + format_short(o.energy_error, 3) + " > 1 %");
     if (c.asymmetry && !(asym < 1e-9)) why.push_back("asymmetry " + format_short(asym, 3) + " m > 1e-9 m");
     o.flip = min_push < -1e-6 || wrong_side;
     o.pierced = !o.flip && lowest < c.floor_y;
     o.energy_bad = !(o.energy_error < 0.01);
     o.asymmetric = c.asymmetry && !(asym < 1e-9);
-    o.still_touching = c.apart_at_end && !sim.contacts().empty();
+    o.still_touching = c.apart_at_end && sim.contact_count() > 0;
     o.min_push = min_push;
     o.below = lowest < c.floor_y ? c.floor_y - lowest : 0.0;
     o.max_up = max_up;

@@ -45,7 +45,7 @@ void Conservation::begin(const dda::Simulation& sim) {
 void Conservation::step(const dda::Simulation& sim) {
   const dda::Energy e = sim.energy();
   e_mech = std::max(e_mech, e.kinetic + e.strain + e.contact);
-  double& d = sim.contacts().empty() ? de : de_contact;
+  double& d = sim.contact_count() == 0 ? de : de_contact;
   d = std::max(d, std::fabs(e.total() - e0));
   dp = std::max(dp, dda::length(sim.momentum() - p0));
 }

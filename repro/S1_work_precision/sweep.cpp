@@ -107,7 +107,7 @@ RunOut monitored_run(const Case& c, double dt, bool observe) {
     for (long k = 1; k <= total; ++k) {
       sim.step();
       if (observe) obs.step(sim);
-      if (k % ratio_every == 0 && !sim.contacts().empty())
+      if (k % ratio_every == 0 && sim.contact_count() > 0)
         r.ratio_max = std::max(r.ratio_max, dt / sim.critical_time_step());
       if (k % per_sample == 0) {
         r.samples.push_back(repro::stab::vertex_state(sim));

@@ -42,7 +42,7 @@ Lines lines_for(const MapScene& m, double kn) {
         fmax = f;
         peak = sim.step_count();
       }
-      if (!sim.contacts().empty()) l.current_min = std::min(l.current_min, sim.critical_time_step());
+      if (sim.contact_count() > 0) l.current_min = std::min(l.current_min, sim.critical_time_step());
     }
   } catch (const dda::SimulationError&) {
     // A soft kn lets the blocks pass through each other even at 0.05 of the

@@ -70,7 +70,7 @@ MapRun map_run(const MapScene& m, double kn, double dt, bool balance_guard) {
       sim.step();
       const double growth = (sim.energy().total() - e0) / m.impact_energy;
       r.max_growth = std::max(r.max_growth, growth);
-      if (!sim.contacts().empty()) r.ratio_max = std::max(r.ratio_max, dt / sim.critical_time_step());
+      if (sim.contact_count() > 0) r.ratio_max = std::max(r.ratio_max, dt / sim.critical_time_step());
     }
   } catch (const dda::SimulationError& e) {
     r.message = e.what();

@@ -114,8 +114,8 @@ bool unstable(dda::Scene s, double dt, int steps) {
     std::size_t resting_contacts = 0;
     for (int k = 0; k < steps; ++k) {
       sim.step();
-      if (k == 0) resting_contacts = sim.contacts().size();
-      if (sim.contacts().size() < resting_contacts) return true;  // the rest state is lost: a contact opened
+      if (k == 0) resting_contacts = sim.contact_count();
+      if (sim.contact_count() < resting_contacts) return true;  // the rest state is lost: a contact opened
       if (k % 50 != 0) continue;
       const dda::Energy e = sim.energy();
       const double m = e.kinetic + e.strain + e.contact;

@@ -54,7 +54,7 @@ Result run(const dda::Scene& s) {
   try {
     for (long k = 0; k < steps; ++k) {
       sim.step();
-      if (!sim.contacts().empty()) touched = true;
+      if (sim.contact_count() > 0) touched = true;
       else if (touched) break;  // the contact is over: bounced or through
     }
   } catch (const dda::SimulationError& e) {
@@ -65,7 +65,7 @@ Result run(const dda::Scene& s) {
   }
   const bool crossed = sim.centroid(0).x > sim.centroid(1).x;
   if (r.message.empty())
-    r.cls = crossed ? Cell::kPassed : !touched ? Cell::kMissed : !sim.contacts().empty() ? Cell::kStuck : Cell::kBounced;
+    r.cls = crossed ? Cell::kPassed : !touched ? Cell::kMissed : sim.contact_count() > 0 ? Cell::kStuck : Cell::kBounced;
   else if (crossed) r.cls = Cell::kPassed;  // a stop after the blocks crossed is too late
   if (r.cls == Cell::kBounced) r.final_state = repro::stab::vertex_state(sim);
   return r;

@@ -173,9 +173,14 @@ class Simulation {
 
   Vec2 momentum() const;
   Energy energy() const;  // recomputes contact energy: call at output time
-  const std::vector<ContactInfo>& contacts() const;
+  // The contacts of the last force evaluation in pair order ((cp, tp)
+  // increasing), built at each call from the pairs' state (the simulation
+  // keeps no copy): call it once per output, and contact_count() to know
+  // only whether or how many pairs touch.
+  std::vector<ContactInfo> contacts() const;
+  std::size_t contact_count() const;  // contacts().size(), without building them
   // Broad-phase candidate pairs of the last force evaluation (boxes
-  // overlapping, touching or not): with contacts().size() the per-pair cost
+  // overlapping, touching or not): with contact_count() the per-pair cost
   // of a step can be measured.
   std::size_t candidate_count() const;
   // Bytes of solver state per broad-phase near pair in this scene (its

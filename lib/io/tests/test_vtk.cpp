@@ -196,10 +196,11 @@ TEST_CASE("Paper A adapter: one polygon per block, one point per contact", "[io]
   CHECK(block_mesh(sim, false).cell_count() == static_cast<std::size_t>(sim.scene_block_count()));
 
   const VtkMesh c = contact_mesh(sim);
-  REQUIRE(c.point_count() == sim.contacts().size());
+  const std::vector<dda::ContactInfo> contacts = sim.contacts();
+  REQUIRE(c.point_count() == contacts.size());
   CHECK(c.cell_count() == c.point_count());
   for (std::size_t k = 0; k < c.point_count(); ++k) {
-    const dda::ContactInfo& ci = sim.contacts()[k];
+    const dda::ContactInfo& ci = contacts[k];
     CHECK(c.points[k].x == ci.point.x);
     CHECK(tuple2(*c.point_array("normal_force"), k).x == ci.normal_force.x);
     CHECK(c.point_array("block")->values[k] == ci.cp);

@@ -65,17 +65,17 @@ constexpr std::size_t kBornListRoom = 256;
     history = &b.history;
   }
   PairResult& r = *result;
-  ContactInfo& info = r.info;
-  info.cp = cp;
-  info.tp = tp;
-  info.normal_force = nf.force;
-  info.tangential_force = Vec2{};
-  info.point = nf.point;
-  info.couple = nf.couple;
-  info.ip_area = nf.ip_area;
-  info.ip_length = 0.5 * nf.ip_perimeter;
-  info.sliding = false;
-  if (friction_) pair_friction(r, *history, pair_friction_work_[static_cast<std::size_t>(k)], was_active, nf);  // friction.cpp, Eqs. 24-26
+  PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
+  r.normal_force = nf.force;
+  r.ip_area = nf.ip_area;
+  r.ip_length = 0.5 * nf.ip_perimeter;
+  // friction.cpp, Eqs. 24-26, with the last evaluation's pg and tangential
+  // force (the load's point and the result's force, still the last step's).
+  if (friction_)
+    pair_friction(cp, tp, r, *history, pair_friction_work_[static_cast<std::size_t>(k)], was_active, load.point,
+                  r.tangential_force, nf);
+  else
+    r.tangential_force = Vec2{};
   const StabilityGuards& g = scene_.guards;
   if (g.max_penetration > 0.0 || g.max_approach_energy > 0.0) {
     // The penetration guard's measures (penetration_guard.cpp): the depth
@@ -113,12 +113,11 @@ constexpr std::size_t kBornListRoom = 256;
       if (fn == 0.0) fn = length(nf.force);
       r.approach_energy = approach_energy(cp, tp, nf.point, nf.force / fn);
     }
-    if (pair_guard_fault(r)) pair_fault = true;
+    if (pair_guard_fault(cp, tp, r)) pair_fault = true;
   }
-  PairLoad& load = pair_loads_[static_cast<std::size_t>(k)];
   load.active = true;
-  load.force = info.normal_force + info.tangential_force;
-  load.point = info.point;
+  load.force = r.normal_force + r.tangential_force;
+  load.point = nf.point;
   load.couple = nf.couple;
   return result;
 }
@@ -208,6 +207,7 @@ void Engine::pair_forces(bool with_energy) {
 namespace dda {
 
 void Engine::merge_contacts() {
+  static_assert(sizeof(ContactSlot) == 128, "a contact slot is two cache lines");
   // Serial (thread 0, after the pair loop's barrier; the phase after it
   // reads only the pairs' loads): the slots of the pairs that stopped
   // touching are freed, then each pair that began to touch takes a free

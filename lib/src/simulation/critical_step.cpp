@@ -95,12 +95,13 @@ double Engine::critical_time_step() const {
     return comp[b];
   };
   const double kt = friction_ ? scene_.contact.kt : 0.0;
-  for (const ContactInfo& c : contact_info_) {
-    const double k = scene_.contact.kn * c.ip_length * (1.0 / h_[c.cp] + 1.0 / h_[c.tp]) + kt;
-    const double ca = compliance(c.cp), cb = compliance(c.tp), cross = std::sqrt(ca * cb);
-    row[c.cp] += k * (ca + cross);
-    row[c.tp] += k * (cb + cross);
-  }
+  each_contact([&](std::size_t p, const ContactSlot& c) {
+    const int cp = near_pairs_[p].i, tp = near_pairs_[p].j;
+    const double k = scene_.contact.kn * c.result.ip_length * (1.0 / h_[cp] + 1.0 / h_[tp]) + kt;
+    const double ca = compliance(cp), cb = compliance(tp), cross = std::sqrt(ca * cb);
+    row[cp] += k * (ca + cross);
+    row[tp] += k * (cb + cross);
+  });
   double w2 = 0.0;
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;

@@ -14,13 +14,14 @@ Vec2 Engine::momentum() const {
 
 Energy Engine::energy() const {
   Energy e = block_energy();
-  for (const ContactInfo& ci : contact_info_) {
-    const PolygonView a = polygon_view(ci.cp);
-    const PolygonView b = polygon_view(ci.tp);
+  each_contact([&](std::size_t k, const ContactSlot&) {
+    const int cp = near_pairs_[k].i, tp = near_pairs_[k].j;
+    const PolygonView a = polygon_view(cp);
+    const PolygonView b = polygon_view(tp);
     const double tol = pair_tolerance(a, b);
     const Polygon ip = intersection_polygon(a, b, tol);
-    e.contact += contact_energy(sides_[ci.cp].side, sides_[ci.tp].side, ip, tol);
-  }
+    e.contact += contact_energy(sides_[cp].side, sides_[tp].side, ip, tol);
+  });
   add_budget_terms(e);
   e.initial = energy0_;
   return e;
@@ -60,7 +61,7 @@ void Engine::add_friction_energy(Energy& e) const {
     if (!pair_loads_[k].active) continue;
     const std::size_t slot = static_cast<std::size_t>(near_pairs_[k].slot);
     if (restarts && contact_slots_[slot].history.sliding) continue;
-    e.friction_spring += half_compliance * length_squared(contact_slots_[slot].result.info.tangential_force);
+    e.friction_spring += half_compliance * length_squared(contact_slots_[slot].result.tangential_force);
   }
   e.dissipated = work - e.friction_spring;
 }

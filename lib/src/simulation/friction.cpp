@@ -9,14 +9,15 @@ double Engine::friction_tan(int a, int b) const {
   return friction_tan_table_[static_cast<std::size_t>(group_[a] * group_count_ + group_[b])];
 }
 
-void Engine::pair_friction(PairResult& r, PairHistory& hist, double& friction_work, bool was_active,
-                           const NormalForce& nf) {
-  // Coulomb friction with stick/slide history, Eqs. 24-26. A pair that
-  // was not in contact at the last step starts afresh.
-  const int cp = r.info.cp, tp = r.info.tp;
+void Engine::pair_friction(int cp, int tp, PairResult& r, PairHistory& hist, double& friction_work, bool was_active,
+                           Vec2 last_point, Vec2 last_ft, const NormalForce& nf) {
+  // Coulomb friction with stick/slide history, Eqs. 24-26, on pair (cp,
+  // tp); sets r's tangential force. A pair that was not in contact at the
+  // last step starts afresh. last_point, last_ft: pg and the tangential
+  // force on CP of the pair's last evaluation (read only when was_active).
   const ContactParams& c = scene_.contact;
-  ContactInfo& info = r.info;
-  Vec2 step_d{};  // this step's Delta d (none for a fresh contact)
+  Vec2 step_d{};   // this step's Delta d (none for a fresh contact)
+  Vec2 ft_last{};  // the last step's f_t (none for a fresh contact)
   if (was_active) {
     // Sect. 3.2.6: Delta d = Delta u_g(CP) - Delta u_g(TP) at the last pg;
     // a sticking pair accumulates it, a sliding pair restarts from it
@@ -24,7 +25,7 @@ void Engine::pair_friction(PairResult& r, PairHistory& hist, double& friction_wo
     // it was returned to (below). The centroids are those of the step's
     // start configuration.
     using detail::Lanes;
-    const Lanes pg = detail::lanes(hist.point);
+    const Lanes pg = detail::lanes(last_point);
     const auto du = [&](int b) {
       return fixed_[b] ? Lanes{0.0, 0.0}
                        : detail::point_displacement_lanes(detail::lanes(start_centroid_[b]), pg, step_disp_[b]);
@@ -33,6 +34,7 @@ void Engine::pair_friction(PairResult& r, PairHistory& hist, double& friction_wo
     step_d = detail::vec2(dd);
     const bool restart = c.friction_update == FrictionUpdate::kPaper;
     hist.d = detail::vec2(hist.sliding && restart ? dd : detail::lanes(hist.d) + dd);
+    ft_last = last_ft;
   } else {
     hist = PairHistory{};
   }
@@ -74,15 +76,12 @@ void Engine::pair_friction(PairResult& r, PairHistory& hist, double& friction_wo
     hist.sliding = false;
   }
   if (hist.sliding && lt > 0.0) hist.slide_dir = s;
-  hist.point = nf.point;
   // The friction work of the step (the energy budget, energy.cpp): ft on
   // CP and -ft on TP do ft . Delta d on the blocks, taken by the trapezoid
   // rule, as velocity Verlet's kinetic energy takes the work of every force
   // (it changes by 1/2 (F^n + F^{n+1}) . Delta x per step, up to O(h^3)).
-  friction_work -= 0.5 * dot(hist.ft + ft, step_d);
-  hist.ft = ft;
-  info.tangential_force = ft;
-  info.sliding = hist.sliding;
+  friction_work -= 0.5 * dot(ft_last + ft, step_d);
+  r.tangential_force = ft;
 }
 
 }  // namespace dda

@@ -43,7 +43,7 @@ bool Engine::guards_stop(std::int64_t done, bool energy_due, std::exception_ptr&
     steps_ = done;
     time_ = static_cast<double>(steps_) * dt_;
     try {
-      collect_contacts();
+      count_candidates();
       check_state(energy_due);  // stops at the failed block; the energy check when due
     } catch (...) {
       error = std::current_exception();
@@ -59,11 +59,13 @@ bool Engine::guards_stop(std::int64_t done, bool energy_due, std::exception_ptr&
   // The pair through which the block takes its largest contact force.
   double fmax = 0.0;
   int other = -1;
-  for (const ContactInfo& c : contact_info_)
-    if ((c.cp == block || c.tp == block) && length(c.normal_force) > fmax) {
-      fmax = length(c.normal_force);
-      other = c.cp == block ? c.tp : c.cp;
+  each_contact([&](std::size_t k, const ContactSlot& c) {
+    const int cp = near_pairs_[k].i, tp = near_pairs_[k].j;
+    if ((cp == block || tp == block) && length(c.result.normal_force) > fmax) {
+      fmax = length(c.result.normal_force);
+      other = cp == block ? tp : cp;
     }
+  });
   if (other >= 0) s << ", pair (" << std::min(block, other) << ", " << std::max(block, other) << ")";
   s << ": " << what << "; " << dt_ratio_text(dt_, critical_time_step(), dt_crit_prior_);
   SimulationError e(s.str(), why);
@@ -150,8 +152,7 @@ void Engine::check_state(bool energy_due) {
   if (energy_due) {
     // energy() with this step's stored contact energies, in pair order.
     Energy e = block_energy();
-    for (std::size_t k = 0; k < pair_loads_.size(); ++k)
-      if (pair_loads_[k].active) e.contact += contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result.energy;
+    each_contact([&](std::size_t, const ContactSlot& c) { e.contact += c.result.energy; });
     energy_scale_ = std::max(energy_scale_, e.kinetic + e.strain + e.contact);
     const double scale = std::max(energy_scale_, DBL_MIN);
     // The block reported: the one with the largest translational kinetic energy.

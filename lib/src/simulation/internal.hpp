@@ -80,6 +80,9 @@ class Engine {
   double block_strain_omega2(int i) const;
   Vec2 momentum() const;
   Energy energy() const;
+  std::vector<ContactInfo> contacts() const;
+  // The touching pairs: each holds a slot (the slots not in use are free).
+  std::size_t contact_count() const { return contact_slots_.size() - free_slots_.size(); }
   std::size_t bytes_per_near_pair() const;
   void save_state(ByteWriter& out) const;
   void restore_state(ByteReader& in);
@@ -88,7 +91,6 @@ class Engine {
   friend class dda::Simulation;  // its accessors read the state below
 
   struct PairHistory;   // a pair's friction history
-  struct PairFriction;  // its history and friction work, as a checkpoint stores it per near pair
   struct PairResult;    // a touching pair's contact of the last force evaluation
   struct alignas(64) ContactSlot;  // a touching pair's result and friction history
   struct BornContact;   // a pair that began to touch in the pair loop, until merge_contacts
@@ -101,7 +103,15 @@ class Engine {
   struct BlockSide;     // what a pair's contact reads of a block
 
   void compute_forces();
-  void collect_contacts();
+  void count_candidates();
+  // Touching pair k's contact (PairLoad::active, after merge_contacts): its
+  // blocks (NearPair), load point and couple (PairLoad), forces, IP
+  // measures and sliding flag (its contact slot).
+  ContactInfo contact_info(std::size_t k) const;
+  // each(k, slot) for every touching pair k, in near-pair order (the order
+  // of every sum over contacts).
+  template <class Each>
+  void each_contact(Each each) const;
   // setup.cpp
   void bind_sides();
   void build_blocks();
@@ -139,14 +149,15 @@ class Engine {
                          ThreadContacts& mine);
   void merge_contacts();  // serial: the slots of the pairs that began or stopped touching
   // friction.cpp
-  void pair_friction(PairResult& r, PairHistory& hist, double& friction_work, bool was_active, const NormalForce& nf);
+  void pair_friction(int cp, int tp, PairResult& r, PairHistory& hist, double& friction_work, bool was_active,
+                     Vec2 last_point, Vec2 last_ft, const NormalForce& nf);
   double friction_tan(int a, int b) const;
   // guards.cpp, penetration_guard.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
   GuardFault guard_fault(int i) const;
   bool guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error);
   void check_state(bool energy_due);
-  bool pair_guard_fault(const PairResult& r) const;
+  bool pair_guard_fault(int cp, int tp, const PairResult& r) const;
   double pair_energy_bound(int a, int b) const;
   double approach_energy(int a, int b, Vec2 point, Vec2 normal, double* speed = nullptr, double* mass = nullptr) const;
   void check_pairs() const;
@@ -233,7 +244,9 @@ class Engine {
   // ThreadContacts; merge_contacts (serial, after the pair loop) gives it a
   // slot and frees the slots of the pairs that stopped touching. A slot's
   // place never enters a result: each pair's contact is its own, and every
-  // sum over contacts runs in near-pair order.
+  // sum over contacts runs in near-pair order (each_contact). Each field of
+  // a contact is kept once: contacts() builds the public ContactInfo of
+  // each touching pair from its pair, load and slot when it is called.
   // near_pair_offset_ and block_pairs_ list each block's near pairs in
   // increasing order (CSR), so that each block sums its contact forces in
   // that fixed order.
@@ -245,7 +258,6 @@ class Engine {
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
   std::vector<BlockPair> block_pairs_;
-  std::vector<ContactInfo> contact_info_;  // active pairs in near-pair order, after each advance
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).
@@ -300,30 +312,29 @@ class Engine {
 
 using detail::Engine;
 
-// Per-pair history for friction (Sect. 3.2.5-3.2.6); only with friction.
+// Per-pair history for friction (Sect. 3.2.5-3.2.6); left fresh without
+// friction. What the friction also reads of the last force evaluation, pg
+// and the tangential force on CP (the friction work's trapezoid), is the
+// pair's load point (PairLoad::point) and its result's tangential force,
+// written by the same evaluation; `sliding` is also the contact's
+// ContactInfo::sliding.
 struct Engine::PairHistory {
   Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
   Vec2 slide_dir{};       // sliding direction s of the last sliding step
-  Vec2 point{};           // pg of the last force evaluation
-  Vec2 ft{};              // tangential force on CP of the last evaluation (the friction work's trapezoid)
   bool sliding = false;
 };
 
-// A near pair's friction state as a checkpoint stores it (the history
-// from its contact slot, a fresh one when it does not touch; the work from
-// pair_friction_work_).
-struct Engine::PairFriction {
-  PairHistory history;
-  // Work friction took out of the two blocks while this pair was near
-  // (outlives the history's restarts), J/m.
-  double friction_work = 0.0;
-};
-
 // One touching pair's contact, computed independently of all others
-// (whether it is a candidate and in contact: its PairLoad).
+// (whether it is a candidate and in contact: its PairLoad). The rest of
+// its ContactInfo is kept once, elsewhere (contact_info): the blocks in its
+// NearPair, the load point and couple in its PairLoad, `sliding` in its
+// friction history.
 struct Engine::PairResult {
-  ContactInfo info;
-  double energy = 0.0;  // penalty energy, J/m (set on steps with an energy check)
+  Vec2 normal_force{};      // on CP, N/m
+  Vec2 tangential_force{};  // on CP (friction), N/m
+  double ip_area = 0.0;     // m^2
+  double ip_length = 0.0;   // half the IP perimeter, m
+  double energy = 0.0;      // penalty energy, J/m (set on steps with an energy check)
   // The penetration guard's measures (set while a check is on): the depth
   // and its bound, m (where the depth may exceed the bound: the
   // intersection polygon's width and max_penetration times the smaller
@@ -336,8 +347,8 @@ struct Engine::PairResult {
 };
 
 // A touching pair's contact slot: its result and its friction history
-// (left fresh without friction), 120 + 72 = 192 B, three cache lines of
-// its own. Slots are handed out from a free list, so neighbouring slots
+// (left fresh without friction), 80 + 40 = 120 B, two cache lines of its
+// own (128 B). Slots are handed out from a free list, so neighbouring slots
 // mostly belong to pairs of different threads of a team: with slots
 // sharing a line, every contact's write would take the line from the other
 // core (measured on the 6.1 collapse: the 2-thread pair loop's work 1.75x
@@ -372,8 +383,9 @@ struct alignas(64) Engine::ThreadContacts {
   std::vector<long> ended;
 };
 
-// What the per-block sum reads of each near pair, compact (a PairResult
-// spans several cache lines): written by the pair loop, read per block.
+// What the per-block sum reads of each near pair, compact (its contact
+// slot spans two cache lines): written by the pair loop, read per block;
+// also the touching pair's ContactInfo::point and couple.
 struct Engine::PairLoad {
   Vec2 force{};            // normal + tangential force on the pair's first block, N/m
   Vec2 point{};            // loading point pg
@@ -512,10 +524,33 @@ inline double min_width(const Polygon& ip) {
 // Whether pair result r fails the penetration guard (guards.cpp): inlined
 // into the pair loop; the energy bound is computed only at a first contact
 // that approaches.
-inline bool Engine::pair_guard_fault(const PairResult& r) const {
+inline bool Engine::pair_guard_fault(int cp, int tp, const PairResult& r) const {
   const StabilityGuards& g = scene_.guards;
   if (r.depth > r.depth_bound && g.max_penetration > 0.0) return true;
-  return r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * pair_energy_bound(r.info.cp, r.info.tp);
+  return r.approach_energy > 0.0 && r.approach_energy > g.max_approach_energy * pair_energy_bound(cp, tp);
+}
+
+inline ContactInfo Engine::contact_info(std::size_t k) const {
+  const NearPair& p = near_pairs_[k];
+  const PairLoad& l = pair_loads_[k];
+  const ContactSlot& s = contact_slots_[static_cast<std::size_t>(p.slot)];
+  ContactInfo c;
+  c.cp = p.i;
+  c.tp = p.j;
+  c.normal_force = s.result.normal_force;
+  c.tangential_force = s.result.tangential_force;
+  c.point = l.point;
+  c.couple = l.couple;
+  c.ip_area = s.result.ip_area;
+  c.ip_length = s.result.ip_length;
+  c.sliding = s.history.sliding;
+  return c;
+}
+
+template <class Each>
+void Engine::each_contact(Each each) const {
+  for (std::size_t k = 0; k < pair_loads_.size(); ++k)
+    if (pair_loads_[k].active) each(k, contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)]);
 }
 
 }  // namespace dda

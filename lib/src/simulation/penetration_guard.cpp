@@ -98,13 +98,12 @@ void Engine::check_pairs() const {
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     if (!pair_loads_[k].active) continue;
     const PairResult& r = contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result;
-    if (!pair_guard_fault(r)) continue;
-    const ContactInfo& c = r.info;
-    const int a = c.cp, b = c.tp;
-    const double fn = length(c.normal_force);
-    const Vec2 n = c.normal_force / fn;
+    const int a = near_pairs_[k].i, b = near_pairs_[k].j;
+    if (!pair_guard_fault(a, b, r)) continue;
+    const double fn = length(r.normal_force);
+    const Vec2 n = r.normal_force / fn;
     double speed = 0.0, m_eff = 0.0;
-    const double e_now = approach_energy(a, b, c.point, n, &speed, &m_eff);
+    const double e_now = approach_energy(a, b, pair_loads_[k].point, n, &speed, &m_eff);
     const double e_max = pair_energy_bound(a, b);
     // The half-thicknesses across the contact (as the pair loop took them).
     const double h_a = 0.5 * detail::extent_along(polygon_view(a), n);
@@ -127,7 +126,7 @@ void Engine::check_pairs() const {
       // The depth a flat contact of this length would reach if the closing
       // energy went into its spring, and the kn that keeps it at the bound.
       const double bound = r.depth_bound;
-      const double spring = kn * c.ip_length * (1.0 / h_[a] + 1.0 / h_[b]);
+      const double spring = kn * r.ip_length * (1.0 / h_[a] + 1.0 / h_[b]);
       const double reach = std::sqrt(r.depth * r.depth + 2.0 * e_now / spring);
       s << "penetration depth " << r.depth << " m (the intersection polygon's width; "
         << r.depth / h_[a] << " H) is " << r.depth / h_min << " of the half-thickness " << h_min

@@ -43,7 +43,8 @@ double Simulation::strain_critical_step(int i) const {
 
 Vec2 Simulation::momentum() const { return engine_->momentum(); }
 Energy Simulation::energy() const { return engine_->energy(); }
-const std::vector<ContactInfo>& Simulation::contacts() const { return engine_->contact_info_; }
+std::vector<ContactInfo> Simulation::contacts() const { return engine_->contacts(); }
+std::size_t Simulation::contact_count() const { return engine_->contact_count(); }
 std::size_t Simulation::candidate_count() const { return engine_->candidate_count_; }
 std::size_t Simulation::bytes_per_near_pair() const { return engine_->bytes_per_near_pair(); }
 std::size_t Simulation::near_pair_count() const { return engine_->near_pairs_.size(); }

@@ -87,6 +87,13 @@ constexpr auto near_pair = [](auto& io, auto& p) {
   io(p.j);
   io(p.witness);
 };
+// A near pair's contact as the stream stores it: its ContactInfo (the
+// engine keeps its fields in the pair, its load and its contact slot) and
+// the guards' measures; a pair not touching stores a fresh one.
+struct PairResultRecord {
+  ContactInfo info;
+  double energy = 0.0, depth = 0.0, depth_bound = 0.0, approach_energy = 0.0;
+};
 constexpr auto pair_result = [](auto& io, auto& x) {
   contact(io, x.info);
   io(x.energy);
@@ -94,12 +101,22 @@ constexpr auto pair_result = [](auto& io, auto& x) {
   io(x.depth_bound);
   io(x.approach_energy);
 };
+// A near pair's friction state as the stream stores it: the history with
+// the last evaluation's pg and tangential force (the engine reads them from
+// the pair's load and result), and the work friction took out of the two
+// blocks while the pair was near (J/m). A pair not touching stores a fresh
+// history.
+struct FrictionRecord {
+  Vec2 d{}, slide_dir{}, point{}, ft{};
+  bool sliding = false;
+  double friction_work = 0.0;
+};
 constexpr auto friction_history = [](auto& io, auto& f) {
-  io(f.history.d);
-  io(f.history.slide_dir);
-  io(f.history.point);
-  io(f.history.ft);
-  io(f.history.sliding);
+  io(f.d);
+  io(f.slide_dir);
+  io(f.point);
+  io(f.ft);
+  io(f.sliding);
   io(f.friction_work);
 };
 constexpr auto pair_load = [](auto& io, auto& l) {
@@ -194,19 +211,26 @@ void Engine::save_state(ByteWriter& w) const {
   w.f64(dropped_friction_work_);
 
   // The broad phase and the near pairs with their history: per near pair,
-  // its contact (from its slot; a pair not touching has none, and stores a
-  // fresh one, PairResult{} and PairHistory{}, which no step reads) and its
-  // friction state. The slots themselves are not saved: where a contact
-  // sits never enters a result.
+  // its contact (from its slot, its load and the pair; a pair not touching
+  // has none, and stores a fresh one, which no step reads) and its friction
+  // state. The slots themselves are not saved: where a contact sits never
+  // enters a result.
   put_list(w, near_pairs_, near_pair);
   {
-    std::vector<PairResult> results(near_pairs_.size());
-    std::vector<PairFriction> friction(friction_ ? near_pairs_.size() : 0);
+    std::vector<PairResultRecord> results(near_pairs_.size());
+    std::vector<FrictionRecord> friction(friction_ ? near_pairs_.size() : 0);
     for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
       const int slot = near_pairs_[k].slot;
-      if (slot >= 0) results[k] = contact_slots_[static_cast<std::size_t>(slot)].result;
+      if (slot >= 0) {
+        const PairResult& c = contact_slots_[static_cast<std::size_t>(slot)].result;
+        results[k] = {contact_info(k), c.energy, c.depth, c.depth_bound, c.approach_energy};
+      }
       if (!friction_) continue;
-      if (slot >= 0) friction[k].history = contact_slots_[static_cast<std::size_t>(slot)].history;
+      if (slot >= 0) {
+        const PairHistory& h = contact_slots_[static_cast<std::size_t>(slot)].history;
+        const PairResultRecord& c = results[k];
+        friction[k] = {h.d, h.slide_dir, c.info.point, c.info.tangential_force, h.sliding, 0.0};
+      }
       friction[k].friction_work = pair_friction_work_[k];
     }
     put_list(w, results, pair_result);
@@ -223,7 +247,7 @@ void Engine::save_state(ByteWriter& w) const {
       }
     put_list(w, records, block_pair);
   }
-  put_list(w, contact_info_, contact);
+  put_list(w, contacts(), contact);
   w.u64(candidate_count_);
   put_list(w, skin_boxes_, box);
   put_list(w, order_, value);
@@ -287,13 +311,17 @@ void Engine::restore_state(ByteReader& r) {
     return p;
   });
   const std::size_t pairs = near_pairs_.size();
-  std::vector<PairResult> results;
-  std::vector<PairFriction> frictions;
+  std::vector<PairResultRecord> results;
+  std::vector<FrictionRecord> frictions;
   get_list(r, results, pairs, "the pair results", pair_result);
   get_list(r, frictions, friction_ ? pairs : 0, "the friction histories", friction_history);
   get_list(r, pair_loads_, pairs, "the pair loads", pair_load);
   // The touching pairs' contacts into slots (in pair order); what the
   // others stored is never read (a pair that begins to touch starts afresh).
+  // Of a contact's blocks, load point and couple, and of its history's pg
+  // and tangential force, the engine keeps one copy (the pair's, its
+  // load's and its result's): a stream saved by save_state holds the same
+  // values in each.
   std::size_t touching = 0;
   for (const PairLoad& l : pair_loads_) touching += l.active ? 1 : 0;
   contact_slots_.clear();
@@ -305,7 +333,12 @@ void Engine::restore_state(ByteReader& r) {
     near_pairs_[k].slot = -1;
     if (!pair_loads_[k].active) continue;
     near_pairs_[k].slot = static_cast<int>(contact_slots_.size());
-    contact_slots_.push_back({results[k], friction_ ? frictions[k].history : PairHistory{}});
+    const PairResultRecord& c = results[k];
+    ContactSlot s;
+    s.result = {c.info.normal_force, c.info.tangential_force, c.info.ip_area, c.info.ip_length,
+                c.energy,           c.depth,                  c.depth_bound,  c.approach_energy};
+    if (friction_) s.history = {frictions[k].d, frictions[k].slide_dir, frictions[k].sliding};
+    contact_slots_.push_back(s);
   }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
   const auto read_block_pair = element<BlockPairRecord>(block_pair);
@@ -326,8 +359,12 @@ void Engine::restore_state(ByteReader& r) {
       if (b.first != (b.other > i)) r.fail("a block's pair entry names the wrong first block");
       block_pairs_[static_cast<std::size_t>(q)] = {b.pair, b.other};
     }
+  // The touching pairs' contacts once more (what contacts() returned when
+  // the stream was saved): checked, not kept (contacts() builds them from
+  // the pairs).
   const auto read_contact = element<ContactInfo>(contact);
-  r.list(contact_info_, 1, [&](ByteReader& in) {
+  std::vector<ContactInfo> listed;
+  r.list(listed, 1, [&](ByteReader& in) {
     const ContactInfo c = read_contact(in);
     if (c.cp < 0 || c.cp >= nb || c.tp < 0 || c.tp >= nb) in.fail("a contact's blocks are out of range");
     return c;

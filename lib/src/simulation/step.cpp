@@ -69,7 +69,7 @@ void Engine::run_steps(std::int64_t count) {
   if (error) std::rethrow_exception(error);
   steps_ = first + count;
   time_ = static_cast<double>(steps_) * dt_;
-  collect_contacts();
+  count_candidates();
 }
 
 void Engine::compute_forces() {
@@ -80,17 +80,20 @@ void Engine::compute_forces() {
   pair_forces(false);
   merge_contacts();  // contact_forces.cpp: slots for the pairs in contact
   for (int i = 0; i < block_count(); ++i) gather_contact_forces(i);
-  collect_contacts();
+  count_candidates();
 }
 
-void Engine::collect_contacts() {
-  // The active pairs in pair order, for the accessors and the guards.
-  contact_info_.clear();
+std::vector<ContactInfo> Engine::contacts() const {
+  std::vector<ContactInfo> c;
+  c.reserve(contact_count());
+  each_contact([&](std::size_t k, const ContactSlot&) { c.push_back(contact_info(k)); });
+  return c;
+}
+
+void Engine::count_candidates() {
+  // The candidate pairs of the last force evaluation, for the accessor.
   candidate_count_ = 0;
-  for (std::size_t k = 0; k < pair_loads_.size(); ++k) {
-    candidate_count_ += pair_loads_[k].candidate ? 1 : 0;
-    if (pair_loads_[k].active) contact_info_.push_back(contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result.info);
-  }
+  for (const PairLoad& l : pair_loads_) candidate_count_ += l.candidate ? 1 : 0;
 }
 
 }  // namespace dda
