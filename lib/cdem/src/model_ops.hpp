@@ -59,11 +59,16 @@ void refresh_forces_after_patch_change(const ModelSetup& su, ModelState& st, dou
 
 // model_touch.cpp: detection, time of impact, the two stages
 std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool coarse_level, double t_start,
-                                const std::vector<Vec2>& p0, const std::vector<Vec2>& p1);
+                                double t_end, const std::vector<Vec2>& p0, const std::vector<Vec2>& p1);
 std::vector<Touch> coarse_touches(const ModelSetup& su, const ModelState& st, double t0);
 double depth_inside(const MeshState& mesh, int block, Vec2 p, const std::vector<Vec2>& pos);
 void check_not_inside(const ModelSetup& su, const ModelState& st, int node, int other, const std::vector<Vec2>& pos,
                       double t);
+// ContactError if the node, moving p0 -> p1 over [t0, t1] with the other
+// nodes, entered block `other` and left it again within the interval after
+// reaching deeper than `limit` (m; limit_name names it in the message).
+void check_no_passage(const ModelState& st, int node, int other, const std::vector<Vec2>& p0,
+                      const std::vector<Vec2>& p1, double t0, double t1, double limit, const char* limit_name);
 bool locate_edge(const MeshState& mesh, const std::vector<Vec2>& x, int block, Vec2 p, int& a, int& b, double& xi);
 void two_stage_step(const ModelSetup& su, ModelState& st, const std::vector<Touch>& touches, double t0);
 

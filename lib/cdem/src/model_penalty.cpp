@@ -42,7 +42,9 @@
 //  * domain: a node deeper than half the smallest element length scale
 //    (h_e = sqrt(2 A_e), as in the subdivision) stops the run with a
 //    ContactError: the penalty is far too soft for the impact (or dt too
-//    large) and the node would pass through the edge.
+//    large) and the node would pass through the edge; so does a node whose
+//    drift within one step went that deep into another block and out again
+//    (a fast block through a thin one, never inside at a step end).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -102,6 +104,44 @@ void setup_penalty(ModelSetup& su, const ModelState& st) {
   }
 }
 
+namespace {
+// The depth limit applied along the drift, not only at its end: a node that
+// enters another block and leaves it within one step is never found inside
+// at a step end (a fast block through a thin one). The distance of a node
+// to a block's boundary changes by at most the node's drift plus the
+// block's largest node drift D (edges interpolate their nodes), so a
+// passage entered and left within the step reaches at most D: only nodes
+// with D > penalty_max_depth are searched (check_no_passage, along the
+// linear drift x1 - dt v -> x1 with the half-kicked v).
+void check_no_passages(const ModelSetup& su, const ModelState& st) {
+  const NodeState& nd = st.nodes;
+  const MeshState& mesh = st.mesh;
+  std::vector<double> block_drift(st.blocks.size(), 0.0);
+  double most = 0.0;
+  for (int n : mesh.bnodes) {
+    double& d = block_drift[static_cast<std::size_t>(nd.block[n])];
+    d = std::max(d, su.dt * length(nd.v[n]));
+    most = std::max(most, d);
+  }
+  if (!(2.0 * most > su.penalty_max_depth)) return;  // no pair can pass
+  std::vector<Vec2> p0;
+  for (int n : mesh.bnodes) {
+    const int bn = nd.block[n];
+    const double dn = su.dt * length(nd.v[n]);
+    for (std::size_t ob = 0; ob < st.blocks.size(); ++ob) {
+      if (static_cast<int>(ob) == bn || (st.blocks[bn].fixed && st.blocks[ob].fixed)) continue;
+      if (!(dn + block_drift[ob] > su.penalty_max_depth)) continue;
+      if (p0.empty()) {
+        p0 = nd.x;
+        for (int m : mesh.coarse_dofs) p0[m] = nd.x[m] - su.dt * nd.v[m];
+      }
+      check_no_passage(st, n, static_cast<int>(ob), p0, nd.x, st.time, st.time + su.dt, su.penalty_max_depth,
+                       "half the smallest element");
+    }
+  }
+}
+}  // namespace
+
 // One explicit central-difference step (Eq. 1) with the penalty springs as
 // external forces: half-kick, drift, forces at t1 (elements, gravity,
 // damping, add_penalty_forces via compute_coarse_forces), half-kick.
@@ -111,6 +151,7 @@ void penalty_step(const ModelSetup& su, ModelState& st) {
   st.step_t0 = st.time;
   kick_coarse_first_half(nd, mesh, su.dt);
   for (int n : mesh.coarse_dofs) nd.x[n] += su.dt * nd.v[n];
+  check_no_passages(su, st);
   st.time += su.dt;
   forces_and_second_half_kick(su, st);
   ++st.steps;

@@ -81,7 +81,7 @@ bool swept_touch(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double to
 // boundary node moving p0 -> p1 against the boundary edges of the other
 // blocks, earliest first; at most one (the earliest) per node.
 std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool coarse_level, double t_start,
-                                const std::vector<Vec2>& p0, const std::vector<Vec2>& p1) {
+                                double t_end, const std::vector<Vec2>& p0, const std::vector<Vec2>& p1) {
   const NodeState& nd = st.nodes;
   const MeshState& mesh = st.mesh;
   const double tol = su.opt.tolerance;
@@ -132,7 +132,14 @@ std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool
           // may cross one edge's line (or approach it from behind) while it
           // stays outside the other edge, and a clone formed there separates
           // at once and re-forms, without end.
-          if (s < 1.0 && !(depth_inside(mesh, static_cast<int>(ob), p1[n], p1) > 0.0)) continue;
+          // A node that crossed the edge and left the block again within
+          // the interval deeper than d_tol passed through it: out of the
+          // domain, as a node found inside at the interval start.
+          if (s < 1.0 && !(depth_inside(mesh, static_cast<int>(ob), p1[n], p1) > 0.0)) {
+            check_no_passage(st, n, static_cast<int>(ob), p0, p1, t_start, t_end,
+                             tol, "the contact tolerance d_tol");
+            continue;
+          }
           // A node released at the start of this interval touches again in
           // the next patch step (a coarse step: later in this one): touching
           // at once, its clone re-forms and separates again and again within
@@ -161,18 +168,111 @@ std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool
   return out;
 }
 
-// Depth of p inside block b (positions pos): the distance to the block's
-// boundary if p lies inside its boundary loop (crossing number), else 0.
-double depth_inside(const MeshState& mesh, int b, Vec2 p, const std::vector<Vec2>& pos) {
+namespace {
+// Depth of p inside block b, its boundary nodes at pos(node): the distance
+// to the block's boundary if p lies inside its boundary loop (crossing
+// number), else 0.
+template <class Pos>
+double depth_inside_of(const MeshState& mesh, int b, Vec2 p, const Pos& pos) {
   bool inside = false;
   double depth = std::numeric_limits<double>::infinity();
   for (int ei : mesh.block_bedges[static_cast<std::size_t>(b)]) {
     const BoundaryEdge& e = mesh.bedges[static_cast<std::size_t>(ei)];
-    const Vec2 a = pos[e.a], c = pos[e.b];
+    const Vec2 a = pos(e.a), c = pos(e.b);
     if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) / (c.y - a.y) * (c.x - a.x)) inside = !inside;
     depth = std::min(depth, point_segment_distance(p, a, c));
   }
   return inside ? depth : 0.0;
+}
+}  // namespace
+
+double depth_inside(const MeshState& mesh, int b, Vec2 p, const std::vector<Vec2>& pos) {
+  return depth_inside_of(mesh, b, p, [&](int i) { return pos[i]; });
+}
+
+// The deepest point of a passage of node `node` through block b over one
+// interval (every node moving linearly p0 -> p1 in s in [0, 1]): a stretch
+// of s where the node lies inside b and that ends before s = 1 (the node
+// entered, or started inside, and left again within the interval, unseen
+// by a check at the interval's end). The stretches are bounded by the roots
+// of G(s) = cross(p - a, b - a) of b's boundary edges (quadratic in s, as in
+// swept_touch); on each piece between roots the depth is found by a golden-
+// section search (the distance to the boundary is concave along a straight
+// path through a convex polygon, and nearly so for a block deforming within
+// one step). Returns the greatest depth (0: no passage) and its s.
+double deepest_passage(const MeshState& mesh, int b, int node, const std::vector<Vec2>& p0,
+                       const std::vector<Vec2>& p1, double& s_deep) {
+  auto at = [&](int i, double s) { return p0[i] + s * (p1[i] - p0[i]); };
+  auto depth = [&](double s) {
+    return depth_inside_of(mesh, b, at(node, s), [&](int i) { return at(i, s); });
+  };
+  std::vector<double> cuts{0.0, 1.0};
+  for (int ei : mesh.block_bedges[static_cast<std::size_t>(b)]) {
+    const BoundaryEdge& e = mesh.bedges[static_cast<std::size_t>(ei)];
+    const Vec2 w0 = p0[node] - p0[e.a], dw = (p1[node] - p1[e.a]) - w0;
+    const Vec2 e0 = p0[e.b] - p0[e.a], de = (p1[e.b] - p1[e.a]) - e0;
+    const double c0 = cross(w0, e0), c1 = cross(w0, de) + cross(dw, e0), c2 = cross(dw, de);
+    auto add = [&](double r) {
+      if (r > 0.0 && r < 1.0) cuts.push_back(r);
+    };
+    if (c2 == 0.0) {
+      if (c1 != 0.0) add(-c0 / c1);
+      continue;
+    }
+    const double disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0) continue;
+    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    add(q / c2);
+    if (q != 0.0) add(c0 / q);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  // the pieces inside, and whether the run of inside pieces reaches s = 1
+  const std::size_t pieces = cuts.size() - 1;
+  std::vector<char> inside(pieces, 0);
+  for (std::size_t i = 0; i < pieces; ++i)
+    inside[i] = cuts[i + 1] > cuts[i] && depth(0.5 * (cuts[i] + cuts[i + 1])) > 0.0;
+  double best = 0.0;
+  s_deep = 0.0;
+  bool to_end = true;  // the current run of inside pieces, scanned from s = 1 back, reaches s = 1
+  for (std::size_t k = pieces; k-- > 0;) {
+    if (!inside[k]) {
+      to_end = false;
+      continue;
+    }
+    if (to_end) continue;  // inside at the end: the end-of-interval checks see it
+    constexpr int kGoldenIterations = 40;  // the piece shrunk by 0.618^40 ~ 4e-9
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double lo = cuts[k], hi = cuts[k + 1];
+    for (int it = 0; it < kGoldenIterations; ++it) {
+      const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+      if (depth(m1) < depth(m2))
+        lo = m1;
+      else
+        hi = m2;
+    }
+    const double s = 0.5 * (lo + hi), d = depth(s);
+    if (d > best) {
+      best = d;
+      s_deep = s;
+    }
+  }
+  return best;
+}
+
+void check_no_passage(const ModelState& st, int node, int other, const std::vector<Vec2>& p0,
+                      const std::vector<Vec2>& p1, double t0, double t1, double limit, const char* limit_name) {
+  double s = 0.0;
+  const double depth = deepest_passage(st.mesh, other, node, p0, p1, s);
+  if (!(depth > limit)) return;
+  const NodeState& nd = st.nodes;
+  const double t = t0 + s * (t1 - t0);
+  std::ostringstream msg;
+  msg << "cdem: node " << node << " of block " << nd.block[node] << " passed through block " << other
+      << " between t = " << t0 << " and " << t1 << " s (step " << st.steps + 1 << "): its path reached "
+      << depth << " m inside at t = " << t << " s, deeper than " << limit_name << " = " << limit
+      << " m, and left it again before " << t1 << " s, never found inside: the blocks closed further in one step "
+      << "than the block is thick; use a smaller dt (below the thickness over the closing speed)";
+  throw ContactError(msg.str(), node, nd.block[node], other, st.steps + 1, t, depth);
 }
 
 void check_not_inside(const ModelSetup& su, const ModelState& st, int node, int other, const std::vector<Vec2>& pos,
@@ -212,7 +312,7 @@ std::vector<Touch> coarse_touches(const ModelSetup& su, const ModelState& st, do
   const MeshState& mesh = st.mesh;
   std::vector<Vec2> p0 = nd.x, p1 = nd.x;
   for (int n : mesh.coarse_dofs) p1[n] = nd.x[n] + su.dt * nd.v[n];
-  return find_touches(su, st, true, t0, p0, p1);
+  return find_touches(su, st, true, t0, t0 + su.dt, p0, p1);
 }
 
 // Sect. 3's two time stages over a coarse step (without subdivision, and
