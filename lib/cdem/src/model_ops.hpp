@@ -59,7 +59,7 @@ void refresh_forces_after_patch_change(const ModelSetup& su, ModelState& st, dou
 
 // model_touch.cpp: detection, time of impact, the two stages
 std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool coarse_level, double t_start,
-                                double t_end, const std::vector<Vec2>& p0, const std::vector<Vec2>& p1);
+                                double t_p0, double t_p1, const std::vector<Vec2>& p0, const std::vector<Vec2>& p1);
 std::vector<Touch> coarse_touches(const ModelSetup& su, const ModelState& st, double t0);
 double depth_inside(const MeshState& mesh, int block, Vec2 p, const std::vector<Vec2>& pos);
 void check_not_inside(const ModelSetup& su, const ModelState& st, int node, int other, const std::vector<Vec2>& pos,

@@ -209,7 +209,7 @@ void patch_loop(const ModelSetup& su, ModelState& st, double t0, double t1, std:
       for (int n : mesh.coarse_dofs) p1[n] = nd.xs[n] + (t + h - st.step_t0) * nd.v[n];
       // released_at is compared with the step start: a node released at the
       // last force evaluation touches again from the next patch step.
-      const std::vector<Touch> found = find_touches(su, st, false, t, t + h, p0, p1);
+      const std::vector<Touch> found = find_touches(su, st, false, t, t + tau * h, t + h, p0, p1);
       if (found.empty()) break;
       const double smin = found.front().s;
       std::vector<Touch> group;

@@ -78,10 +78,11 @@ bool swept_touch(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double to
 }  // namespace
 
 // The touches over one interval (coarse step or patch step) of every
-// boundary node moving p0 -> p1 against the boundary edges of the other
-// blocks, earliest first; at most one (the earliest) per node.
+// boundary node moving p0 -> p1 (at the times t_p0 -> t_p1) against the
+// boundary edges of the other blocks, earliest first; at most one (the
+// earliest) per node. t_start: the start of the coarse or patch step.
 std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool coarse_level, double t_start,
-                                double t_end, const std::vector<Vec2>& p0, const std::vector<Vec2>& p1) {
+                                double t_p0, double t_p1, const std::vector<Vec2>& p0, const std::vector<Vec2>& p1) {
   const NodeState& nd = st.nodes;
   const MeshState& mesh = st.mesh;
   const double tol = su.opt.tolerance;
@@ -136,7 +137,7 @@ std::vector<Touch> find_touches(const ModelSetup& su, const ModelState& st, bool
           // the interval deeper than d_tol passed through it: out of the
           // domain, as a node found inside at the interval start.
           if (s < 1.0 && !(depth_inside(mesh, static_cast<int>(ob), p1[n], p1) > 0.0)) {
-            check_no_passage(st, n, static_cast<int>(ob), p0, p1, t_start, t_end,
+            check_no_passage(st, n, static_cast<int>(ob), p0, p1, t_p0, t_p1,
                              tol, "the contact tolerance d_tol");
             continue;
           }
@@ -312,7 +313,7 @@ std::vector<Touch> coarse_touches(const ModelSetup& su, const ModelState& st, do
   const MeshState& mesh = st.mesh;
   std::vector<Vec2> p0 = nd.x, p1 = nd.x;
   for (int n : mesh.coarse_dofs) p1[n] = nd.x[n] + su.dt * nd.v[n];
-  return find_touches(su, st, true, t0, t0 + su.dt, p0, p1);
+  return find_touches(su, st, true, t0, t0, t0 + su.dt, p0, p1);
 }
 
 // Sect. 3's two time stages over a coarse step (without subdivision, and
