@@ -16,6 +16,54 @@ using namespace detail;
 
 namespace {
 
+// A node moving p0 -> p1 against the edge a0 -> a1, b0 -> b1 over one
+// interval (all motions linear in s in [0, 1]): w = p - a and e = b - a at
+// s = 0 and their changes over the interval, and the coefficients of
+// G(s) = cross(w, e) = c0 + c1 s + c2 s^2, the signed gap times the edge
+// length (positive on the outer side of a CCW boundary edge).
+struct SweptGap {
+  Vec2 w0, dw, e0, de;
+  double c0, c1, c2;
+};
+
+SweptGap swept_gap(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1) {
+  SweptGap g;
+  g.w0 = p0 - a0;
+  g.dw = (p1 - a1) - g.w0;
+  g.e0 = b0 - a0;
+  g.de = (b1 - a1) - g.e0;
+  g.c0 = cross(g.w0, g.e0);
+  g.c1 = cross(g.w0, g.de) + cross(g.dw, g.e0);
+  g.c2 = cross(g.dw, g.de);
+  return g;
+}
+
+// G taken as linear: |c2| below 1e-12 of the coefficients' magnitude.
+bool gap_is_linear(const SweptGap& g) {
+  return std::fabs(g.c2) <= 1e-12 * (std::fabs(g.c0) + std::fabs(g.c1) + std::fabs(g.c2));
+}
+
+// The real roots of G(s) = c0 + c1 s + c2 s^2 in increasing order, into r;
+// returns their count (0 to 2). Linear (gap_is_linear): a root only if
+// c1 != 0; the quadratic's roots by the cancellation-free form
+// q = -(c1 + sign(c1) sqrt(disc)) / 2, r = q / c2 and c0 / q.
+int gap_roots(const SweptGap& g, double r[2]) {
+  const double c0 = g.c0, c1 = g.c1, c2 = g.c2;
+  if (gap_is_linear(g)) {
+    if (c1 == 0.0) return 0;
+    r[0] = -c0 / c1;
+    return 1;
+  }
+  const double disc = c1 * c1 - 4.0 * c2 * c0;
+  if (disc < 0.0) return 0;
+  const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+  r[0] = q / c2;
+  if (q == 0.0) return 1;
+  r[1] = c0 / q;
+  if (r[0] > r[1]) std::swap(r[0], r[1]);
+  return 2;
+}
+
 // Touch of a node moving p0 -> p1 with the edge a0 -> a1, b0 -> b1 over one
 // interval (all motions linear in s in [0, 1]): the collision path of
 // Paper B Sect. 3. G(s) = cross(p - a, b - a) is the signed gap times the
@@ -25,11 +73,9 @@ namespace {
 // A node that starts on or up to tol behind the edge and approaches touches
 // at s = 0.
 bool swept_touch(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double tol, double& s_out, double& xi_out) {
-  const Vec2 w0 = p0 - a0, dw = (p1 - a1) - w0;
-  const Vec2 e0 = b0 - a0, de = (b1 - a1) - e0;
-  const double c0 = cross(w0, e0);
-  const double c1 = cross(w0, de) + cross(dw, e0);
-  const double c2 = cross(dw, de);
+  const SweptGap g = swept_gap(p0, p1, a0, a1, b0, b1);
+  const Vec2 w0 = g.w0, dw = g.dw, e0 = g.e0, de = g.de;
+  const double c0 = g.c0, c1 = g.c1, c2 = g.c2;
   const double l0 = length(e0), l1 = length(e0 + de);
   if (!(l0 > 0.0) || !(l1 > 0.0)) return false;
   const double gap0 = c0 / l0;
@@ -47,24 +93,13 @@ bool swept_touch(Vec2 p0, Vec2 p1, Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1, double to
     if (!(c1 < 0.0 || gap1 < gap0)) return false;  // not approaching
     s = 0.0;
   } else {
-    // smallest root of c0 + c1 s + c2 s^2 in (0, 1]
-    const double scale = std::fabs(c0) + std::fabs(c1) + std::fabs(c2);
-    if (std::fabs(c2) <= 1e-12 * scale) {
-      if (!(c1 < 0.0)) return false;
-      s = -c0 / c1;
-    } else {
-      const double disc = c1 * c1 - 4.0 * c2 * c0;
-      if (disc < 0.0) return false;
-      const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-      double r1 = q / c2, r2 = q != 0.0 ? c0 / q : 2.0;
-      if (r1 > r2) std::swap(r1, r2);
-      if (r1 > 0.0 && r1 <= 1.0)
-        s = r1;
-      else if (r2 > 0.0 && r2 <= 1.0)
-        s = r2;
-      else
-        return false;
-    }
+    // the smallest root of G in (0, 1] (a linear G's up to 1 + 1e-12, then
+    // taken as 1)
+    double r[2];
+    const int roots = gap_roots(g, r);
+    const double last = gap_is_linear(g) ? 1.0 + 1e-12 : 1.0;
+    for (int k = roots - 1; k >= 0; --k)
+      if (r[k] > 0.0 && r[k] <= last) s = r[k];
     if (!(s > 0.0 && s <= 1.0 + 1e-12)) return false;
     s = std::min(s, 1.0);
   }
@@ -210,21 +245,10 @@ double deepest_passage(const MeshState& mesh, int b, int node, const std::vector
   std::vector<double> cuts{0.0, 1.0};
   for (int ei : mesh.block_bedges[static_cast<std::size_t>(b)]) {
     const BoundaryEdge& e = mesh.bedges[static_cast<std::size_t>(ei)];
-    const Vec2 w0 = p0[node] - p0[e.a], dw = (p1[node] - p1[e.a]) - w0;
-    const Vec2 e0 = p0[e.b] - p0[e.a], de = (p1[e.b] - p1[e.a]) - e0;
-    const double c0 = cross(w0, e0), c1 = cross(w0, de) + cross(dw, e0), c2 = cross(dw, de);
-    auto add = [&](double r) {
-      if (r > 0.0 && r < 1.0) cuts.push_back(r);
-    };
-    if (c2 == 0.0) {
-      if (c1 != 0.0) add(-c0 / c1);
-      continue;
-    }
-    const double disc = c1 * c1 - 4.0 * c2 * c0;
-    if (disc < 0.0) continue;
-    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-    add(q / c2);
-    if (q != 0.0) add(c0 / q);
+    double r[2];
+    const int roots = gap_roots(swept_gap(p0[node], p1[node], p0[e.a], p1[e.a], p0[e.b], p1[e.b]), r);
+    for (int k = 0; k < roots; ++k)
+      if (r[k] > 0.0 && r[k] < 1.0) cuts.push_back(r[k]);
   }
   std::sort(cuts.begin(), cuts.end());
   // the pieces inside, and whether the run of inside pieces reaches s = 1
