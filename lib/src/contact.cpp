@@ -314,11 +314,12 @@ template <bool kMinus>
 //       t* = (c_j - c_i) / (s_i - s_j),  0 < t* < 1
 //     (the ray test's num / den, the same value whichever line is the ray's
 //     first) no line lies below both: min_k l_k(t*) = min(l_i, l_j)(t*) =
-//     d* > 0. Then d_exit = l_i on [0, t*] and l_j on [t*, 1] (a line
-//     through neither end's minimum that stays above both at t* stays
-//     above the envelope), the paper's points split these two pieces only,
-//     and its sum is the two trapezoids 0 -> t* -> 1 with f* = k d*, the
-//     traction the paper's rule takes at that crossing (the same bits).
+//     d* > 0. Then d_exit = l_i on [0, t*] and l_j on [t*, 1]: every line
+//     l_k is >= l_i at 0 and at t*, so on [0, t*] (linear), where l_i <=
+//     l_j; likewise >= l_j on [t*, 1]. t* passes the ray test (d* >= 0),
+//     the paper's other points split these two pieces only, and its sum is
+//     the two trapezoids 0 -> t* -> 1 with f* = k d*, the traction the
+//     paper's rule takes at that crossing (the same bits).
 // Both need the traction linear on each piece: the end distances > 0 (the
 // clamp d > 0 ? k d : 0 would bend it), or the end known on this side's
 // boundary (zero_start / zero_end: d = 0 there, f = 0). The midpoint's
