@@ -259,6 +259,48 @@ TEST_CASE("edge sources from the fused overlap call change the force only by rou
   CHECK(fewer > compared / 4);
 }
 
+TEST_CASE("edges nearest to one or two lines of a polygon beyond eight vertices: the plain call's force", "[contact]") {
+  // The edge kernel with the vertex count read at run time (9 to 16
+  // vertices): with sources, the edges on which one line, or two adjacent
+  // lines, of the other polygon are nearest all along are integrated as one
+  // or two trapezoids; force and loading point match the plain call (every
+  // demarcation point) to round-off of the force scale, with fewer segments
+  // on some pairs.
+  Lcg rng{4242};
+  auto polygon = [&rng](Vec2 c, double r) {
+    const int n = 9 + static_cast<int>(rng.uniform(0.0, 8.0));
+    Vec2 p[16];
+    double a = rng.uniform(0.0, 6.3);
+    for (int k = 0; k < n; ++k) {
+      p[k] = c + rng.uniform(0.8, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
+      a += 2.0 * M_PI / n * rng.uniform(0.8, 1.0);
+    }
+    return make_polygon(p, n);
+  };
+  int compared = 0, fewer = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Polygon cp = polygon({0, 0}, 1.0);
+    const Polygon tp = polygon({rng.uniform(-1.6, 1.6), rng.uniform(-1.6, 1.6)}, rng.uniform(0.3, 1.5));
+    if (!validate_polygon(cp.v.data(), cp.count).ok() || !validate_polygon(tp.v.data(), tp.count).ok()) continue;
+    const double tol = pair_tolerance(cp, tp);
+    Polygon ip;
+    std::array<IpEdge, kMaxVertices> src;
+    if (overlap_and_intersection(cp, tp, tol, ip, src.data()) != OverlapState::kOverlapping || ip.count < 3) continue;
+    const PotentialSide a{cp, 1e7, 0.01}, b{tp, 2e7, 0.01};
+    const NormalForce plain = normal_contact_force(a, b, ip, Integration::kPaperBisector, tol);
+    const NormalForce fused = normal_contact_force(a, b, ip, Integration::kPaperBisector, tol, src.data());
+    REQUIRE(plain.valid == fused.valid);
+    if (!plain.valid) continue;
+    CHECK(length(fused.force - plain.force) <= 1e-12 * length(plain.force));
+    CHECK(length(fused.point - plain.point) <= 1e-9 * (1.0 + length(plain.point)));
+    CHECK(fused.segments <= plain.segments);
+    if (fused.segments < plain.segments) ++fewer;
+    ++compared;
+  }
+  CHECK(compared > 300);
+  CHECK(fewer > compared / 4);
+}
+
 TEST_CASE("vertex rays: the paired crossing test gives the general one's bits", "[contact]") {
   // With no small edge, bisectors() gives exactly the n vertex rays (lines
   // i - 1 and i, d0 = 0), and the force kernel tests them two at a time;
