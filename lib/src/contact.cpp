@@ -655,7 +655,9 @@ template <int kNc, int kNt>
   // The sums in locals, the result built once at the end: a NormalForce
   // made first would be zeroed (a string store) and its counters summed
   // through memory in the edge loop.
-  Vec2 force{};
+  // The force's two components in lanes: one product and one sum for both
+  // (the same operations as Vec2's, lane by lane).
+  Lanes force_lanes = {0.0, 0.0};
   double moment = 0.0;     // about the IP centroid
   double perimeter = 0.0;  // NormalForce::ip_perimeter
   int segments = 0;        // NormalForce::segments
@@ -718,9 +720,11 @@ template <int kNc, int kNt>
     }
     segments += sums.segments;
     const Vec2 n = ip.normal(e);
-    force += (0.5 * len * sums.s0) * n;
-    moment += cross((0.5 * len * sums.s0) * (a - c) + (len * sums.s1 * kSixth) * ab, n);
+    const double w = 0.5 * len * sums.s0;
+    force_lanes += Lanes{w, w} * detail::lanes(n);
+    moment += cross(w * (a - c) + (len * sums.s1 * kSixth) * ab, n);
   }
+  const Vec2 force = detail::vec2(force_lanes);
   // Every member written (in declaration order: force, point, moment,
   // couple, ip_centroid, ip_area, ip_perimeter, segments, valid), so that
   // nothing is zeroed first; a vanishing net force leaves force, point and
