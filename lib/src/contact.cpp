@@ -652,6 +652,7 @@ template <int kNc, int kNt>
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
                                          : area_centroid(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
+  const Lanes c_lanes = detail::lanes(c);
   // The sums in locals, the result built once at the end: a NormalForce
   // made first would be zeroed (a string store) and its counters summed
   // through memory in the edge loop.
@@ -722,7 +723,12 @@ template <int kNc, int kNt>
     const Vec2 n = ip.normal(e);
     const double w = 0.5 * len * sums.s0;
     force_lanes += Lanes{w, w} * detail::lanes(n);
-    moment += cross(w * (a - c) + (len * sums.s1 * kSixth) * ab, n);
+    // cross(w (a - c) + w1 ab, n) lane by lane: u = {u.x, u.y}, u * {n.y, n.x},
+    // then the difference of the lanes (the same operations).
+    const double w1 = len * sums.s1 * kSixth;
+    const Lanes u = Lanes{w, w} * (detail::lanes(a) - c_lanes) + Lanes{w1, w1} * detail::lanes(ab);
+    const Lanes un = u * detail::swapped(detail::lanes(n));
+    moment += un[0] - un[1];
   }
   const Vec2 force = detail::vec2(force_lanes);
   // Every member written (in declaration order: force, point, moment,
