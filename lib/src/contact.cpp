@@ -359,7 +359,6 @@ template <int kN, bool kMinus>
   constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
   const LaneConstants* const kc = lane_constants();
   Lanes c[kCapacity], s[kCapacity];  // left uninitialised: the first `pairs` are set
-  const LaneMask sign = (LaneMask)load(kc->sign);
   if constexpr (kN >= 3 && kN <= 5) {
     // Each line's products in the lanes of its point, {n.x (v.x - a.x),
     // n.y (v.y - a.y)} and {n.x ab.x, n.y ab.y}, then the two lines' sums
@@ -369,6 +368,7 @@ template <int kN, bool kMinus>
     // are shared by more lines).
     using detail::lanes;
     const Lanes al = lanes(a), abl = lanes(ab);
+    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Lanes ni = lanes(poly.normal(i)), nj = lanes(poly.normal(j));
@@ -380,6 +380,7 @@ template <int kN, bool kMinus>
   } else {
     // The lines' components two at a time, {n_i.x, n_j.x} and so on.
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
+    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
