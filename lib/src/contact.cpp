@@ -54,6 +54,31 @@ inline double across_min(Lanes d) {
 #endif
 }
 
+// The lane constants of paper_side_edge, {x, x} each. GCC builds such a
+// constant from its scalar (movsd + unpcklpd: two instructions, again each
+// time register pressure evicts it); read through a pointer it cannot see
+// through, each is one memory operand. The same values: the same bits.
+struct alignas(16) LaneConstants {
+  double half[2];  // {1/2, 1/2}: the midpoint's t
+  double max[2];   // {DBL_MAX, DBL_MAX}: a fold's start
+  double sign[2];  // {-0.0, -0.0}: -x is x with the sign bit flipped
+};
+constexpr LaneConstants kLaneConstants = {{0.5, 0.5}, {DBL_MAX, DBL_MAX}, {-0.0, -0.0}};
+inline const LaneConstants* lane_constants() {
+  const LaneConstants* k = &kLaneConstants;
+#if defined(__GNUC__)
+  asm("" : "+r"(k));  // opaque: not folded back into a built constant
+#endif
+  return k;
+}
+inline Lanes load(const double* pair) {
+#if defined(__SSE2__)
+  return _mm_load_pd(pair);
+#else
+  return Lanes{pair[0], pair[1]};
+#endif
+}
+
 // The signed distances inside one polygon's edge lines along one IP edge
 // a + t (b - a), t in [0, 1]: d_i(t) = c_i + s_i t (Eq. 13), so that
 // d_exit(t) = min_i d_i(t) (Eq. 14). Built once per edge and side; every
@@ -332,26 +357,47 @@ template <int kN, bool kMinus>
   const int n = kN ? kN : poly.count;
   const int pairs = (n + 1) / 2;
   constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
+  const LaneConstants* const kc = lane_constants();
   Lanes c[kCapacity], s[kCapacity];  // left uninitialised: the first `pairs` are set
-  {
+  if constexpr (kN >= 3 && kN <= 5) {
+    // Each line's products in the lanes of its point, {n.x (v.x - a.x),
+    // n.y (v.y - a.y)} and {n.x ab.x, n.y ab.y}, then the two lines' sums
+    // across: the same operations as the scalar dot products, with no
+    // broadcast of a and ab (measured: fewer instructions for triangles to
+    // pentagons, more for hexagons and octagons, where the broadcasts below
+    // are shared by more lines).
+    using detail::lanes;
+    const Lanes al = lanes(a), abl = lanes(ab);
+    const LaneMask sign = (LaneMask)load(kc->sign);
+    for (int p = 0; p < pairs; ++p) {
+      const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
+      const Lanes ni = lanes(poly.normal(i)), nj = lanes(poly.normal(j));
+      const Lanes pi = ni * (lanes(poly.vertex(i)) - al), pj = nj * (lanes(poly.vertex(j)) - al);
+      const Lanes qi = ni * abl, qj = nj * abl;
+      c[p] = detail::low_lanes(pi, pj) + detail::high_lanes(pi, pj);                        // dot(n, v - a)
+      s[p] = (Lanes)((LaneMask)(detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj)) ^ sign);  // -dot(n, ab)
+    }
+  } else {
+    // The lines' components two at a time, {n_i.x, n_j.x} and so on.
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
+    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
       const Lanes nx = {ni.x, nj.x}, ny = {ni.y, nj.y};
       c[p] = nx * (Lanes{vi.x, vj.x} - ax) + ny * (Lanes{vi.y, vj.y} - ay);  // dot(n, v - a)
-      s[p] = -(nx * abx + ny * aby);                                         // -dot(n, ab)
+      s[p] = (Lanes)((LaneMask)(nx * abx + ny * aby) ^ sign);                // -dot(n, ab)
     }
   }
   // d_exit at t: EdgeLines::at's fold (at_start: t = 0 without the products,
   // at_end: t = 1 without them).
-  const auto at = [&](double t) {
-    const Lanes tt = {t, t};
-    Lanes d = {DBL_MAX, DBL_MAX};
+  const auto fold_at = [&](Lanes tt) {
+    Lanes d = load(kc->max);
     for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
     return across_min(d);
   };
-  const double mid = at(0.5);
+  const auto at = [&](double t) { return fold_at(Lanes{t, t}); };
+  const double mid = fold_at(load(kc->half));
   if (mid <= tol) return false;
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
@@ -360,7 +406,7 @@ template <int kN, bool kMinus>
   // d_exit at the ends (at_start's and at_end's folds) and the lines that
   // attain it there.
   Lanes e[kCapacity];  // c_i + s_i: d_i(1)
-  Lanes m0 = {DBL_MAX, DBL_MAX}, m1 = {DBL_MAX, DBL_MAX};
+  Lanes m0 = load(kc->max), m1 = m0;
   for (int p = 0; p < pairs; ++p) {
     e[p] = c[p] + s[p];
     m0 = lane_min(m0, c[p]);
@@ -402,7 +448,7 @@ template <int kN, bool kMinus>
         const double t = num / den;
         const Lanes tt = {t, t};
         Lanes v[kCapacity];
-        Lanes d = {DBL_MAX, DBL_MAX};
+        Lanes d = load(kc->max);
         for (int p = 0; p < pairs; ++p) {
           v[p] = c[p] + s[p] * tt;
           d = lane_min(d, v[p]);
@@ -625,10 +671,13 @@ template <int kNc, int kNt>
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
                                          : area_centroid(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
+  const Lanes c_lanes = detail::lanes(c);
   // The sums in locals, the result built once at the end: a NormalForce
   // made first would be zeroed (a string store) and its counters summed
   // through memory in the edge loop.
-  Vec2 force{};
+  // The force's two components in lanes: one product and one sum for both
+  // (the same operations as Vec2's, lane by lane).
+  Lanes force_lanes = {0.0, 0.0};
   double moment = 0.0;     // about the IP centroid
   double perimeter = 0.0;  // NormalForce::ip_perimeter
   int segments = 0;        // NormalForce::segments
@@ -691,9 +740,16 @@ template <int kNc, int kNt>
     }
     segments += sums.segments;
     const Vec2 n = ip.normal(e);
-    force += (0.5 * len * sums.s0) * n;
-    moment += cross((0.5 * len * sums.s0) * (a - c) + (len * sums.s1 * kSixth) * ab, n);
+    const double w = 0.5 * len * sums.s0;
+    force_lanes += Lanes{w, w} * detail::lanes(n);
+    // cross(w (a - c) + w1 ab, n) lane by lane: u = {u.x, u.y}, u * {n.y, n.x},
+    // then the difference of the lanes (the same operations).
+    const double w1 = len * sums.s1 * kSixth;
+    const Lanes u = Lanes{w, w} * (detail::lanes(a) - c_lanes) + Lanes{w1, w1} * detail::lanes(ab);
+    const Lanes un = u * detail::swapped(detail::lanes(n));
+    moment += un[0] - un[1];
   }
+  const Vec2 force = detail::vec2(force_lanes);
   // Every member written (in declaration order: force, point, moment,
   // couple, ip_centroid, ip_area, ip_perimeter, segments, valid), so that
   // nothing is zeroed first; a vanishing net force leaves force, point and
