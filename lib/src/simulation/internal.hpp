@@ -114,7 +114,7 @@ class Engine {
   void each_contact(Each each) const;
   // setup.cpp
   void bind_sides();
-  void build_blocks();
+  void build_blocks(const std::vector<BlockSpec>& blocks);
   void choose_potential_length();
   void choose_broad_phase_skin();
   // integration.cpp: per block, half kick, drift, geometry, body force; gather, kick
@@ -186,7 +186,11 @@ class Engine {
     return {c, geometry_.data() + 2 * o, geometry_.data() + 2 * o + c};
   }
 
+  // The scene's settings; its blocks are not kept (build_blocks made the
+  // arrays below from them), only their names when the scene names a
+  // block (block_label; else empty).
   Scene scene_;
+  std::vector<std::string> block_names_;
   double dt_ = 0.0;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
