@@ -111,16 +111,27 @@ void Engine::update_block_geometry(int i) {
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
   if (scene_.contact.integration == Integration::kPaperBisector) {
-    // Without a small edge the bisectors are the vertex rays, the same list
-    // from step to step: rebuilt only when a small edge comes or goes. The
-    // stored list is the vertex rays exactly when it has one ray per vertex
-    // (a virtual node adds a ray, or replaces two by one), 0 before the first.
+    // Without a small edge the bisectors are the vertex rays, the shared
+    // list of the vertex count (detail::vertex_rays): set only when a small
+    // edge comes or goes. The side's list is the vertex rays exactly when it
+    // has one ray per vertex (a virtual node adds a ray, or replaces two by
+    // one), 0 before the first. With a small edge the block's own list,
+    // made the first time (room for a vertex ray and a virtual node per
+    // edge), rebuilt every step.
     const double small = scene_.contact.small_edge_fraction * h_[i];
     const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     PotentialSide& side = sides_[i].side;
-    if (!(plain && side.bisector_count == side.poly.count))
-      side.bisector_count =
-          bisectors(side.poly, small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
+    if (plain) {
+      if (side.bisector_count != side.poly.count) {
+        side.bisectors = detail::vertex_rays(side.poly.count);
+        side.bisector_count = side.poly.count;
+      }
+    } else {
+      std::unique_ptr<Bisector[]>& own = own_bisectors_[b];
+      if (!own) own.reset(new Bisector[static_cast<std::size_t>(2 * side.poly.count)]);
+      side.bisectors = own.get();
+      side.bisector_count = bisectors(side.poly, small, scene_.contact.small_edge_rays, own.get());
+    }
   }
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;

@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,7 @@ class TeamBarrier;  // team_barrier.hpp
 // function with the engine as its `this` (the hot loops read the state
 // directly); Simulation owns one and forwards each public call to it once
 // (run_steps once per advance). Not copyable: each block's contact side
-// points into the engine's own geometry pool and bisector store.
+// points into the engine's own geometry pool and bisector lists.
 class Engine {
  public:
   using PhaseIndex = Simulation::PhaseIndex;
@@ -285,9 +286,14 @@ class Engine {
 
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
-  // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count sides_[i].side.bisector_count.
-  std::vector<Bisector> bisector_store_;
-  std::vector<int> bisector_offset_;
+  // geometry: sides_[i].side.bisectors, count sides_[i].side.bisector_count.
+  // Without a small edge they are the vertex rays, which depend on the
+  // vertex count only: the side points into the shared detail::vertex_rays
+  // table. A block with a small edge (a virtual node) gets a list of its
+  // own, room for 2 rays per vertex, the first time it has one, kept in
+  // own_bisectors_[i] (empty for every other block: 8 bytes a block, where
+  // a list per block cost 32 bytes a vertex).
+  std::vector<std::unique_ptr<Bisector[]>> own_bisectors_;
   std::vector<BlockSide> sides_;
   // The overlap test's facts of each block's polygon, rebuilt with the
   // geometry (block_facts): sharp_corners() (the clipper's bevels when the
@@ -442,6 +448,24 @@ struct alignas(64) Engine::BlockSide {
 };
 
 namespace detail {
+
+// The vertex rays of a polygon of n = 3 .. kMaxVertices vertices, what
+// bisectors() gives without a small edge: ray k between edges k - 1 and k
+// (mod n) from vertex k, d0 = 0. Polygon n's begin at n (n - 1) / 2.
+constexpr int kVertexRayEntries = kMaxVertices * (kMaxVertices + 1) / 2;
+constexpr std::array<Bisector, kVertexRayEntries> make_vertex_rays() {
+  std::array<Bisector, kVertexRayEntries> rays{};
+  for (int n = 3; n <= kMaxVertices; ++n)
+    for (int k = 0; k < n; ++k) {
+      Bisector& b = rays[static_cast<std::size_t>(n * (n - 1) / 2 + k)];
+      b.line_a = k == 0 ? n - 1 : k - 1;
+      b.line_b = k;
+      b.d0 = 0.0;
+    }
+  return rays;
+}
+inline constexpr std::array<Bisector, kVertexRayEntries> kVertexRays = make_vertex_rays();
+inline const Bisector* vertex_rays(int n) { return kVertexRays.data() + n * (n - 1) / 2; }
 
 // With a team, the per-block and per-pair loops prefetch the data of the
 // block (pair) this many ahead: a line last written or read by the other

@@ -312,31 +312,24 @@ void Engine::build_blocks(const std::vector<BlockSpec>& blocks) {
     }
   }
   boxes_.resize(n);
-  // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
-  bisector_offset_.assign(n, 0);
+  own_bisectors_.resize(n);  // a block's own bisector list only once it has a small edge
   sides_.assign(n, BlockSide{});
   sharp_corners_.assign(n, 0u);
   support_.assign(n, nullptr);
-  int total = 0, pairs = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    bisector_offset_[i] = total;
-    total += 2 * poly[i].count;
-    pairs += support_line_pairs(poly[i].count);
-  }
-  bisector_store_.resize(static_cast<std::size_t>(total));
+  int pairs = 0;
+  for (std::size_t i = 0; i < n; ++i) pairs += support_line_pairs(poly[i].count);
   support_store_.assign(static_cast<std::size_t>(pairs), SupportLines::Pair{});
   for (std::size_t i = 0; i < n; ++i) sides_[i].side.small_edge_rays = scene_.contact.small_edge_rays;
   bind_sides();
 }
 
 void Engine::bind_sides() {
-  // Each block's contact side reads its polygon from the geometry pool and
-  // its bisectors from the bisector store; its support lines are in the
+  // Each block's contact side reads its polygon from the geometry pool
+  // (its bisectors: update_block_geometry); its support lines are in the
   // support store, support_line_pairs(count) per block in block order.
   std::size_t pairs = 0;
   for (std::size_t i = 0; i < sides_.size(); ++i) {
     sides_[i].side.poly = polygon_view(static_cast<int>(i));
-    sides_[i].side.bisectors = bisector_store_.data() + bisector_offset_[i];
     support_[i] = support_store_.data() + pairs;
     pairs += static_cast<std::size_t>(support_line_pairs(sides_[i].side.poly.count));
   }

@@ -9,6 +9,7 @@
 // shares (measured core speeds, the split of blocks and pairs) is not saved
 // either: it changes the time a step takes, never its bits.
 #include <algorithm>
+#include <cstring>
 
 #include "dda/state_bytes.hpp"
 #include "simulation/internal.hpp"
@@ -18,7 +19,7 @@ namespace dda {
 namespace {
 
 // The stream's layout; a change of what is saved changes it.
-constexpr std::uint32_t kStateLayout = 1;
+constexpr std::uint32_t kStateLayout = 2;
 
 // One field of a record, written (Put) or read into the record (Get).
 struct Put {
@@ -174,7 +175,6 @@ void Engine::save_state(ByteWriter& w) const {
   w.i32(block_count());
   w.i32(scene_blocks_);
   w.u64(geometry_.size());
-  w.u64(bisector_store_.size());
   w.f64(dt_);
   w.boolean(strains_);
   w.boolean(friction_);
@@ -195,7 +195,12 @@ void Engine::save_state(ByteWriter& w) const {
   put_list(w, geometry_, value);
   put_list(w, moments_, moments);
   put_list(w, boxes_, box);
-  put_list(w, bisector_store_, bisector);
+  {
+    // Each block's bisectors in block order, as many as its side counts.
+    std::vector<Bisector> listed;
+    for (const BlockSide& b : sides_) listed.insert(listed.end(), b.side.bisectors, b.side.bisectors + b.side.bisector_count);
+    put_list(w, listed, bisector);
+  }
   put_list(w, sides_, block_side);
   for (const std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) put_list(w, *v, value);
   put_list(w, start_centroid_, value);
@@ -259,11 +264,10 @@ void Engine::restore_state(ByteReader& r) {
   if (layout != kStateLayout)
     r.fail("state layout " + std::to_string(layout) + ", this build reads layout " + std::to_string(kStateLayout));
   const int blocks = r.i32(), scene_blocks = r.i32();
-  const std::uint64_t pool = r.u64(), bisectors = r.u64();
+  const std::uint64_t pool = r.u64();
   const double dt = r.f64();
   const bool strains = r.boolean(), friction = r.boolean(), exact = r.boolean();
-  if (blocks != block_count() || scene_blocks != scene_blocks_ || pool != geometry_.size() ||
-      bisectors != bisector_store_.size())
+  if (blocks != block_count() || scene_blocks != scene_blocks_ || pool != geometry_.size())
     r.fail("a state of another scene: " + std::to_string(scene_blocks) + " blocks and " +
            std::to_string(blocks - scene_blocks) + " boundary polygons with " + std::to_string(pool / 2) +
            " vertices, this scene has " + std::to_string(scene_blocks_) + " and " +
@@ -284,14 +288,37 @@ void Engine::restore_state(ByteReader& r) {
   get_list(r, geometry_, geometry_.size(), "the geometry pool", value);
   get_list(r, moments_, n, "the area moments", moments);
   get_list(r, boxes_, n, "the boxes", box);
-  get_list(r, bisector_store_, bisector_store_.size(), "the bisector store", bisector);
+  std::vector<Bisector> rays_listed;
+  r.list(rays_listed, 16, element<Bisector>(bisector));
   if (r.count(1) != n) r.fail("the contact sides do not match the blocks");
+  std::size_t at = 0;
   for (std::size_t i = 0; i < n; ++i) {
     Get io{r};
     block_side(io, sides_[i]);
-    const int count = sides_[i].side.bisector_count;
-    if (count < 0 || count > 2 * polygon_view(static_cast<int>(i)).count) r.fail("a block's bisector count is out of range");
+    PotentialSide& side = sides_[i].side;
+    const int count = side.bisector_count, vertices = polygon_view(static_cast<int>(i)).count;
+    if (count < 0 || count > 2 * vertices || at + static_cast<std::size_t>(count) > rays_listed.size())
+      r.fail("a block's bisector count is out of range");
+    // The vertex rays (bit for bit) point to the shared list, others to the block's own.
+    const Bisector* const from = rays_listed.data() + at;
+    const Bisector* const rays = detail::vertex_rays(vertices);
+    bool plain = count == vertices;
+    for (int k = 0; plain && k < count; ++k)
+      plain = from[k].line_a == rays[k].line_a && from[k].line_b == rays[k].line_b &&
+                    std::memcmp(&from[k].d0, &rays[k].d0, sizeof(double)) == 0;
+    if (count == 0) {
+      side.bisectors = nullptr;
+    } else if (plain) {
+      side.bisectors = rays;
+    } else {
+      std::unique_ptr<Bisector[]>& own = own_bisectors_[i];
+      if (!own) own.reset(new Bisector[static_cast<std::size_t>(2 * vertices)]);
+      std::copy(from, from + count, own.get());
+      side.bisectors = own.get();
+    }
+    at += static_cast<std::size_t>(count);
   }
+  if (at != rays_listed.size()) r.fail("the bisector list does not match the blocks' counts");
   for (std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", value);
   get_list(r, start_centroid_, n, "the step-start centroids", value);
   get_list(r, step_motion2_, n, "the step motions", value);
