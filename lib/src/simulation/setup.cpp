@@ -242,7 +242,6 @@ void Engine::build_blocks(const std::vector<BlockSpec>& blocks) {
   moments_.resize(n);
   vel_.assign(n, Vec6::Zero());
   acc_.assign(n, Vec6::Zero());
-  force_.assign(n, Vec6::Zero());
   step_disp_.assign(n, Vec6::Zero());
   step_motion2_.assign(n, 0.0);
   start_centroid_.assign(n, Vec2{});

@@ -202,7 +202,7 @@ void Engine::save_state(ByteWriter& w) const {
     put_list(w, listed, bisector);
   }
   put_list(w, sides_, block_side);
-  for (const std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) put_list(w, *v, value);
+  for (const std::vector<Vec6>* v : {&vel_, &acc_, &step_disp_, &disp_}) put_list(w, *v, value);
   put_list(w, start_centroid_, value);
   put_list(w, step_motion2_, value);
   put_list(w, stress_, value);
@@ -319,7 +319,7 @@ void Engine::restore_state(ByteReader& r) {
     at += static_cast<std::size_t>(count);
   }
   if (at != rays_listed.size()) r.fail("the bisector list does not match the blocks' counts");
-  for (std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", value);
+  for (std::vector<Vec6>* v : {&vel_, &acc_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", value);
   get_list(r, start_centroid_, n, "the step-start centroids", value);
   get_list(r, step_motion2_, n, "the step motions", value);
   get_list(r, stress_, n, "the stresses", value);
