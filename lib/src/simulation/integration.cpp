@@ -92,8 +92,10 @@ void Engine::prefetch_block(int i) const {
 void Engine::prefetch_gather(int i) const {
   // Block i's pair loads (the other core wrote those of its pairs), the
   // stress of its body force and the velocity its kick writes.
-  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q)
-    __builtin_prefetch(&pair_loads_[block_pairs_[q].pair]);
+  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
+    __builtin_prefetch(&near_pairs_[block_pairs_[q]]);
+    __builtin_prefetch(&pair_loads_[block_pairs_[q]]);
+  }
   __builtin_prefetch(&vel_[i], 1);
   __builtin_prefetch(&stress_[i]);
 }
@@ -111,6 +113,7 @@ void Engine::update_block_geometry(int i) {
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
   if (scene_.contact.integration == Integration::kPaperBisector) {
+    PotentialSide& side = sides_[i].side;
     // Without a small edge the bisectors are the vertex rays, the shared
     // list of the vertex count (detail::vertex_rays): set only when a small
     // edge comes or goes. The side's list is the vertex rays exactly when it
@@ -118,9 +121,8 @@ void Engine::update_block_geometry(int i) {
     // one), 0 before the first. With a small edge the block's own list,
     // made the first time (room for a vertex ray and a virtual node per
     // edge), rebuilt every step.
-    const double small = scene_.contact.small_edge_fraction * h_[i];
+    const double small = side.small_edge;  // small_edge_fraction H (choose_potential_length)
     const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
-    PotentialSide& side = sides_[i].side;
     if (plain) {
       if (side.bisector_count != side.poly.count) {
         side.bisectors = detail::vertex_rays(side.poly.count);
@@ -167,7 +169,8 @@ Vec6 Engine::gather_contact_forces(int i) {
   // smallest inscribed radius within its reach (itself and its candidates)
   // for the step-motion guard. The sum is kept in lanes (point_load_lanes)
   // and the arrays in locals: the force's stores could alias them.
-  const BlockPair* pairs = block_pairs_.data();
+  const int* pairs = block_pairs_.data();
+  const NearPair* near = near_pairs_.data();
   const PairLoad* loads = pair_loads_.data();
   const double* radius = radius_.data();
   double reach = radius[i];
@@ -176,18 +179,21 @@ Vec6 Engine::gather_contact_forces(int i) {
   const Vec6 body = body_force(i);
   detail::Lanes6 sum{{body[0], body[1]}, {body[2], body[3]}, {body[4], body[5]}};
   for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
-    const BlockPair& bp = pairs[q];
-    const PairLoad& load = loads[bp.pair];
-    if (!load.candidate) continue;
-    reach = std::min(reach, radius[bp.other]);
-    if (!load.active || !free_block) continue;
+    const int k = pairs[q];
+    const NearPair& p = near[k];
+    if (!p.candidate) continue;
+    // The other block's radius: reach already holds block i's (fewer
+    // instructions than choosing the other block).
+    reach = std::min(reach, std::min(radius[p.i], radius[p.j]));
+    if (!p.active || !free_block) continue;
+    const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     // A pair whose pg was kept within its IP carries the rest of Eq. 20's
     // moment as a couple on the rotation DOF (+ on the first block, - on
     // the second, as the force): only then, so that every other sum keeps
     // its bits.
     if (load.couple != 0.0) g.g23[0] += load.couple;
-    if (bp.other > i) {  // block i is the pair's first
+    if (p.i == i) {  // block i is the pair's first (the force acts on it with +)
       sum.g01 += g.g01;
       sum.g23 += g.g23;
       sum.g45 += g.g45;

@@ -97,15 +97,14 @@ class Engine {
   struct BornContact;   // a pair that began to touch in the pair loop, until merge_contacts
   struct alignas(64) ThreadContacts;  // a thread's pairs that began or stopped touching
   struct NearPair;      // a broad-phase pair
-  struct PairLoad;      // what a block's force sum reads of a pair
-  struct BlockPair;     // an entry of a block's near-pair list
+  struct PairLoad;      // what a block's force sum reads of a touching pair
   struct ThreadFlags;   // a thread's guard flags and measured speeds
   struct BlockShare;    // a thread's blocks in a per-block phase
   struct BlockSide;     // what a pair's contact reads of a block
 
   void compute_forces();
   void count_candidates();
-  // Touching pair k's contact (PairLoad::active, after merge_contacts): its
+  // Touching pair k's contact (NearPair::active, after merge_contacts): its
   // blocks (NearPair), load point and couple (PairLoad), forces, IP
   // measures and sliding flag (its contact slot).
   ContactInfo contact_info(std::size_t k) const;
@@ -254,9 +253,9 @@ class Engine {
   // sum over contacts runs in near-pair order (each_contact). Each field of
   // a contact is kept once: contacts() builds the public ContactInfo of
   // each touching pair from its pair, load and slot when it is called.
-  // near_pair_offset_ and block_pairs_ list each block's near pairs in
-  // increasing order (CSR), so that each block sums its contact forces in
-  // that fixed order.
+  // near_pair_offset_ and block_pairs_ list each block's near pairs (their
+  // indices) in increasing order (CSR), so that each block sums its contact
+  // forces in that fixed order; the pair names the other block.
   std::vector<NearPair> near_pairs_;
   std::vector<PairLoad> pair_loads_;
   std::vector<double> pair_friction_work_;   // per near pair, J/m; empty without friction
@@ -264,7 +263,7 @@ class Engine {
   std::vector<int> free_slots_;
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
-  std::vector<BlockPair> block_pairs_;
+  std::vector<int> block_pairs_;
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).
@@ -372,11 +371,15 @@ struct alignas(64) Engine::ContactSlot {
   PairHistory history;
 };
 
-// A near pair of the broad phase (i < j).
+// A near pair of the broad phase (i < j), and what the pair loop found of
+// it at this step (read by the per-block sum with the pair's blocks, in the
+// same 16 bytes).
 struct Engine::NearPair {
   int i = -1, j = -1;
-  int witness = -1;  // separating axis the overlap test found last (-1: none yet)
-  int slot = -1;     // its contact slot while it touches (PairLoad::active), else -1
+  int slot = -1;              // its contact slot while it touches (active), else -1
+  std::int16_t witness = -1;  // separating axis the overlap test found last (-1: none yet)
+  bool candidate = false;     // the two boxes overlap at this step
+  bool active = false;        // in contact: its load and PairResult are this step's
 };
 
 // A pair that began to touch at this step, kept by its thread until
@@ -395,22 +398,14 @@ struct alignas(64) Engine::ThreadContacts {
   std::vector<long> ended;
 };
 
-// What the per-block sum reads of each near pair, compact (its contact
-// slot spans two cache lines): written by the pair loop, read per block;
-// also the touching pair's ContactInfo::point and couple.
+// What the per-block sum reads of each touching near pair (NearPair::
+// active), compact (its contact slot spans two cache lines): written by the
+// pair loop, read per block; also the touching pair's ContactInfo::point
+// and couple. 40 bytes: the pair's flags are in its NearPair.
 struct Engine::PairLoad {
-  Vec2 force{};            // normal + tangential force on the pair's first block, N/m
-  Vec2 point{};            // loading point pg
-  double couple = 0.0;     // pure moment on the first block besides force at point (NormalForce::couple), N m/m
-  bool candidate = false;  // the two boxes overlap at this step
-  bool active = false;     // in contact: force, point and the PairResult are this step's
-};
-
-// One entry of block i's near-pair list: the pair and the other block.
-// Block i is the pair's first (the force acts on it with +) when other > i
-// (a near pair is i < j).
-struct Engine::BlockPair {
-  int pair = -1, other = -1;
+  Vec2 force{};         // normal + tangential force on the pair's first block, N/m
+  Vec2 point{};         // loading point pg
+  double couple = 0.0;  // pure moment on the first block besides force at point (NormalForce::couple), N m/m
 };
 
 // One flag block per thread, each on its own cache line: set in a
@@ -579,8 +574,8 @@ inline ContactInfo Engine::contact_info(std::size_t k) const {
 
 template <class Each>
 void Engine::each_contact(Each each) const {
-  for (std::size_t k = 0; k < pair_loads_.size(); ++k)
-    if (pair_loads_[k].active) each(k, contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)]);
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k)
+    if (near_pairs_[k].active) each(k, contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)]);
 }
 
 }  // namespace dda

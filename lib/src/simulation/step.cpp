@@ -94,7 +94,7 @@ std::vector<ContactInfo> Engine::contacts() const {
 void Engine::count_candidates() {
   // The candidate pairs of the last force evaluation, for the accessor.
   candidate_count_ = 0;
-  for (const PairLoad& l : pair_loads_) candidate_count_ += l.candidate ? 1 : 0;
+  for (const NearPair& p : near_pairs_) candidate_count_ += p.candidate ? 1 : 0;
 }
 
 }  // namespace dda
