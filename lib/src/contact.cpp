@@ -295,8 +295,37 @@ template <bool kMinus>
 // The lines two at a time as in EdgeLines (pair p: lines 2p, 2p + 1, an odd
 // count's last line repeated). Vertex rays (rays.count == kN) are tested
 // two at a time as in EdgeLines::vertex_crossings; an edge that crosses none
-// (most edges: a contact's IP edges are short against the blocks) is
-// integrated over its two halves with no list of crossings.
+// is integrated over its two halves with no list of crossings.
+//
+// One line, or two adjacent lines, nearest all along. On the edge
+// d_exit(t) = min_i l_i(t), l_i(t) = c_i + s_i t, is concave and piecewise
+// linear, and the paper's trapezoids (Eqs. 16-17) are exact on every piece
+// whose ends are demarcation points. Two cases need no ray test, no sort
+// and no distance at the midpoint or the crossings:
+//   - one line i attains the minimum at both ends (c_i = min_j c_j and
+//     c_i + s_i = min_j (c_j + s_j)): then d_exit = l_i on all of [0, 1]
+//     (d_exit <= l_i everywhere, and d_exit, concave, is >= its chord,
+//     which is l_i). Every demarcation point lies on one linear piece, so
+//     the paper's segments sum (in exact arithmetic) to the one trapezoid
+//     t0 = 0, t1 = 1:  S0 = fa + fb,  S1 = fa + 2 fb;
+//   - line i alone attains it at t = 0, line j alone at t = 1, i and j
+//     adjacent (the vertex ray between them is a demarcation point: the n
+//     vertex rays, rays.count == n), and at their crossing
+//       t* = (c_j - c_i) / (s_i - s_j),  0 < t* < 1
+//     (the ray test's num / den, the same value whichever line is the ray's
+//     first) no line lies below both: min_k l_k(t*) = min(l_i, l_j)(t*) =
+//     d* > 0. Then d_exit = l_i on [0, t*] and l_j on [t*, 1]: every line
+//     l_k is >= l_i at 0 and at t*, so on [0, t*] (linear), where l_i <=
+//     l_j; likewise >= l_j on [t*, 1]. t* passes the ray test (d* >= 0),
+//     the paper's other points split these two pieces only, and its sum is
+//     the two trapezoids 0 -> t* -> 1 with f* = k d*, the traction the
+//     paper's rule takes at that crossing (the same bits).
+// Both need the traction linear on each piece: the end distances > 0 (the
+// clamp d > 0 ? k d : 0 would bend it), or the end known on this side's
+// boundary (zero_start / zero_end: d = 0 there, f = 0). The midpoint's
+// tol test comes first, as on every edge. The sums differ from the paper's
+// segment by segment only by round-off; segments counts the trapezoids
+// integrated (1 or 2 here).
 template <int kN, bool kMinus>
 [[gnu::always_inline]] inline bool paper_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
                                                    double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
@@ -328,16 +357,68 @@ template <int kN, bool kMinus>
     if (!(d > 0.0)) return 0.0;
     return kMinus ? 0.0 - k * d : 0.0 + k * d;
   };
-  double f_start = 0.0, f_end = 0.0;
-  if (!zero_start) {
-    Lanes d = {DBL_MAX, DBL_MAX};
-    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p]);
-    f_start = traction(across_min(d));
+  // d_exit at the ends (at_start's and at_end's folds) and the lines that
+  // attain it there.
+  Lanes e[kCapacity];  // c_i + s_i: d_i(1)
+  Lanes m0 = {DBL_MAX, DBL_MAX}, m1 = {DBL_MAX, DBL_MAX};
+  for (int p = 0; p < pairs; ++p) {
+    e[p] = c[p] + s[p];
+    m0 = lane_min(m0, c[p]);
+    m1 = lane_min(m1, e[p]);
   }
-  if (!zero_end) {
-    Lanes d = {DBL_MAX, DBL_MAX};
-    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p]);
-    f_end = traction(across_min(d));
+  const double d0 = across_min(m0), d1 = across_min(m1);
+  const double f_start = zero_start ? 0.0 : traction(d0);
+  const double f_end = zero_end ? 0.0 : traction(d1);
+  if ((zero_start || d0 > 0.0) && (zero_end || d1 > 0.0)) {
+    // Bit i: line i attains d_exit at t = 0 (first) / t = 1 (last); an odd
+    // count's repeated line masked off.
+    const Lanes l0 = {d0, d0}, l1 = {d1, d1};
+    unsigned first = 0, last = 0;
+    for (int p = 0; p < pairs; ++p) {
+      first |= lane_bits(c[p] == l0) << (2 * p);
+      last |= lane_bits(e[p] == l1) << (2 * p);
+    }
+    if (n % 2) {
+      first &= ~(1u << n);
+      last &= ~(1u << n);
+    }
+    if (first & last) {
+      // One line nearest all along: the trapezoid t0 = 0, t1 = 1.
+      sums.s0 = f_start + f_end;
+      sums.s1 = f_start + 2.0 * f_end;
+      sums.segments = 1;
+      return true;
+    }
+    const int i = __builtin_ctz(first | 1u << 31), j = __builtin_ctz(last | 1u << 31);
+    const int ij = i - j;
+    if (rays.count == n && first == 1u << i && last == 1u << j && (ij == 1 || ij == -1 || ij == n - 1 || ij == 1 - n)) {
+      // Two adjacent lines, i nearest at the start, j at the end: their
+      // crossing t* = num / den inside (0, 1), then d* and the two
+      // trapezoids 0 -> t* (2 t0 + t1 = t*, t0 + 2 t1 = 2 t*) and t* -> 1
+      // (2 t* + 1, t* + 2).
+      const double ci = c[i >> 1][i & 1], cj = c[j >> 1][j & 1];
+      const double num = cj - ci, den = s[i >> 1][i & 1] - s[j >> 1][j & 1];
+      if (num > 0.0 && num < den) {
+        const double t = num / den;
+        const Lanes tt = {t, t};
+        Lanes v[kCapacity];
+        Lanes d = {DBL_MAX, DBL_MAX};
+        for (int p = 0; p < pairs; ++p) {
+          v[p] = c[p] + s[p] * tt;
+          d = lane_min(d, v[p]);
+        }
+        const double dt = across_min(d), vi = v[i >> 1][i & 1], vj = v[j >> 1][j & 1];
+        // No other line below the two at t*, and d* > 0 (t* inside P, the
+        // ray test's d >= 0, the traction unclamped).
+        if (dt > 0.0 && dt == (vj < vi ? vj : vi)) {
+          const double ft = traction(dt), u = 1.0 - t;
+          sums.s0 = t * (f_start + ft) + u * (ft + f_end);
+          sums.s1 = t * (f_start * t + ft * (2.0 * t)) + u * (ft * (2.0 * t + 1.0) + f_end * (t + 2.0));
+          sums.segments = 2;
+          return true;
+        }
+      }
+    }
   }
   const double f_mid = traction(mid);
   // The crossings strictly inside (0, 1), in ray order (Crossings::add's

@@ -60,7 +60,7 @@ struct NormalForce {
   Vec2 ip_centroid{};    // centroid of the intersection polygon
   double ip_area = 0.0;  // m^2
   double ip_perimeter = 0.0;  // m, the edges longer than tol
-  int segments = 0;      // integration segments used
+  int segments = 0;      // integration segments used (trapezoids of Eqs. 16-17 summed)
   bool valid = false;    // false when the net force vanishes
 };
 
