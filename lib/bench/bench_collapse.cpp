@@ -31,9 +31,9 @@
 //
 // --scaling: the same generator on bigger or smaller regions, ~10^2 .. 10^4
 // blocks (--max-blocks 100000: on to 3 x 10^4 and 10^5, minutes each;
-// --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~1.5 kB of heap per block
-// constructed and ~1.9 kB at the end of the run (the touching pairs' contact
-// slots): ~1.9 GB per simulation at 10^6, two of them alive at once for the
+// --max-blocks 1000000: on to 3 x 10^5 and 10^6, ~1.1 kB of heap per block
+// constructed and ~1.5 kB at the end of the run (the touching pairs' contact
+// slots): ~1.5 GB per simulation at 10^6, two of them alive at once for the
 // 1- and 2-thread runs); --min-blocks N leaves out the rows below N, --max-threads 1
 // runs each row with 1 thread only (the 10^6 row in half the time). A table
 // of blocks, pairs per step, wall and CPU us per step, ns per block-step and

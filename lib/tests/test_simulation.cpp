@@ -505,3 +505,19 @@ TEST_CASE("a moved simulation runs on: the same bits as one never moved", "[simu
   shorter.advance(150);
   CHECK(state_hash(shorter) != state_hash(reference));
 }
+
+TEST_CASE("a simulation keeps the scene's settings, not its blocks", "[simulation]") {
+  Scene s = paper::symmetric_stack().scene;
+  s.materials.push_back({2500.0, 2e9, 0.2});
+  s.blocks[1].material = 1;
+  Simulation sim(s);
+  CHECK(sim.scene().blocks.empty());
+  CHECK(sim.scene().materials.size() == 2);
+  CHECK(sim.scene().boundaries.size() == s.boundaries.size());
+  CHECK(sim.scene().contact.kn == s.contact.kn);
+  CHECK(sim.scene().duration == s.duration);
+  CHECK(sim.scene().guards.max_step_motion == s.guards.max_step_motion);
+  CHECK(sim.scene_block_count() == static_cast<int>(s.blocks.size()));
+  for (int i = 0; i < sim.scene_block_count(); ++i) CHECK(sim.material(i) == s.blocks[static_cast<std::size_t>(i)].material);
+  for (int i = sim.scene_block_count(); i < sim.block_count(); ++i) CHECK(sim.material(i) == -1);
+}

@@ -5,9 +5,12 @@
 // such a state is refused.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <string>
 
 #include "dda/joint_sets.hpp"
+#include "dda/potential.hpp"
+#include "dda/robustness_scenes.hpp"
 #include "dda/simulation.hpp"
 #include "dda/state_bytes.hpp"
 #include "test_helpers.hpp"
@@ -103,6 +106,26 @@ TEST_CASE("a restored simulation runs on with the same bits as the one saved", "
     Variant v;
     v.strains = false;
     check_round_trip(collapsing_column(v), 0, 200, 1);
+  }
+  SECTION("a block with a small edge: bisectors of its own (a virtual node), the others the shared vertex rays") {
+    for (SmallEdgeRays rays : {SmallEdgeRays::kVirtualAndVertex, SmallEdgeRays::kVirtualReplacesVertex}) {
+      paper::SmallEdgeImpact si = paper::small_edge_impact(paper::SmallEdgeCase::kOnSmallEdge);
+      si.scene.contact.small_edge_rays = rays;
+      Simulation probe(si.scene);
+      probe.advance(300);
+      REQUIRE(probe.contact_count() > 0);
+      // Some block's bisectors are not its vertex rays, some block's are.
+      int own = 0, shared = 0;
+      for (int i = 0; i < probe.block_count(); ++i) {
+        const PolygonView p = probe.polygon_view(i);
+        std::array<Bisector, 2 * kMaxVertices> b{};
+        const double small = si.scene.contact.small_edge_fraction * probe.potential_length(i);
+        (bisectors(p, small, rays, b.data()) != p.count ? own : shared) += 1;
+      }
+      REQUIRE(own > 0);
+      REQUIRE(shared > 0);
+      check_round_trip(si.scene, 300, 200, 1);
+    }
   }
 }
 

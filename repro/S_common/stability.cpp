@@ -159,7 +159,7 @@ Linearized linearized_critical_step(const dda::Simulation& sim) {
     const dda::Mat6 mm = dda::mass_matrix(am, density);
     if (strains) {
       m.block(b, b, 6, 6) = mm;
-      const dda::Material& mat = sim.scene().materials[static_cast<std::size_t>(sim.scene().blocks[i].material)];
+      const dda::Material& mat = sim.scene().materials[static_cast<std::size_t>(sim.material(i))];
       k.block(b + 3, b + 3, 3, 3) = am.area * dda::elastic_matrix(mat.young, mat.poisson);
     } else {
       m(b, b) = m(b + 1, b + 1) = mm(0, 0);

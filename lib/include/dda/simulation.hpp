@@ -129,6 +129,10 @@ class Simulation {
   // work a descheduled thread stalls the team, so use 1 thread there.
   void set_threads(int n);
   int threads() const;
+  // The scene's settings as given (materials, boundaries, contact, guards,
+  // dt, duration, ...). Its block list is empty: the simulation keeps each
+  // block's polygon and state in its own arrays, not the BlockSpecs (see
+  // polygon(), mass(), fixed(), material()).
   const Scene& scene() const;
 
   int block_count() const;
@@ -145,6 +149,8 @@ class Simulation {
   double area(int i) const;
   double mass(int i) const;
   bool fixed(int i) const;
+  // Block i's index into scene().materials (-1 for a boundary polygon).
+  int material(int i) const;
   // Velocity DOFs at the current time (synchronised, not half-step).
   const Vec6& velocity(int i) const;
   // Total displacement DOFs accumulated since t = 0 (translation and

@@ -90,7 +90,7 @@ void Engine::rebuild_near_pairs() {
   if (scene_.broad_phase == BroadPhase::kNone) {
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) pairs.push_back({i, j, -1, -1});
+        if (!(fixed_[i] && fixed_[j]) && aabb_overlap(boxes_[i], boxes_[j])) pairs.push_back({i, j});
   } else {
     ++broad_phase_rebuilds_;
     skin_boxes_.resize(static_cast<std::size_t>(n));
@@ -121,14 +121,14 @@ void Engine::rebuild_near_pairs() {
         if (g[j].lo.x > g[i].hi.x) break;
         if (fixed_[i] && fixed_[j]) continue;
         if (g[j].lo.y > g[i].hi.y || g[i].lo.y > g[j].hi.y) continue;
-        pairs.push_back({std::min(i, j), std::max(i, j), -1, -1});
+        pairs.push_back({std::min(i, j), std::max(i, j)});
       }
     }
     std::sort(pairs.begin(), pairs.end(), pair_before<NearPair>);
   }
   if (pairs.capacity() > pairs.size() + pairs.size() / kNearPairSlack) pairs.shrink_to_fit();
-  // A pair on both lists keeps its state (witness, load, friction work and
-  // its contact slot): one merge pass over the two sorted lists. A pair in
+  // A pair on both lists keeps its state (witness, flags, load, friction
+  // work and its contact slot): one merge pass over the two sorted lists. A pair in
   // contact now is on both with the sweep (its boxes overlap, so its grown
   // boxes do); a pair that leaves the list frees its slot.
   if (friction_) bank_friction_work(pairs);  // energy.cpp: the leaving pairs' friction work
@@ -139,6 +139,8 @@ void Engine::rebuild_near_pairs() {
     while (h < near_pairs_.size() && pair_before(near_pairs_[h], pairs[k])) ++h;
     if (h < near_pairs_.size() && !pair_before(pairs[k], near_pairs_[h])) {
       pairs[k].witness = near_pairs_[h].witness;
+      pairs[k].candidate = near_pairs_[h].candidate;
+      pairs[k].active = near_pairs_[h].active;
       pairs[k].slot = near_pairs_[h].slot;
       near_pairs_[h].slot = -1;  // handed on
       if (friction_) friction_work[k] = pair_friction_work_[h];
@@ -161,15 +163,15 @@ void Engine::rebuild_near_pairs() {
   std::vector<int> fill(near_pair_offset_.begin(), near_pair_offset_.end() - 1);
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     const int i = near_pairs_[k].i, j = near_pairs_[k].j;
-    block_pairs_[static_cast<std::size_t>(fill[i]++)] = {static_cast<int>(k), j};
-    block_pairs_[static_cast<std::size_t>(fill[j]++)] = {static_cast<int>(k), i};
+    block_pairs_[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(k);
+    block_pairs_[static_cast<std::size_t>(fill[j]++)] = static_cast<int>(k);
   }
 }
 
 std::size_t Engine::bytes_per_near_pair() const {
   // A near pair's own state; a touching pair's contact slot is apart
   // (sizeof(ContactSlot): the result and the friction history).
-  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(BlockPair) + (friction_ ? sizeof(double) : 0);
+  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + (friction_ ? sizeof(double) : 0);
 }
 
 }  // namespace dda

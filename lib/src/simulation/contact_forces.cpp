@@ -115,7 +115,7 @@ constexpr std::size_t kBornListRoom = 256;
     }
     if (pair_guard_fault(cp, tp, r)) pair_fault = true;
   }
-  load.active = true;
+  near_pairs_[static_cast<std::size_t>(k)].active = true;
   load.force = r.normal_force + r.tangential_force;
   load.point = nf.point;
   load.couple = nf.couple;
@@ -139,7 +139,6 @@ void Engine::pair_forces(bool with_energy) {
   const long end = team > 1 ? pair_split_[static_cast<std::size_t>(t) + 1] : n;
   // The loop's arrays in locals: its stores could alias the vectors' members.
   NearPair* const near = near_pairs_.data();
-  PairLoad* const loads = pair_loads_.data();
   const Aabb* const boxes = boxes_.data();
   const BlockSide* const sides = sides_.data();
   const std::uint32_t* const sharp = sharp_corners_.data();
@@ -164,11 +163,10 @@ void Engine::pair_forces(bool with_energy) {
       __builtin_prefetch(&sides[j]);
     }
     NearPair& p = near[k];
-    PairLoad& load = loads[k];
-    const bool was_active = load.active;
-    load.active = false;
-    load.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
-    if (!load.candidate) {
+    const bool was_active = p.active;
+    p.active = false;
+    p.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
+    if (!p.candidate) {
       work += kWorkOther;
       if (was_active) changed.ended.push_back(k);  // its slot is freed by merge_contacts
       continue;
@@ -177,9 +175,12 @@ void Engine::pair_forces(bool with_energy) {
     const double tol = std::max(sides[p.i].tol, sides[p.j].tol);
     const OverlapFacts facts = {sharp[p.i], support[p.i], support[p.j]};
     PairResult* r = nullptr;
-    if (overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &p.witness,
-                                 facts) != OverlapState::kOverlapping ||
-        ip.count < 3 || !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
+    int witness = p.witness;
+    const OverlapState state =
+        overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &witness, facts);
+    p.witness = static_cast<std::int16_t>(witness);  // an axis index: below 2 kMaxVertices
+    if (state != OverlapState::kOverlapping || ip.count < 3 ||
+        !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
       work += kWorkCandidate;
       if (was_active) changed.ended.push_back(k);
       continue;

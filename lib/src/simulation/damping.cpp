@@ -11,7 +11,7 @@
 
 namespace dda {
 
-void Engine::damped_kick_block(int i) {
+void Engine::damped_kick_block(int i, const Vec6& force) {
   // Eq. 4 with Eq. 5c's C = a M + b K, M d'' = F - a M d' - b K d', in the
   // second half kick of velocity Verlet (Eq. 7):
   // - b K d': K is the block's elastic stiffness (Eq. 5b) and its contact
@@ -29,12 +29,12 @@ void Engine::damped_kick_block(int i) {
   // The work of the damping force over the step's drift Delta d^n, by the
   // trapezoid of its values at t^n and t^{n+1} (as the friction work), goes
   // to the energy budget's dissipated term (energy.cpp).
-  Vec6 f = force_[i];
+  Vec6 f = force;
   Vec6 damp = Vec6::Zero();
   if (damp_b_ > 0.0) {
-    damp = (damp_b_ / dt_) * (force_[i] - force_prev_[i]);
+    damp = (damp_b_ / dt_) * (force - force_prev_[i]);
     f += damp;
-    force_prev_[i] = force_[i];
+    force_prev_[i] = force;
   }
   const Vec6 af = force_acceleration(i, f);
   vel_[i] = (vel_[i] + 0.5 * dt_ * af) / (1.0 + 0.5 * damp_a_ * dt_);
@@ -45,17 +45,21 @@ void Engine::damped_kick_block(int i) {
 }
 
 void Engine::start_damping(bool on) {
-  // a^n of the current forces, with or without the damping, v^n kept (the
-  // b term has no step behind it: it starts at zero).
+  // a^n of the current forces (summed again from the pairs' loads: the
+  // same bits as the last kick's), with or without the damping, v^n kept
+  // (the b term has no step behind it: it starts at zero; a fixed block's
+  // force is zero).
   damped_ = on && scene_.damping.on();
   damp_a_ = damped_ ? scene_.damping.mass : 0.0;
   damp_b_ = damped_ ? scene_.damping.stiffness : 0.0;
-  if (damp_b_ > 0.0) force_prev_ = force_;
+  if (damp_b_ > 0.0) force_prev_.assign(static_cast<std::size_t>(block_count()), Vec6::Zero());
   damping_work_.resize(static_cast<std::size_t>(block_count()), 0.0);
   damp_force_.assign(static_cast<std::size_t>(block_count()), Vec6::Zero());
   for (int i = 0; i < block_count(); ++i) {
     if (fixed_[i]) continue;
-    acc_[i] = force_acceleration(i, force_[i]) - damp_a_ * vel_[i];
+    const Vec6 force = gather_contact_forces(i);
+    if (damp_b_ > 0.0) force_prev_[i] = force;
+    acc_[i] = force_acceleration(i, force) - damp_a_ * vel_[i];
     if (damped_) damp_force_[i] = -damp_a_ * (mass_matrix(moments_[i], density_[i]) * vel_[i]);
   }
 }

@@ -58,7 +58,7 @@ void Engine::add_friction_energy(Energy& e) const {
   double work = dropped_friction_work_;
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     work += pair_friction_work_[k];
-    if (!pair_loads_[k].active) continue;
+    if (!near_pairs_[k].active) continue;
     const std::size_t slot = static_cast<std::size_t>(near_pairs_[k].slot);
     if (restarts && contact_slots_[slot].history.sliding) continue;
     e.friction_spring += half_compliance * length_squared(contact_slots_[slot].result.tangential_force);

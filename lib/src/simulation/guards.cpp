@@ -94,8 +94,8 @@ std::string Engine::block_label(int i) const {
     s << "boundaries[" << i - scene_blocks_ << "]";
   } else {
     s << "block " << i;
-    const std::string& name = scene_.blocks[static_cast<std::size_t>(i)].name;
-    if (!name.empty()) s << " '" << name << "'";
+    if (!block_names_.empty() && !block_names_[static_cast<std::size_t>(i)].empty())
+      s << " '" << block_names_[static_cast<std::size_t>(i)] << "'";
   }
   return s.str();
 }

@@ -40,12 +40,13 @@ template <class Prefetch, class Each>
 }
 
 // Flattened (as gather_and_kick): the per-block steps of this file
-// (update_block_geometry, body_force) inline in the block loop, no call
+// (update_block_geometry; body_force in gather_and_kick) inline in the block loop, no call
 // frames per block; the kernels of other files stay calls.
 [[gnu::flatten]] void Engine::move_blocks() {
   // One pass per block: the half kick and drift of Eq. 8, the moved
-  // block's geometry, its body forces, and whether its box left its grown
-  // box (the broad phase's list then needs a rebuild).
+  // block's geometry, and whether its box left its grown box (the broad
+  // phase's list then needs a rebuild). Its body forces: with its contact
+  // forces, in gather_contact_forces.
   const bool sweep = scene_.broad_phase == BroadPhase::kSweep;
   bool left_skin = false;
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
@@ -68,7 +69,6 @@ template <class Prefetch, class Each>
       if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
     update_block_geometry(i);
-    body_force(i);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   });
   mine.left_skin = left_skin;
@@ -90,12 +90,14 @@ void Engine::prefetch_block(int i) const {
 }
 
 void Engine::prefetch_gather(int i) const {
-  // Block i's pair loads (the other core wrote those of its pairs) and the
-  // force and velocity its kick writes.
-  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q)
-    __builtin_prefetch(&pair_loads_[block_pairs_[q].pair]);
+  // Block i's pair loads (the other core wrote those of its pairs), the
+  // stress of its body force and the velocity its kick writes.
+  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
+    __builtin_prefetch(&near_pairs_[block_pairs_[q]]);
+    __builtin_prefetch(&pair_loads_[block_pairs_[q]]);
+  }
   __builtin_prefetch(&vel_[i], 1);
-  __builtin_prefetch(&force_[i], 1);
+  __builtin_prefetch(&stress_[i]);
 }
 
 void Engine::update_geometry() {
@@ -111,16 +113,27 @@ void Engine::update_block_geometry(int i) {
   boxes_[i] = g.box;
   sides_[i].tol = geometric_tolerance(g.box);
   if (scene_.contact.integration == Integration::kPaperBisector) {
-    // Without a small edge the bisectors are the vertex rays, the same list
-    // from step to step: rebuilt only when a small edge comes or goes. The
-    // stored list is the vertex rays exactly when it has one ray per vertex
-    // (a virtual node adds a ray, or replaces two by one), 0 before the first.
-    const double small = scene_.contact.small_edge_fraction * h_[i];
-    const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     PotentialSide& side = sides_[i].side;
-    if (!(plain && side.bisector_count == side.poly.count))
-      side.bisector_count =
-          bisectors(side.poly, small, scene_.contact.small_edge_rays, bisector_store_.data() + bisector_offset_[i]);
+    // Without a small edge the bisectors are the vertex rays, the shared
+    // list of the vertex count (detail::vertex_rays): set only when a small
+    // edge comes or goes. The side's list is the vertex rays exactly when it
+    // has one ray per vertex (a virtual node adds a ray, or replaces two by
+    // one), 0 before the first. With a small edge the block's own list,
+    // made the first time (room for a vertex ray and a virtual node per
+    // edge), rebuilt every step.
+    const double small = side.small_edge;  // small_edge_fraction H (choose_potential_length)
+    const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
+    if (plain) {
+      if (side.bisector_count != side.poly.count) {
+        side.bisectors = detail::vertex_rays(side.poly.count);
+        side.bisector_count = side.poly.count;
+      }
+    } else {
+      std::unique_ptr<Bisector[]>& own = own_bisectors_[b];
+      if (!own) own.reset(new Bisector[static_cast<std::size_t>(2 * side.poly.count)]);
+      side.bisectors = own.get();
+      side.bisector_count = bisectors(side.poly, small, scene_.contact.small_edge_rays, own.get());
+    }
   }
   // Mass is conserved (set once, at t = 0): the density follows the strained area.
   if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
@@ -136,45 +149,51 @@ void Engine::block_facts(int i) {
   support_lines(poly, support_[i]);
 }
 
-void Engine::body_force(int i) {
+Vec6 Engine::body_force(int i) const {
   // Gravity (int T^T rho g dS = rho S g on the translation DOFs) and the
   // step's initial stress on the strain DOFs (K d of Eq. 4 carried as
   // accumulated stress because d is reset every step).
-  force_[i].setZero();
-  if (fixed_[i]) return;
+  Vec6 f = Vec6::Zero();
+  if (fixed_[i]) return f;
   const double m = density_[i] * moments_[i].area;
-  force_[i][0] = m * scene_.gravity.x;
-  force_[i][1] = m * scene_.gravity.y;
-  if (strains_) force_[i].tail<3>() = -moments_[i].area * stress_[i];
+  f[0] = m * scene_.gravity.x;
+  f[1] = m * scene_.gravity.y;
+  if (strains_) f.tail<3>() = -moments_[i].area * stress_[i];
+  return f;
 }
 
-void Engine::gather_contact_forces(int i) {
-  // Block i's contact forces, Eqs. 22-23 and 28-29 through T(pg)^T, added
-  // in increasing pair order (the same bits for any thread count); and the
+Vec6 Engine::gather_contact_forces(int i) {
+  // Block i's force F^{n+1}: its body force, then its contact forces, Eqs.
+  // 22-23 and 28-29 through T(pg)^T, added in increasing pair order (the
+  // same bits for any thread count); and the
   // smallest inscribed radius within its reach (itself and its candidates)
   // for the step-motion guard. The sum is kept in lanes (point_load_lanes)
   // and the arrays in locals: the force's stores could alias them.
-  const BlockPair* pairs = block_pairs_.data();
+  const int* pairs = block_pairs_.data();
+  const NearPair* near = near_pairs_.data();
   const PairLoad* loads = pair_loads_.data();
   const double* radius = radius_.data();
   double reach = radius[i];
   const detail::Lanes c = detail::lanes(moments_[i].centroid);
   const bool free_block = !fixed_[i];
-  Vec6& force = force_[i];
-  detail::Lanes6 sum{{force[0], force[1]}, {force[2], force[3]}, {force[4], force[5]}};
+  const Vec6 body = body_force(i);
+  detail::Lanes6 sum{{body[0], body[1]}, {body[2], body[3]}, {body[4], body[5]}};
   for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
-    const BlockPair& bp = pairs[q];
-    const PairLoad& load = loads[bp.pair];
-    if (!load.candidate) continue;
-    reach = std::min(reach, radius[bp.other]);
-    if (!load.active || !free_block) continue;
+    const int k = pairs[q];
+    const NearPair& p = near[k];
+    if (!p.candidate) continue;
+    // The other block's radius: reach already holds block i's (fewer
+    // instructions than choosing the other block).
+    reach = std::min(reach, std::min(radius[p.i], radius[p.j]));
+    if (!p.active || !free_block) continue;
+    const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     // A pair whose pg was kept within its IP carries the rest of Eq. 20's
     // moment as a couple on the rotation DOF (+ on the first block, - on
     // the second, as the force): only then, so that every other sum keeps
     // its bits.
     if (load.couple != 0.0) g.g23[0] += load.couple;
-    if (bp.other > i) {  // block i is the pair's first
+    if (p.i == i) {  // block i is the pair's first (the force acts on it with +)
       sum.g01 += g.g01;
       sum.g23 += g.g23;
       sum.g45 += g.g45;
@@ -184,8 +203,10 @@ void Engine::gather_contact_forces(int i) {
       sum.g45 -= g.g45;
     }
   }
-  force << sum.g01[0], sum.g01[1], sum.g23[0], sum.g23[1], sum.g45[0], sum.g45[1];
   reach_radius_[i] = reach;
+  Vec6 force;
+  force << sum.g01[0], sum.g01[1], sum.g23[0], sum.g23[1], sum.g45[0], sum.g45[1];
+  return force;
 }
 
 [[gnu::flatten]] void Engine::gather_and_kick() {
@@ -197,9 +218,9 @@ void Engine::gather_contact_forces(int i) {
   if (thread_index() == 0) merge_contacts();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
-    gather_contact_forces(i);
+    const Vec6 force = gather_contact_forces(i);
     if (fixed_[i]) return;
-    kick_block(i);
+    kick_block(i, force);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   });
   mine.guard_failed = failed;
@@ -224,18 +245,18 @@ Vec6 Engine::force_acceleration(int i, const Vec6& f) const {
   return a;
 }
 
-void Engine::kick_block(int i) {
+void Engine::kick_block(int i, const Vec6& force) {
   if (damped_) {
-    damped_kick_block(i);  // Eq. 5c (damping.cpp)
+    damped_kick_block(i, force);  // Eq. 5c (damping.cpp)
     return;
   }
-  acc_[i] = force_acceleration(i, force_[i]);
+  acc_[i] = force_acceleration(i, force);
   vel_[i] += 0.5 * dt_ * acc_[i];
 }
 
 void Engine::kick() {
   for (int i = 0; i < block_count(); ++i)
-    if (!fixed_[i]) kick_block(i);
+    if (!fixed_[i]) kick_block(i, gather_contact_forces(i));
 }
 
 }  // namespace dda

@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,7 +54,7 @@ class TeamBarrier;  // team_barrier.hpp
 // function with the engine as its `this` (the hot loops read the state
 // directly); Simulation owns one and forwards each public call to it once
 // (run_steps once per advance). Not copyable: each block's contact side
-// points into the engine's own geometry pool and bisector store.
+// points into the engine's own geometry pool and bisector lists.
 class Engine {
  public:
   using PhaseIndex = Simulation::PhaseIndex;
@@ -96,15 +97,14 @@ class Engine {
   struct BornContact;   // a pair that began to touch in the pair loop, until merge_contacts
   struct alignas(64) ThreadContacts;  // a thread's pairs that began or stopped touching
   struct NearPair;      // a broad-phase pair
-  struct PairLoad;      // what a block's force sum reads of a pair
-  struct BlockPair;     // an entry of a block's near-pair list
+  struct PairLoad;      // what a block's force sum reads of a touching pair
   struct ThreadFlags;   // a thread's guard flags and measured speeds
   struct BlockShare;    // a thread's blocks in a per-block phase
   struct BlockSide;     // what a pair's contact reads of a block
 
   void compute_forces();
   void count_candidates();
-  // Touching pair k's contact (PairLoad::active, after merge_contacts): its
+  // Touching pair k's contact (NearPair::active, after merge_contacts): its
   // blocks (NearPair), load point and couple (PairLoad), forces, IP
   // measures and sliding flag (its contact slot).
   ContactInfo contact_info(std::size_t k) const;
@@ -114,7 +114,7 @@ class Engine {
   void each_contact(Each each) const;
   // setup.cpp
   void bind_sides();
-  void build_blocks();
+  void build_blocks(const std::vector<BlockSpec>& blocks);
   void choose_potential_length();
   void choose_broad_phase_skin();
   // integration.cpp: per block, half kick, drift, geometry, body force; gather, kick
@@ -122,15 +122,15 @@ class Engine {
   void update_geometry();
   void update_block_geometry(int i);
   void block_facts(int i);
-  void body_force(int i);
+  Vec6 body_force(int i) const;
   void gather_and_kick();
-  void gather_contact_forces(int i);
-  void kick_block(int i);
+  Vec6 gather_contact_forces(int i);
+  void kick_block(int i, const Vec6& force);
   void kick();
   // Eq. 5c damping (Scene::damping): the kick with C = a M + b K, switching
   // it on or off (a^n recomputed), and the constructor's settling run.
   Vec6 force_acceleration(int i, const Vec6& f) const;
-  void damped_kick_block(int i);
+  void damped_kick_block(int i, const Vec6& force);
   void start_damping(bool on);
   void settle();
   void start_energy_guard();
@@ -186,7 +186,11 @@ class Engine {
     return {c, geometry_.data() + 2 * o, geometry_.data() + 2 * o + c};
   }
 
+  // The scene's settings; its blocks are not kept (build_blocks made the
+  // arrays below from them), only their names when the scene names a
+  // block (block_label; else empty).
   Scene scene_;
+  std::vector<std::string> block_names_;
   double dt_ = 0.0;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
@@ -210,7 +214,9 @@ class Engine {
   std::vector<Vec2> geometry_;
   std::vector<int> geometry_offset_;  // block_count() + 1 entries
   std::vector<AreaMoments> moments_;
-  std::vector<Vec6> vel_, acc_, force_, step_disp_, disp_;
+  // (The force F^{n+1} of Eq. 6 is no array: each block's is summed and
+  // used in its own iteration of gather_and_kick, 48 bytes a block fewer.)
+  std::vector<Vec6> vel_, acc_, step_disp_, disp_;
   std::vector<Vec2> start_centroid_;  // centroid at the start of the step (friction history)
   std::vector<double> step_motion2_;  // largest vertex motion of the step, squared, m^2 (guard)
   std::vector<Vec3> stress_;
@@ -247,9 +253,9 @@ class Engine {
   // sum over contacts runs in near-pair order (each_contact). Each field of
   // a contact is kept once: contacts() builds the public ContactInfo of
   // each touching pair from its pair, load and slot when it is called.
-  // near_pair_offset_ and block_pairs_ list each block's near pairs in
-  // increasing order (CSR), so that each block sums its contact forces in
-  // that fixed order.
+  // near_pair_offset_ and block_pairs_ list each block's near pairs (their
+  // indices) in increasing order (CSR), so that each block sums its contact
+  // forces in that fixed order; the pair names the other block.
   std::vector<NearPair> near_pairs_;
   std::vector<PairLoad> pair_loads_;
   std::vector<double> pair_friction_work_;   // per near pair, J/m; empty without friction
@@ -257,7 +263,7 @@ class Engine {
   std::vector<int> free_slots_;
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
-  std::vector<BlockPair> block_pairs_;
+  std::vector<int> block_pairs_;
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).
@@ -281,9 +287,14 @@ class Engine {
 
   std::vector<Aabb> boxes_;
   // Bisectors of each block (paper integration rule), rebuilt with the
-  // geometry: block i's are bisector_store_[bisector_offset_[i] ...], count sides_[i].side.bisector_count.
-  std::vector<Bisector> bisector_store_;
-  std::vector<int> bisector_offset_;
+  // geometry: sides_[i].side.bisectors, count sides_[i].side.bisector_count.
+  // Without a small edge they are the vertex rays, which depend on the
+  // vertex count only: the side points into the shared detail::vertex_rays
+  // table. A block with a small edge (a virtual node) gets a list of its
+  // own, room for 2 rays per vertex, the first time it has one, kept in
+  // own_bisectors_[i] (empty for every other block: 8 bytes a block, where
+  // a list per block cost 32 bytes a vertex).
+  std::vector<std::unique_ptr<Bisector[]>> own_bisectors_;
   std::vector<BlockSide> sides_;
   // The overlap test's facts of each block's polygon, rebuilt with the
   // geometry (block_facts): sharp_corners() (the clipper's bevels when the
@@ -360,11 +371,15 @@ struct alignas(64) Engine::ContactSlot {
   PairHistory history;
 };
 
-// A near pair of the broad phase (i < j).
+// A near pair of the broad phase (i < j), and what the pair loop found of
+// it at this step (read by the per-block sum with the pair's blocks, in the
+// same 16 bytes).
 struct Engine::NearPair {
   int i = -1, j = -1;
-  int witness = -1;  // separating axis the overlap test found last (-1: none yet)
-  int slot = -1;     // its contact slot while it touches (PairLoad::active), else -1
+  int slot = -1;              // its contact slot while it touches (active), else -1
+  std::int16_t witness = -1;  // separating axis the overlap test found last (-1: none yet)
+  bool candidate = false;     // the two boxes overlap at this step
+  bool active = false;        // in contact: its load and PairResult are this step's
 };
 
 // A pair that began to touch at this step, kept by its thread until
@@ -383,22 +398,14 @@ struct alignas(64) Engine::ThreadContacts {
   std::vector<long> ended;
 };
 
-// What the per-block sum reads of each near pair, compact (its contact
-// slot spans two cache lines): written by the pair loop, read per block;
-// also the touching pair's ContactInfo::point and couple.
+// What the per-block sum reads of each touching near pair (NearPair::
+// active), compact (its contact slot spans two cache lines): written by the
+// pair loop, read per block; also the touching pair's ContactInfo::point
+// and couple. 40 bytes: the pair's flags are in its NearPair.
 struct Engine::PairLoad {
-  Vec2 force{};            // normal + tangential force on the pair's first block, N/m
-  Vec2 point{};            // loading point pg
-  double couple = 0.0;     // pure moment on the first block besides force at point (NormalForce::couple), N m/m
-  bool candidate = false;  // the two boxes overlap at this step
-  bool active = false;     // in contact: force, point and the PairResult are this step's
-};
-
-// One entry of block i's near-pair list: the pair and the other block.
-// Block i is the pair's first (the force acts on it with +) when other > i
-// (a near pair is i < j).
-struct Engine::BlockPair {
-  int pair = -1, other = -1;
+  Vec2 force{};         // normal + tangential force on the pair's first block, N/m
+  Vec2 point{};         // loading point pg
+  double couple = 0.0;  // pure moment on the first block besides force at point (NormalForce::couple), N m/m
 };
 
 // One flag block per thread, each on its own cache line: set in a
@@ -438,6 +445,24 @@ struct alignas(64) Engine::BlockSide {
 };
 
 namespace detail {
+
+// The vertex rays of a polygon of n = 3 .. kMaxVertices vertices, what
+// bisectors() gives without a small edge: ray k between edges k - 1 and k
+// (mod n) from vertex k, d0 = 0. Polygon n's begin at n (n - 1) / 2.
+constexpr int kVertexRayEntries = kMaxVertices * (kMaxVertices + 1) / 2;
+constexpr std::array<Bisector, kVertexRayEntries> make_vertex_rays() {
+  std::array<Bisector, kVertexRayEntries> rays{};
+  for (int n = 3; n <= kMaxVertices; ++n)
+    for (int k = 0; k < n; ++k) {
+      Bisector& b = rays[static_cast<std::size_t>(n * (n - 1) / 2 + k)];
+      b.line_a = k == 0 ? n - 1 : k - 1;
+      b.line_b = k;
+      b.d0 = 0.0;
+    }
+  return rays;
+}
+inline constexpr std::array<Bisector, kVertexRayEntries> kVertexRays = make_vertex_rays();
+inline const Bisector* vertex_rays(int n) { return kVertexRays.data() + n * (n - 1) / 2; }
 
 // With a team, the per-block and per-pair loops prefetch the data of the
 // block (pair) this many ahead: a line last written or read by the other
@@ -549,8 +574,8 @@ inline ContactInfo Engine::contact_info(std::size_t k) const {
 
 template <class Each>
 void Engine::each_contact(Each each) const {
-  for (std::size_t k = 0; k < pair_loads_.size(); ++k)
-    if (pair_loads_[k].active) each(k, contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)]);
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k)
+    if (near_pairs_[k].active) each(k, contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)]);
 }
 
 }  // namespace dda

@@ -96,7 +96,7 @@ void Engine::check_pairs() const {
   // what a user can change.
   const StabilityGuards& g = scene_.guards;
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
-    if (!pair_loads_[k].active) continue;
+    if (!near_pairs_[k].active) continue;
     const PairResult& r = contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].result;
     const int a = near_pairs_[k].i, b = near_pairs_[k].j;
     if (!pair_guard_fault(a, b, r)) continue;

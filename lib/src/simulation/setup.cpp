@@ -4,6 +4,7 @@
 // with Eq. 5c damping, settles: damping.cpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 #include "simulation/internal.hpp"
@@ -168,13 +169,44 @@ void check_scene(const Scene& scene) {
     }
 }
 
-Engine::Engine(const Scene& scene) : scene_(scene) {
-  check_scene(scene_);
+namespace {
+
+// The scene's settings: every field but the blocks (the engine keeps their
+// polygons and state in its own arrays, 176 bytes a block fewer than a
+// copy of their specs and vertex lists). The size check (on the 64-bit
+// libstdc++ builds where the size is known) catches a field added to Scene
+// and not copied here.
+Scene scene_settings(const Scene& s) {
+#if defined(__GLIBCXX__) && UINTPTR_MAX == UINT64_MAX
+  static_assert(sizeof(Scene) == 344, "a Scene field was added or changed: copy it in scene_settings");
+#endif
+  Scene out;
+  out.name = s.name;
+  out.materials = s.materials;
+  out.boundaries = s.boundaries;
+  out.contact = s.contact;
+  out.gravity = s.gravity;
+  out.strains = s.strains;
+  out.broad_phase = s.broad_phase;
+  out.initial_overlap = s.initial_overlap;
+  out.dt = s.dt;
+  out.dt_fraction = s.dt_fraction;
+  out.duration = s.duration;
+  out.guards = s.guards;
+  out.rotation_update = s.rotation_update;
+  out.damping = s.damping;
+  return out;
+}
+
+}  // namespace
+
+Engine::Engine(const Scene& scene) : scene_(scene_settings(scene)) {
+  check_scene(scene);
   dt_ = scene_.dt;
   strains_ = scene_.strains;
   friction_ = scene_.contact.friction();
   exact_rotation_ = scene_.rotation_update == RotationUpdate::kExact;
-  build_blocks();
+  build_blocks(scene.blocks);
   choose_potential_length();
   update_geometry();
   predict_critical_step();
@@ -205,16 +237,15 @@ std::size_t Engine::geometry_bytes_per_block() const {
   return (geometry_.size() * sizeof(Vec2) + geometry_offset_.size() * sizeof(int)) / static_cast<std::size_t>(n);
 }
 
-void Engine::build_blocks() {
+void Engine::build_blocks(const std::vector<BlockSpec>& blocks) {
   static_assert(sizeof(BlockSide) == 64, "a block's side and tolerance in one cache line");
-  const std::size_t n = scene_.blocks.size() + scene_.boundaries.size();
-  scene_blocks_ = static_cast<int>(scene_.blocks.size());
+  const std::size_t n = blocks.size() + scene_.boundaries.size();
+  scene_blocks_ = static_cast<int>(blocks.size());
   // The blocks' polygons as values first, then pooled by vertex count.
   std::vector<Polygon> poly(n);
   moments_.resize(n);
   vel_.assign(n, Vec6::Zero());
   acc_.assign(n, Vec6::Zero());
-  force_.assign(n, Vec6::Zero());
   step_disp_.assign(n, Vec6::Zero());
   step_motion2_.assign(n, 0.0);
   start_centroid_.assign(n, Vec2{});
@@ -232,8 +263,8 @@ void Engine::build_blocks() {
   elastic_index_.assign(n, boundary_elastic);
   fixed_.assign(n, 1);
   group_.assign(n, 0);
-  for (std::size_t i = 0; i < scene_.blocks.size(); ++i) {
-    const BlockSpec& b = scene_.blocks[i];
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const BlockSpec& b = blocks[i];
     const Material& m = scene_.materials[static_cast<std::size_t>(b.material)];
     poly[i] = make_polygon(b.vertices.data(), static_cast<int>(b.vertices.size()));
     density_[i] = m.density;
@@ -247,12 +278,20 @@ void Engine::build_blocks() {
     }
   }
   for (std::size_t k = 0; k < scene_.boundaries.size(); ++k) {
-    const std::size_t i = scene_.blocks.size() + k;
+    const std::size_t i = blocks.size() + k;
     const std::vector<Vec2> pts = segment_polygon(scene_.boundaries[k]);
     poly[i] = make_polygon(pts.data(), static_cast<int>(pts.size()));
     density_[i] = scene_.materials[0].density;
     group_[i] = scene_.boundaries[k].group;
   }
+  // The blocks' names (guard messages), only when the scene names a block.
+  block_names_.clear();
+  for (const BlockSpec& b : blocks)
+    if (!b.name.empty()) {
+      block_names_.reserve(blocks.size());
+      for (const BlockSpec& named : blocks) block_names_.push_back(named.name);
+      break;
+    }
   // Friction angle table by group pair.
   group_count_ = 1;
   for (int g : group_) group_count_ = std::max(group_count_, g + 1);
@@ -276,31 +315,24 @@ void Engine::build_blocks() {
     }
   }
   boxes_.resize(n);
-  // Room for 2 rays per vertex (a vertex ray and at most one virtual node per edge).
-  bisector_offset_.assign(n, 0);
+  own_bisectors_.resize(n);  // a block's own bisector list only once it has a small edge
   sides_.assign(n, BlockSide{});
   sharp_corners_.assign(n, 0u);
   support_.assign(n, nullptr);
-  int total = 0, pairs = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    bisector_offset_[i] = total;
-    total += 2 * poly[i].count;
-    pairs += support_line_pairs(poly[i].count);
-  }
-  bisector_store_.resize(static_cast<std::size_t>(total));
+  int pairs = 0;
+  for (std::size_t i = 0; i < n; ++i) pairs += support_line_pairs(poly[i].count);
   support_store_.assign(static_cast<std::size_t>(pairs), SupportLines::Pair{});
   for (std::size_t i = 0; i < n; ++i) sides_[i].side.small_edge_rays = scene_.contact.small_edge_rays;
   bind_sides();
 }
 
 void Engine::bind_sides() {
-  // Each block's contact side reads its polygon from the geometry pool and
-  // its bisectors from the bisector store; its support lines are in the
+  // Each block's contact side reads its polygon from the geometry pool
+  // (its bisectors: update_block_geometry); its support lines are in the
   // support store, support_line_pairs(count) per block in block order.
   std::size_t pairs = 0;
   for (std::size_t i = 0; i < sides_.size(); ++i) {
     sides_[i].side.poly = polygon_view(static_cast<int>(i));
-    sides_[i].side.bisectors = bisector_store_.data() + bisector_offset_[i];
     support_[i] = support_store_.data() + pairs;
     pairs += static_cast<std::size_t>(support_line_pairs(sides_[i].side.poly.count));
   }

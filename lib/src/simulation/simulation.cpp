@@ -29,6 +29,7 @@ Vec2 Simulation::centroid(int i) const { return engine_->moments_[i].centroid; }
 double Simulation::area(int i) const { return engine_->moments_[i].area; }
 double Simulation::mass(int i) const { return engine_->mass_[i]; }
 bool Simulation::fixed(int i) const { return engine_->fixed_[i]; }
+int Simulation::material(int i) const { return i < engine_->scene_blocks_ ? engine_->elastic_index_[i] : -1; }
 const Vec6& Simulation::velocity(int i) const { return engine_->vel_[i]; }
 const Vec6& Simulation::displacement(int i) const { return engine_->disp_[i]; }
 const Vec3& Simulation::stress(int i) const { return engine_->stress_[i]; }

@@ -9,6 +9,8 @@
 // shares (measured core speeds, the split of blocks and pairs) is not saved
 // either: it changes the time a step takes, never its bits.
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 
 #include "dda/state_bytes.hpp"
 #include "simulation/internal.hpp"
@@ -18,7 +20,7 @@ namespace dda {
 namespace {
 
 // The stream's layout; a change of what is saved changes it.
-constexpr std::uint32_t kStateLayout = 1;
+constexpr std::uint32_t kStateLayout = 2;
 
 // One field of a record, written (Put) or read into the record (Get).
 struct Put {
@@ -82,6 +84,10 @@ constexpr auto contact = [](auto& io, auto& c) {
   io(c.ip_length);
   io(c.sliding);
 };
+// A near pair as the stream stores it: its blocks and witness (an int).
+struct NearPairRecord {
+  int i = -1, j = -1, witness = -1;
+};
 constexpr auto near_pair = [](auto& io, auto& p) {
   io(p.i);
   io(p.j);
@@ -119,6 +125,13 @@ constexpr auto friction_history = [](auto& io, auto& f) {
   io(f.sliding);
   io(f.friction_work);
 };
+// A near pair's load as the stream stores it: with the pair's flags (the
+// engine keeps them in its NearPair).
+struct PairLoadRecord {
+  Vec2 force{}, point{};
+  double couple = 0.0;
+  bool candidate = false, active = false;
+};
 constexpr auto pair_load = [](auto& io, auto& l) {
   io(l.force);
   io(l.point);
@@ -126,8 +139,9 @@ constexpr auto pair_load = [](auto& io, auto& l) {
   io(l.candidate);
   io(l.active);
 };
-// A block's near-pair entry as the stream stores it: with whether the
-// block is the pair's first (BlockPair derives it: other > the block).
+// A block's near-pair entry as the stream stores it: with the other block
+// and whether the block is the pair's first (the engine keeps the pair's
+// index and derives them from the pair).
 struct BlockPairRecord {
   int pair = -1, other = -1;
   bool first = false;
@@ -174,7 +188,6 @@ void Engine::save_state(ByteWriter& w) const {
   w.i32(block_count());
   w.i32(scene_blocks_);
   w.u64(geometry_.size());
-  w.u64(bisector_store_.size());
   w.f64(dt_);
   w.boolean(strains_);
   w.boolean(friction_);
@@ -195,9 +208,14 @@ void Engine::save_state(ByteWriter& w) const {
   put_list(w, geometry_, value);
   put_list(w, moments_, moments);
   put_list(w, boxes_, box);
-  put_list(w, bisector_store_, bisector);
+  {
+    // Each block's bisectors in block order, as many as its side counts.
+    std::vector<Bisector> listed;
+    for (const BlockSide& b : sides_) listed.insert(listed.end(), b.side.bisectors, b.side.bisectors + b.side.bisector_count);
+    put_list(w, listed, bisector);
+  }
   put_list(w, sides_, block_side);
-  for (const std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) put_list(w, *v, value);
+  for (const std::vector<Vec6>* v : {&vel_, &acc_, &step_disp_, &disp_}) put_list(w, *v, value);
   put_list(w, start_centroid_, value);
   put_list(w, step_motion2_, value);
   put_list(w, stress_, value);
@@ -215,7 +233,12 @@ void Engine::save_state(ByteWriter& w) const {
   // has none, and stores a fresh one, which no step reads) and its friction
   // state. The slots themselves are not saved: where a contact sits never
   // enters a result.
-  put_list(w, near_pairs_, near_pair);
+  {
+    std::vector<NearPairRecord> records(near_pairs_.size());
+    for (std::size_t k = 0; k < near_pairs_.size(); ++k)
+      records[k] = {near_pairs_[k].i, near_pairs_[k].j, near_pairs_[k].witness};
+    put_list(w, records, near_pair);
+  }
   {
     std::vector<PairResultRecord> results(near_pairs_.size());
     std::vector<FrictionRecord> friction(friction_ ? near_pairs_.size() : 0);
@@ -236,14 +259,22 @@ void Engine::save_state(ByteWriter& w) const {
     put_list(w, results, pair_result);
     put_list(w, friction, friction_history);
   }
-  put_list(w, pair_loads_, pair_load);
+  {
+    std::vector<PairLoadRecord> records(near_pairs_.size());
+    for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+      const PairLoad& l = pair_loads_[k];
+      records[k] = {l.force, l.point, l.couple, near_pairs_[k].candidate, near_pairs_[k].active};
+    }
+    put_list(w, records, pair_load);
+  }
   put_list(w, near_pair_offset_, value);
   {
     std::vector<BlockPairRecord> records(block_pairs_.size());
     for (int i = 0; i < block_count(); ++i)
       for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
-        const BlockPair& b = block_pairs_[static_cast<std::size_t>(q)];
-        records[static_cast<std::size_t>(q)] = {b.pair, b.other, b.other > i};
+        const int k = block_pairs_[static_cast<std::size_t>(q)];
+        const NearPair& p = near_pairs_[static_cast<std::size_t>(k)];
+        records[static_cast<std::size_t>(q)] = {k, p.i == i ? p.j : p.i, p.i == i};
       }
     put_list(w, records, block_pair);
   }
@@ -259,11 +290,10 @@ void Engine::restore_state(ByteReader& r) {
   if (layout != kStateLayout)
     r.fail("state layout " + std::to_string(layout) + ", this build reads layout " + std::to_string(kStateLayout));
   const int blocks = r.i32(), scene_blocks = r.i32();
-  const std::uint64_t pool = r.u64(), bisectors = r.u64();
+  const std::uint64_t pool = r.u64();
   const double dt = r.f64();
   const bool strains = r.boolean(), friction = r.boolean(), exact = r.boolean();
-  if (blocks != block_count() || scene_blocks != scene_blocks_ || pool != geometry_.size() ||
-      bisectors != bisector_store_.size())
+  if (blocks != block_count() || scene_blocks != scene_blocks_ || pool != geometry_.size())
     r.fail("a state of another scene: " + std::to_string(scene_blocks) + " blocks and " +
            std::to_string(blocks - scene_blocks) + " boundary polygons with " + std::to_string(pool / 2) +
            " vertices, this scene has " + std::to_string(scene_blocks_) + " and " +
@@ -284,15 +314,38 @@ void Engine::restore_state(ByteReader& r) {
   get_list(r, geometry_, geometry_.size(), "the geometry pool", value);
   get_list(r, moments_, n, "the area moments", moments);
   get_list(r, boxes_, n, "the boxes", box);
-  get_list(r, bisector_store_, bisector_store_.size(), "the bisector store", bisector);
+  std::vector<Bisector> rays_listed;
+  r.list(rays_listed, 16, element<Bisector>(bisector));
   if (r.count(1) != n) r.fail("the contact sides do not match the blocks");
+  std::size_t at = 0;
   for (std::size_t i = 0; i < n; ++i) {
     Get io{r};
     block_side(io, sides_[i]);
-    const int count = sides_[i].side.bisector_count;
-    if (count < 0 || count > 2 * polygon_view(static_cast<int>(i)).count) r.fail("a block's bisector count is out of range");
+    PotentialSide& side = sides_[i].side;
+    const int count = side.bisector_count, vertices = polygon_view(static_cast<int>(i)).count;
+    if (count < 0 || count > 2 * vertices || at + static_cast<std::size_t>(count) > rays_listed.size())
+      r.fail("a block's bisector count is out of range");
+    // The vertex rays (bit for bit) point to the shared list, others to the block's own.
+    const Bisector* const from = rays_listed.data() + at;
+    const Bisector* const rays = detail::vertex_rays(vertices);
+    bool plain = count == vertices;
+    for (int k = 0; plain && k < count; ++k)
+      plain = from[k].line_a == rays[k].line_a && from[k].line_b == rays[k].line_b &&
+                    std::memcmp(&from[k].d0, &rays[k].d0, sizeof(double)) == 0;
+    if (count == 0) {
+      side.bisectors = nullptr;
+    } else if (plain) {
+      side.bisectors = rays;
+    } else {
+      std::unique_ptr<Bisector[]>& own = own_bisectors_[i];
+      if (!own) own.reset(new Bisector[static_cast<std::size_t>(2 * vertices)]);
+      std::copy(from, from + count, own.get());
+      side.bisectors = own.get();
+    }
+    at += static_cast<std::size_t>(count);
   }
-  for (std::vector<Vec6>* v : {&vel_, &acc_, &force_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", value);
+  if (at != rays_listed.size()) r.fail("the bisector list does not match the blocks' counts");
+  for (std::vector<Vec6>* v : {&vel_, &acc_, &step_disp_, &disp_}) get_list(r, *v, n, "the block DOFs", value);
   get_list(r, start_centroid_, n, "the step-start centroids", value);
   get_list(r, step_motion2_, n, "the step motions", value);
   get_list(r, stress_, n, "the stresses", value);
@@ -304,18 +357,32 @@ void Engine::restore_state(ByteReader& r) {
   dropped_friction_work_ = r.f64();
 
   const int nb = block_count();
-  const auto read_pair = element<NearPair>(near_pair);
+  const auto read_pair = element<NearPairRecord>(near_pair);
   r.list(near_pairs_, 12, [&](ByteReader& in) {
-    const NearPair p = read_pair(in);
+    const NearPairRecord p = read_pair(in);
     if (p.i < 0 || p.i >= p.j || p.j >= nb) in.fail("a near pair's blocks are out of range");
-    return p;
+    if (p.witness < -1 || p.witness > INT16_MAX) in.fail("a near pair's witness axis is out of range");
+    NearPair q;
+    q.i = p.i;
+    q.j = p.j;
+    q.witness = static_cast<std::int16_t>(p.witness);
+    return q;
   });
   const std::size_t pairs = near_pairs_.size();
   std::vector<PairResultRecord> results;
   std::vector<FrictionRecord> frictions;
   get_list(r, results, pairs, "the pair results", pair_result);
   get_list(r, frictions, friction_ ? pairs : 0, "the friction histories", friction_history);
-  get_list(r, pair_loads_, pairs, "the pair loads", pair_load);
+  {
+    std::vector<PairLoadRecord> records;
+    get_list(r, records, pairs, "the pair loads", pair_load);
+    pair_loads_.resize(pairs);
+    for (std::size_t k = 0; k < pairs; ++k) {
+      pair_loads_[k] = {records[k].force, records[k].point, records[k].couple};
+      near_pairs_[k].candidate = records[k].candidate;
+      near_pairs_[k].active = records[k].active;
+    }
+  }
   // The touching pairs' contacts into slots (in pair order); what the
   // others stored is never read (a pair that begins to touch starts afresh).
   // Of a contact's blocks, load point and couple, and of its history's pg
@@ -323,7 +390,7 @@ void Engine::restore_state(ByteReader& r) {
   // load's and its result's): a stream saved by save_state holds the same
   // values in each.
   std::size_t touching = 0;
-  for (const PairLoad& l : pair_loads_) touching += l.active ? 1 : 0;
+  for (const NearPair& p : near_pairs_) touching += p.active ? 1 : 0;
   contact_slots_.clear();
   contact_slots_.reserve(touching);
   free_slots_.clear();
@@ -331,7 +398,7 @@ void Engine::restore_state(ByteReader& r) {
   for (std::size_t k = 0; k < pairs; ++k) {
     if (friction_) pair_friction_work_[k] = frictions[k].friction_work;
     near_pairs_[k].slot = -1;
-    if (!pair_loads_[k].active) continue;
+    if (!near_pairs_[k].active) continue;
     near_pairs_[k].slot = static_cast<int>(contact_slots_.size());
     const PairResultRecord& c = results[k];
     ContactSlot s;
@@ -356,8 +423,10 @@ void Engine::restore_state(ByteReader& r) {
   for (int i = 0; i < nb; ++i)
     for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
       const BlockPairRecord& b = records[static_cast<std::size_t>(q)];
-      if (b.first != (b.other > i)) r.fail("a block's pair entry names the wrong first block");
-      block_pairs_[static_cast<std::size_t>(q)] = {b.pair, b.other};
+      const NearPair& p = near_pairs_[static_cast<std::size_t>(b.pair)];
+      if ((p.i != i && p.j != i) || b.other != (p.i == i ? p.j : p.i) || b.first != (p.i == i))
+        r.fail("a block's pair entry names the wrong blocks");
+      block_pairs_[static_cast<std::size_t>(q)] = b.pair;
     }
   // The touching pairs' contacts once more (what contacts() returned when
   // the stream was saved): checked, not kept (contacts() builds them from

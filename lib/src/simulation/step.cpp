@@ -44,15 +44,16 @@ void Engine::run_steps(std::int64_t count) {
       const std::int64_t done = first + k + 1;
       const bool energy_due = every > 0 && done % every == 0;
       // integration.cpp, Eqs. 7-8: v^{n+1/2} = v^n + h/2 a^n, move by
-      // h v^{n+1/2}; the moved geometry; body forces (gravity, Eq. 4's K d).
+      // h v^{n+1/2}; the moved geometry.
       move_blocks();
       // broad_phase.cpp: the near pairs, rebuilt when a block left its grown box.
       update_near_pairs();
       // contact_forces.cpp + friction.cpp: per pair, overlap and IP (Sect.
       // 3.1), normal force and pg (Eqs. 10-20), friction (Eqs. 24-26).
       pair_forces(energy_due);
-      // integration.cpp, Eqs. 22-23, 28-29, 6-7: F^{n+1} summed in pair
-      // order through T(pg)^T, a^{n+1}, v^{n+1}; per-block guard flags.
+      // integration.cpp, Eqs. 22-23, 28-29, 6-7: F^{n+1}, the body forces
+      // (gravity, Eq. 4's K d) and the contact forces summed in pair order
+      // through T(pg)^T, a^{n+1}, v^{n+1}; per-block guard flags.
       gather_and_kick();
       if (detail::thread_index() == 0) balance_pair_split();  // team.cpp: the next pair loop's shares
       // guards.cpp: a failed guard or a due energy check stops the run.
@@ -73,13 +74,13 @@ void Engine::run_steps(std::int64_t count) {
 }
 
 void Engine::compute_forces() {
-  // Serial: the forces at the current state (the constructor's a^0).
-  for (int i = 0; i < block_count(); ++i) body_force(i);
+  // Serial: the pairs' loads at the current state, and each block's reach
+  // (the constructor's a^0: kick and start_damping sum the blocks' forces).
   rebuild_near_pairs();
   if (thread_contacts_.empty()) thread_contacts_.resize(1);
   pair_forces(false);
   merge_contacts();  // contact_forces.cpp: slots for the pairs in contact
-  for (int i = 0; i < block_count(); ++i) gather_contact_forces(i);
+  for (int i = 0; i < block_count(); ++i) (void)gather_contact_forces(i);
   count_candidates();
 }
 
@@ -93,7 +94,7 @@ std::vector<ContactInfo> Engine::contacts() const {
 void Engine::count_candidates() {
   // The candidate pairs of the last force evaluation, for the accessor.
   candidate_count_ = 0;
-  for (const PairLoad& l : pair_loads_) candidate_count_ += l.candidate ? 1 : 0;
+  for (const NearPair& p : near_pairs_) candidate_count_ += p.candidate ? 1 : 0;
 }
 
 }  // namespace dda
