@@ -26,14 +26,25 @@ struct Lcg {
   }
 };
 
-// A random convex polygon of 3 to 8 vertices around c, radius 0.5 r to r.
-Polygon random_convex(Lcg& rng, Vec2 c, double r) {
-  const int n = 3 + static_cast<int>(rng.uniform(0.0, 6.0));
-  Vec2 p[9];
+// The shape of a random convex polygon: n_min + [0, n_spread) vertices at
+// r_lo r to r from its centre, each angular step 2 pi / n times step_lo to 1.
+struct ConvexShape {
+  int n_min;
+  double n_spread, r_lo, step_lo;
+};
+constexpr ConvexShape kSmallBlock{3, 6.0, 0.5, 0.6};    // 3 to 8 vertices
+constexpr ConvexShape kManySided{9, 8.0, 0.8, 0.8};   // 9 to 16 vertices
+
+// A random convex polygon around c of radius up to r (kSmallBlock: 3 to 8
+// vertices, radius 0.5 r to r).
+Polygon random_convex(Lcg& rng, Vec2 c, double r, ConvexShape shape = kSmallBlock) {
+  const int n = shape.n_min + static_cast<int>(rng.uniform(0.0, shape.n_spread));
+  Vec2 p[16];
+  REQUIRE(n <= 16);
   double a = rng.uniform(0.0, 6.3);
   for (int k = 0; k < n; ++k) {
-    p[k] = c + rng.uniform(0.5, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
-    a += 2.0 * M_PI / n * rng.uniform(0.6, 1.0);
+    p[k] = c + rng.uniform(shape.r_lo, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
+    a += 2.0 * M_PI / n * rng.uniform(shape.step_lo, 1.0);
   }
   return make_polygon(p, n);
 }
@@ -267,16 +278,7 @@ TEST_CASE("edges nearest to one or two lines of a polygon beyond eight vertices:
   // demarcation point) to round-off of the force scale, with fewer segments
   // on some pairs.
   Lcg rng{4242};
-  auto polygon = [&rng](Vec2 c, double r) {
-    const int n = 9 + static_cast<int>(rng.uniform(0.0, 8.0));
-    Vec2 p[16];
-    double a = rng.uniform(0.0, 6.3);
-    for (int k = 0; k < n; ++k) {
-      p[k] = c + rng.uniform(0.8, 1.0) * r * Vec2{std::cos(a), std::sin(a)};
-      a += 2.0 * M_PI / n * rng.uniform(0.8, 1.0);
-    }
-    return make_polygon(p, n);
-  };
+  auto polygon = [&rng](Vec2 c, double r) { return random_convex(rng, c, r, kManySided); };
   int compared = 0, fewer = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     const Polygon cp = polygon({0, 0}, 1.0);
