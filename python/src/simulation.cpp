@@ -340,6 +340,8 @@ void bind_simulation(py::module_& m) {
            "The energy budget's terms now (dda.Energy; recomputes the contact energy).")
       .def("contacts", [](const PySimulation& s) { return make_contacts(s.read()); },
            "The contacts of the last force evaluation (dda.Contacts, copies).")
+      .def("contact_count", [](const PySimulation& s) { return s.read().contact_count(); },
+           "len(contacts()), counted without building them (cheap enough for every step).")
       // --- state, read-only views ---
       .def("velocity_dofs_view",
            [](const py::object& self) {

@@ -122,6 +122,7 @@ def test_contacts_and_their_intersection_polygons(integration):
     sim.run(until=0.05)
     c = sim.contacts()
     k = len(c)
+    assert sim.contact_count() == k
     assert k == 2 and sorted(map(tuple, np.sort(c.pairs, axis=1))) == [(0, 1), (0, 2)]
     assert (np.linalg.norm(c.shear_forces, axis=1) > 0).all()
     assert c.pairs.shape == (k, 2) and c.normal_forces.shape == (k, 2) and c.shear_forces.shape == (k, 2)
