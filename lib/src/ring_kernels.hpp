@@ -15,46 +15,48 @@ namespace dda::detail {
 // (kLabels): the kept p starts the edge along the line when p is on it and
 // q outside, else p's own edge; the crossing into the outside starts the
 // edge along the line, the crossing back inside continues edge p -> q.
-// Appends to out, out_label at `count` and returns the new count. kGuard:
-// stop appending at kMaxVertices (unneeded when 2 n <= kMaxVertices, since
-// an edge appends at most two points).
+// Appends at out (and out_label), advancing them. kGuard: stop appending
+// at out_cap, kMaxVertices points past the ring's start (unneeded when
+// 2 n <= kMaxVertices, since an edge appends at most two points).
 template <bool kLabels, bool kGuard>
-inline int clip_edge(const Vec2* in, const int* in_label, int i, int k, double dp, double dq, int line_label,
-                     Vec2* out, int* out_label, int count) {
-  if (kGuard && count >= kMaxVertices) return count;
+inline void clip_edge(const Vec2* in, const int* in_label, int i, int k, double dp, double dq, int line_label,
+                      Vec2*& out, int*& out_label, const Vec2* out_cap) {
+  if (kGuard && out >= out_cap) return;
   // Three cases by p's side, the commonest first: strictly inside, on the
   // line, strictly outside (a NaN dp is none of them).
   if (dp < 0.0) {
-    if (kLabels) out_label[count] = in_label[i];
-    out[count++] = in[i];
-    if (dq > 0.0 && (!kGuard || count < kMaxVertices)) {
-      if (kLabels) out_label[count] = line_label;
-      out[count++] = lerp(in[i], in[k], dp / (dp - dq));
+    if (kLabels) *out_label++ = in_label[i];
+    *out++ = in[i];
+    if (dq > 0.0 && (!kGuard || out < out_cap)) {
+      if (kLabels) *out_label++ = line_label;
+      *out++ = lerp(in[i], in[k], dp / (dp - dq));
     }
   } else if (dp == 0.0) {
-    if (kLabels) out_label[count] = dq > 0.0 ? line_label : in_label[i];
-    out[count++] = in[i];
+    if (kLabels) *out_label++ = dq > 0.0 ? line_label : in_label[i];
+    *out++ = in[i];
   } else if (dp > 0.0 && dq < 0.0) {
-    if (kLabels) out_label[count] = in_label[i];
-    out[count++] = lerp(in[i], in[k], dp / (dp - dq));
+    if (kLabels) *out_label++ = in_label[i];
+    *out++ = lerp(in[i], in[k], dp / (dp - dq));
   }
-  return count;
 }
 
 // clip_ring on in[0..n) (n >= 1) with distances dist[0..n): the edges in
 // order, the closing edge n-1 -> 0 peeled off so that the loop needs no
-// wrap-around index.
+// wrap-around index. Returns the count written.
 template <bool kLabels, bool kGuard>
 inline int clip_ring_n(const Vec2* in, const double* dist, int n, Vec2* out, const int* in_label, int line_label,
                        int* out_label) {
-  int count = 0;
+  Vec2* o = out;
+  int* ol = out_label;
+  const Vec2* const cap = out + kMaxVertices;
   double dp = dist[0];
   for (int i = 0; i + 1 < n; ++i) {
     const double dq = dist[i + 1];
-    count = clip_edge<kLabels, kGuard>(in, in_label, i, i + 1, dp, dq, line_label, out, out_label, count);
+    clip_edge<kLabels, kGuard>(in, in_label, i, i + 1, dp, dq, line_label, o, ol, cap);
     dp = dq;
   }
-  return clip_edge<kLabels, kGuard>(in, in_label, n - 1, 0, dp, dist[0], line_label, out, out_label, count);
+  clip_edge<kLabels, kGuard>(in, in_label, n - 1, 0, dp, dist[0], line_label, o, ol, cap);
+  return static_cast<int>(o - out);
 }
 
 // clean_ring's test for vertex b between a and c, with tol2 = tol * tol:
