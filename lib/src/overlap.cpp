@@ -353,8 +353,8 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
   }
   if (!outside) return -1;  // a repeated last point only repeats its bit
   return 2 * n > kMaxVertices
-             ? detail::clip_ring_n<true, true>(in, dist, n, out, in_label, line_label, out_label)
-             : detail::clip_ring_n<true, false>(in, dist, n, out, in_label, line_label, out_label);
+             ? detail::clip_ring_n<true, true, kN>(in, dist, n, out, in_label, line_label, out_label)
+             : detail::clip_ring_n<true, false, kN>(in, dist, n, out, in_label, line_label, out_label);
 }
 
 // The last ring of clip_target into `result`: its vertices, the source

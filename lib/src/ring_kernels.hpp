@@ -42,18 +42,29 @@ inline void clip_edge(const Vec2* in, const int* in_label, int i, int k, double 
 
 // clip_ring on in[0..n) (n >= 1) with distances dist[0..n): the edges in
 // order, the closing edge n-1 -> 0 peeled off so that the loop needs no
-// wrap-around index. Returns the count written.
-template <bool kLabels, bool kGuard>
-inline int clip_ring_n(const Vec2* in, const double* dist, int n, Vec2* out, const int* in_label, int line_label,
+// wrap-around index. Returns the count written. kN: n when known at compile
+// time (0: read it), the edges then unrolled.
+template <bool kLabels, bool kGuard, int kN = 0>
+inline int clip_ring_n(const Vec2* in, const double* dist, int n_in, Vec2* out, const int* in_label, int line_label,
                        int* out_label) {
+  const int n = kN ? kN : n_in;
   Vec2* o = out;
   int* ol = out_label;
   const Vec2* const cap = out + kMaxVertices;
   double dp = dist[0];
-  for (int i = 0; i + 1 < n; ++i) {
-    const double dq = dist[i + 1];
-    clip_edge<kLabels, kGuard>(in, in_label, i, i + 1, dp, dq, line_label, o, ol, cap);
-    dp = dq;
+  if constexpr (kN != 0) {
+#pragma GCC unroll 16
+    for (int i = 0; i + 1 < kN; ++i) {
+      const double dq = dist[i + 1];
+      clip_edge<kLabels, kGuard>(in, in_label, i, i + 1, dp, dq, line_label, o, ol, cap);
+      dp = dq;
+    }
+  } else {
+    for (int i = 0; i + 1 < n; ++i) {
+      const double dq = dist[i + 1];
+      clip_edge<kLabels, kGuard>(in, in_label, i, i + 1, dp, dq, line_label, o, ol, cap);
+      dp = dq;
+    }
   }
   clip_edge<kLabels, kGuard>(in, in_label, n - 1, 0, dp, dist[0], line_label, o, ol, cap);
   return static_cast<int>(o - out);
