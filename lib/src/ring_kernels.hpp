@@ -108,6 +108,26 @@ template <int kN>
 inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
   const int n = kN ? kN : n_in;
   const Lanes t2 = {tol2, tol2};
+  if constexpr (kN == 4) {
+    // A quadrilateral: the chords of vertices 2 and 3 (1 -> 3, 2 -> 0) are
+    // those of vertices 0 and 1 (3 -> 1, 0 -> 2) reversed, and c - a =
+    // -(a - c) exactly (rounding is symmetric), so |ac|^2 is the same and
+    // cross(ac, ab) only changes sign: the same squares, one chord per lane
+    // pair for both pairs of vertices.
+    const Lanes ax = {v[3].x, v[0].x}, ay = {v[3].y, v[0].y};  // vertices 3, 0: a of pair 0, c of pair 1
+    const Lanes bx = {v[0].x, v[1].x}, by = {v[0].y, v[1].y};  // b of pair 0
+    const Lanes cx = {v[1].x, v[2].x}, cy = {v[1].y, v[2].y};  // vertices 1, 2: c of pair 0, a of pair 1
+    const Lanes dx = {v[2].x, v[3].x}, dy = {v[2].y, v[3].y};  // b of pair 1
+    const Lanes acx = cx - ax, acy = cy - ay;
+    const Lanes lac2 = acx * acx + acy * acy;
+    const Lanes tl = t2 * lac2;
+    const unsigned flat = lane_bits(lac2 > t2) ^ 3u;
+    const Lanes abx0 = bx - ax, aby0 = by - ay, abx1 = dx - cx, aby1 = dy - cy;
+    const Lanes h0 = acx * aby0 - acy * abx0, h1 = acx * aby1 - acy * abx1;  // h1: cross(ca, cd) negated
+    const unsigned repeated =
+        lane_bits(abx0 * abx0 + aby0 * aby0 <= t2) | lane_bits(abx1 * abx1 + aby1 * aby1 <= t2);
+    return (repeated | lane_bits(h0 * h0 <= tl) | lane_bits(h1 * h1 <= tl) | flat) != 0;
+  }
   unsigned removable = 0;
   for (int k = 0; k < n / 2; ++k) {
     const int i0 = 2 * k, i1 = 2 * k + 1;
