@@ -108,6 +108,27 @@ template <int kN>
 inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
   const int n = kN ? kN : n_in;
   const Lanes t2 = {tol2, tol2};
+  if constexpr (kN == 3) {
+    // A triangle: with its edges e0 = v1 - v0, e1 = v2 - v1, e2 = v0 - v2,
+    // vertex 0 has ab = e2, ac = v1 - v2 = -e1 exactly (rounding is
+    // symmetric), vertex 1 ab = e0, ac = -e2, vertex 2 ab = e1, ac = -e0:
+    // each |e|^2 once serves as some vertex's |ab|^2 and another's |ac|^2,
+    // and cross(ac, ab) = -cross(e_ac, e_ab) has the same square. A
+    // repeated vertex (|ab|^2 <= tol2) has a chord of the same length
+    // within tol (|ac|^2 > tol2 false), so the chords alone tell those.
+    // Lanes: edges (e0, e1), e2 alone; crosses (e0 x e1, e1 x e2) for
+    // vertices 2 and 0 against |e0|^2 and |e1|^2, e2 x e0 for vertex 1.
+    const Lanes x0 = {v[0].x, v[1].x}, y0 = {v[0].y, v[1].y}, x1 = {v[1].x, v[2].x}, y1 = {v[1].y, v[2].y};
+    const Lanes ex = x1 - x0, ey = y1 - y0;  // (e0, e1)
+    const Vec2 e2 = v[0] - v[2];
+    const Lanes fx = {ex[1], e2.x}, fy = {ey[1], e2.y};  // (e1, e2)
+    const Lanes len2 = ex * ex + ey * ey;
+    const Lanes h = ex * fy - ey * fx;
+    const double len2_2 = e2.x * e2.x + e2.y * e2.y;
+    const double h1 = e2.x * ey[0] - e2.y * ex[0];
+    const unsigned lanes_removable = lane_bits(h * h <= t2 * len2) | (lane_bits(len2 > t2) ^ 3u);
+    return lanes_removable != 0 || !(len2_2 > tol2) || h1 * h1 <= tol2 * len2_2;
+  }
   if constexpr (kN == 4) {
     // A quadrilateral: the chords of vertices 2 and 3 (1 -> 3, 2 -> 0) are
     // those of vertices 0 and 1 (3 -> 1, 0 -> 2) reversed, and c - a =
