@@ -404,6 +404,21 @@ struct ClipRing {
   std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
 };
 
+// finish_ring's end for a ring of more than four vertices, apart (as
+// cut_ring_any): rings of 5 to 8 vertices unrolled, the rest emit_ring<0>.
+[[gnu::noinline]] void finish_ring_wide(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
+                                        const PolygonView& target, double tol, Polygon& result, IpEdge* source) {
+  bool clean = false;
+  switch (n) {
+    case 5: clean = emit_ring<5>(in, in_label, 5, contact, target, tol, result, source); break;
+    case 6: clean = emit_ring<6>(in, in_label, 6, contact, target, tol, result, source); break;
+    case 7: clean = emit_ring<7>(in, in_label, 7, contact, target, tol, result, source); break;
+    case 8: clean = emit_ring<8>(in, in_label, 8, contact, target, tol, result, source); break;
+    default: clean = emit_ring<0>(in, in_label, n, contact, target, tol, result, source); break;
+  }
+  if (!clean) clean_result(in_label, contact, target, tol, result, source);
+}
+
 // clip_target's end on its last ring in[0..n) (labels in_label, no
 // kMixedEdgeLabel): emit_ring, then cleaning only if a vertex is
 // removable; no IP when fewer than 3 vertices are left.
@@ -418,7 +433,7 @@ struct ClipRing {
   switch (n) {
     case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
     case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: clean = emit_ring<0>(in, in_label, n, contact, target, tol, result, source); break;
+    default: finish_ring_wide(in, in_label, n, contact, target, tol, result, source); return;
   }
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
