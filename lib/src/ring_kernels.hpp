@@ -86,16 +86,16 @@ inline bool removable_vertex(Vec2 a, Vec2 b, Vec2 c, double tol2) {
 // and c; returns the lane bits of the removable ones. The same products and
 // comparisons per lane (|b - a|^2 for |a - b|^2: the negation is exact and
 // the squares drop the sign); a chord within tol of zero counts as
-// straight, a NaN chord too, as there. The comparisons are combined as bits:
-// GCC widens a negated or or-ed comparison mask lane by lane.
+// straight, a NaN chord too, as there. The comparisons are combined as
+// masks (lane_or, lane_not_greater), one lane_bits for all.
 inline unsigned removable_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx, Lanes cy, Lanes tol2) {
   const Lanes acx = cx - ax, acy = cy - ay, abx = bx - ax, aby = by - ay;
   const Lanes lac2 = acx * acx + acy * acy;
   const Lanes h = acx * aby - acy * abx;  // cross(ac, ab)
-  const unsigned repeated = lane_bits(abx * abx + aby * aby <= tol2);
+  const LaneMask repeated = abx * abx + aby * aby <= tol2;
   // straight: lac2 > tol2 ? h * h <= tol2 * lac2 : true.
-  const unsigned straight = lane_bits(h * h <= tol2 * lac2) | (lane_bits(lac2 > tol2) ^ 3u);
-  return repeated | straight;
+  const LaneMask straight = lane_or(h * h <= tol2 * lac2, lane_not_greater(lac2, tol2));
+  return lane_bits(lane_or(repeated, straight));
 }
 
 // True when clean_ring would remove some vertex of v[0..n) (n >= 3): its
@@ -126,7 +126,7 @@ inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
     const Lanes h = ex * fy - ey * fx;
     const double len2_2 = e2.x * e2.x + e2.y * e2.y;
     const double h1 = e2.x * ey[0] - e2.y * ex[0];
-    const unsigned lanes_removable = lane_bits(h * h <= t2 * len2) | (lane_bits(len2 > t2) ^ 3u);
+    const unsigned lanes_removable = lane_bits(lane_or(h * h <= t2 * len2, lane_not_greater(len2, t2)));
     return lanes_removable != 0 || !(len2_2 > tol2) || h1 * h1 <= tol2 * len2_2;
   }
   if constexpr (kN == 4) {
@@ -142,12 +142,11 @@ inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
     const Lanes acx = cx - ax, acy = cy - ay;
     const Lanes lac2 = acx * acx + acy * acy;
     const Lanes tl = t2 * lac2;
-    const unsigned flat = lane_bits(lac2 > t2) ^ 3u;
     const Lanes abx0 = bx - ax, aby0 = by - ay, abx1 = dx - cx, aby1 = dy - cy;
     const Lanes h0 = acx * aby0 - acy * abx0, h1 = acx * aby1 - acy * abx1;  // h1: cross(ca, cd) negated
-    const unsigned repeated =
-        lane_bits(abx0 * abx0 + aby0 * aby0 <= t2) | lane_bits(abx1 * abx1 + aby1 * aby1 <= t2);
-    return (repeated | lane_bits(h0 * h0 <= tl) | lane_bits(h1 * h1 <= tl) | flat) != 0;
+    const LaneMask repeated = lane_or(abx0 * abx0 + aby0 * aby0 <= t2, abx1 * abx1 + aby1 * aby1 <= t2);
+    const LaneMask straight = lane_or(lane_or(h0 * h0 <= tl, h1 * h1 <= tl), lane_not_greater(lac2, t2));
+    return lane_bits(lane_or(repeated, straight)) != 0;
   }
   unsigned removable = 0;
   for (int k = 0; k < n / 2; ++k) {
