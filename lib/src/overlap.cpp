@@ -342,16 +342,16 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
   const Lanes nxy = {nc.x, nc.y}, pxy = {pc.x, pc.y};
   const Lanes tol_l = {tol, tol};
   const LaneMask sign = {INT64_MIN, INT64_MIN};
-  unsigned outside = 0;
+  LaneMask outside = {0, 0};  // lanes of the points outside, or-ed over the pairs
   for (int k = 0; k < (kN ? kPairs : (n + 1) / 2); ++k) {
     const Vec2 p = in[2 * k], q = in[std::min(2 * k + 1, n - 1)];
     const Lanes tp = nxy * (Lanes{p.x, p.y} - pxy), tq = nxy * (Lanes{q.x, q.y} - pxy);  // the terms of dot(nc, p - pc)
     Lanes d = Lanes{tp[0], tq[0]} + Lanes{tp[1], tq[1]};
     d = (Lanes)((LaneMask)d & ~((Lanes)((LaneMask)d & ~sign) <= tol_l));  // |d| <= tol: +0
-    outside |= lane_bits(d > Lanes{0.0, 0.0}) << (2 * k);
+    outside = detail::lane_or(outside, d > Lanes{0.0, 0.0});
     __builtin_memcpy(&dist[2 * k], &d, sizeof d);
   }
-  if (!outside) return -1;  // a repeated last point only repeats its bit
+  if (!lane_bits(outside)) return -1;
   return 2 * n > kMaxVertices
              ? detail::clip_ring_n<true, true, kN>(in, dist, n, out, in_label, line_label, out_label)
              : detail::clip_ring_n<true, false, kN>(in, dist, n, out, in_label, line_label, out_label);
