@@ -83,19 +83,20 @@ inline bool removable_vertex(Vec2 a, Vec2 b, Vec2 c, double tol2) {
 }
 
 // removable_vertex for two vertices at once, lane l testing b between a
-// and c; returns the lane bits of the removable ones. The same products and
+// and c; returns the mask of the removable lanes. The same products and
 // comparisons per lane (|b - a|^2 for |a - b|^2: the negation is exact and
 // the squares drop the sign); a chord within tol of zero counts as
 // straight, a NaN chord too, as there. The comparisons are combined as
-// masks (lane_or, lane_not_greater), one lane_bits for all.
-inline unsigned removable_lanes(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx, Lanes cy, Lanes tol2) {
+// masks (lane_or, lane_not_greater), and a caller or-s the masks of
+// several pairs before one lane_bits.
+inline LaneMask removable_mask(Lanes ax, Lanes ay, Lanes bx, Lanes by, Lanes cx, Lanes cy, Lanes tol2) {
   const Lanes acx = cx - ax, acy = cy - ay, abx = bx - ax, aby = by - ay;
   const Lanes lac2 = acx * acx + acy * acy;
   const Lanes h = acx * aby - acy * abx;  // cross(ac, ab)
   const LaneMask repeated = abx * abx + aby * aby <= tol2;
   // straight: lac2 > tol2 ? h * h <= tol2 * lac2 : true.
   const LaneMask straight = lane_or(h * h <= tol2 * lac2, lane_not_greater(lac2, tol2));
-  return lane_bits(lane_or(repeated, straight));
+  return lane_or(repeated, straight);
 }
 
 // True when clean_ring would remove some vertex of v[0..n) (n >= 3): its
@@ -148,17 +149,17 @@ inline bool ring_needs_clean(const Vec2* v, int n_in, double tol2) {
     const LaneMask straight = lane_or(lane_or(h0 * h0 <= tl, h1 * h1 <= tl), lane_not_greater(lac2, t2));
     return lane_bits(lane_or(repeated, straight)) != 0;
   }
-  unsigned removable = 0;
+  LaneMask removable = {0, 0};
   for (int k = 0; k < n / 2; ++k) {
     const int i0 = 2 * k, i1 = 2 * k + 1;
     const Vec2 a0 = v[i0 == 0 ? n - 1 : i0 - 1], a1 = v[i0];
     const Vec2 b0 = v[i0], b1 = v[i1];
     const Vec2 c0 = v[i1], c1 = v[i1 + 1 == n ? 0 : i1 + 1];
-    removable |= removable_lanes(Lanes{a0.x, a1.x}, Lanes{a0.y, a1.y}, Lanes{b0.x, b1.x}, Lanes{b0.y, b1.y},
-                                 Lanes{c0.x, c1.x}, Lanes{c0.y, c1.y}, t2);
+    removable = lane_or(removable, removable_mask(Lanes{a0.x, a1.x}, Lanes{a0.y, a1.y}, Lanes{b0.x, b1.x},
+                                                  Lanes{b0.y, b1.y}, Lanes{c0.x, c1.x}, Lanes{c0.y, c1.y}, t2));
   }
   if (n % 2 != 0 && removable_vertex(v[n - 2], v[n - 1], v[0], tol2)) return true;
-  return removable != 0;
+  return lane_bits(removable) != 0;
 }
 
 }  // namespace dda::detail
