@@ -22,8 +22,8 @@ template <bool kLabels, bool kGuard>
 inline void clip_edge(const Vec2* in, const int* in_label, int i, int k, double dp, double dq, int line_label,
                       Vec2*& out, int*& out_label, const Vec2* out_cap) {
   if (kGuard && out >= out_cap) return;
-  // Three cases by p's side, the commonest first: strictly inside, on the
-  // line, strictly outside (a NaN dp is none of them).
+  // Three cases by p's side, the commonest first: strictly inside,
+  // strictly outside, on the line (a NaN dp is none of them).
   if (dp < 0.0) {
     if (kLabels) *out_label++ = in_label[i];
     *out++ = in[i];
@@ -31,12 +31,14 @@ inline void clip_edge(const Vec2* in, const int* in_label, int i, int k, double 
       if (kLabels) *out_label++ = line_label;
       *out++ = lerp(in[i], in[k], dp / (dp - dq));
     }
+  } else if (dp > 0.0) {
+    if (dq < 0.0) {
+      if (kLabels) *out_label++ = in_label[i];
+      *out++ = lerp(in[i], in[k], dp / (dp - dq));
+    }
   } else if (dp == 0.0) {
     if (kLabels) *out_label++ = dq > 0.0 ? line_label : in_label[i];
     *out++ = in[i];
-  } else if (dp > 0.0 && dq < 0.0) {
-    if (kLabels) *out_label++ = in_label[i];
-    *out++ = lerp(in[i], in[k], dp / (dp - dq));
   }
 }
 
