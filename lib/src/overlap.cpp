@@ -443,8 +443,9 @@ struct ClipRing {
 // registers (not cold: the pair benchmarks of hexagons and octagons use it
 // for most cuts). Rings of 6 to 10 vertices (the cuts of two hexagons or
 // octagons) with their count known at compile time, the rest cut_ring<0>.
-[[gnu::noinline]] int cut_ring_any(const Vec2* in, const int* in_label, int n, Vec2 nc, Vec2 pc, double tol,
+[[gnu::noinline]] int cut_ring_any(const Vec2* in, const int* in_label, int n, Lanes nc_l, Lanes pc_l, double tol,
                                    int line_label, Vec2* out, int* out_label) {
+  const Vec2 nc = detail::vec2(nc_l), pc = detail::vec2(pc_l);  // one register each across the call
   switch (n) {
     case 6: return cut_ring<6>(in, in_label, 6, nc, pc, tol, line_label, out, out_label);
     case 7: return cut_ring<7>(in, in_label, 7, nc, pc, tol, line_label, out, out_label);
@@ -554,7 +555,9 @@ struct ClipRing {
       case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
       case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
       case 5: count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label); break;
-      default: count = cut_ring_any(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
+      default:
+        count = cut_ring_any(in, in_label, in_count, detail::lanes(nc), detail::lanes(pc), tol, line, out, out_label);
+        break;
     }
     if (count < 0) continue;  // no vertex outside: the ring stays
     in_count = count;
