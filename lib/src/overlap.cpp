@@ -543,8 +543,10 @@ struct ClipRing {
   int in_count = target.count;
   ClipRing* out_ring = &rings[0];
   ClipRing* spare_ring = &rings[1];
-  // Only the lines whose bit is set, in increasing order.
-  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
+  // Only the lines whose bit is set, in increasing order, while 3 vertices
+  // are left.
+  if (in_count < 3) lines = 0;
+  for (; lines != 0; lines &= lines - 1u) {
     const int c = __builtin_ctz(lines);
     const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
     Vec2* out = out_ring->v.data();
@@ -564,6 +566,7 @@ struct ClipRing {
     in = out;
     in_label = out_label;
     std::swap(out_ring, spare_ring);
+    if (count < 3) break;
   }
   if (sharp != 0) {
     bevel_and_finish(contact, target, tol, sharp, in, in_label, in_count, out_ring, spare_ring, result, source);
