@@ -552,15 +552,13 @@ struct ClipRing {
     Vec2* out = out_ring->v.data();
     int* out_label = out_ring->label.data();
     const int line = contact_label(c);
+    // The counts by their frequency: quadrilaterals, triangles (a corner
+    // cut off), pentagons, the rest.
     int count = 0;
-    switch (in_count) {
-      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
-      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
-      case 5: count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label); break;
-      default:
-        count = cut_ring_any(in, in_label, in_count, detail::lanes(nc), detail::lanes(pc), tol, line, out, out_label);
-        break;
-    }
+    if (in_count == 4) count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label);
+    else if (in_count == 3) count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label);
+    else if (in_count == 5) count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label);
+    else count = cut_ring_any(in, in_label, in_count, detail::lanes(nc), detail::lanes(pc), tol, line, out, out_label);
     if (count < 0) continue;  // no vertex outside: the ring stays
     in_count = count;
     in = out;
