@@ -70,6 +70,25 @@ inline unsigned lane_bits(LaneMask m) {
 #endif
 }
 
+// Comparison masks combined as masks, for one lane_bits of several tests:
+// lane_or(a, b) has the bits of a | b; lane_not_greater(a, b) is !(a > b)
+// lane by lane (true for a NaN lane). SSE2's orpd and cmpngtpd by name, as
+// GCC widens the plain or-ed or negated mask lane by lane.
+inline LaneMask lane_or(LaneMask a, LaneMask b) {
+#if defined(__SSE2__)
+  return (LaneMask)_mm_or_pd((__m128d)a, (__m128d)b);
+#else
+  return a | b;
+#endif
+}
+inline LaneMask lane_not_greater(Lanes a, Lanes b) {
+#if defined(__SSE2__)
+  return (LaneMask)_mm_cmpngt_pd(a, b);
+#else
+  return ~(a > b);
+#endif
+}
+
 // A point as lanes (x, y) and back.
 inline Lanes lanes(Vec2 p) { return Lanes{p.x, p.y}; }
 inline Vec2 vec2(Lanes l) { return {l[0], l[1]}; }

@@ -342,19 +342,19 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
   const Lanes nxy = {nc.x, nc.y}, pxy = {pc.x, pc.y};
   const Lanes tol_l = {tol, tol};
   const LaneMask sign = {INT64_MIN, INT64_MIN};
-  unsigned outside = 0;
+  LaneMask outside = {0, 0};  // lanes of the points outside, or-ed over the pairs
   for (int k = 0; k < (kN ? kPairs : (n + 1) / 2); ++k) {
     const Vec2 p = in[2 * k], q = in[std::min(2 * k + 1, n - 1)];
     const Lanes tp = nxy * (Lanes{p.x, p.y} - pxy), tq = nxy * (Lanes{q.x, q.y} - pxy);  // the terms of dot(nc, p - pc)
     Lanes d = Lanes{tp[0], tq[0]} + Lanes{tp[1], tq[1]};
     d = (Lanes)((LaneMask)d & ~((Lanes)((LaneMask)d & ~sign) <= tol_l));  // |d| <= tol: +0
-    outside |= lane_bits(d > Lanes{0.0, 0.0}) << (2 * k);
+    outside = detail::lane_or(outside, d > Lanes{0.0, 0.0});
     __builtin_memcpy(&dist[2 * k], &d, sizeof d);
   }
-  if (!outside) return -1;  // a repeated last point only repeats its bit
+  if (!lane_bits(outside)) return -1;
   return 2 * n > kMaxVertices
-             ? detail::clip_ring_n<true, true>(in, dist, n, out, in_label, line_label, out_label)
-             : detail::clip_ring_n<true, false>(in, dist, n, out, in_label, line_label, out_label);
+             ? detail::clip_ring_n<true, true, kN>(in, dist, n, out, in_label, line_label, out_label)
+             : detail::clip_ring_n<true, false, kN>(in, dist, n, out, in_label, line_label, out_label);
 }
 
 // The last ring of clip_target into `result`: its vertices, the source
@@ -404,6 +404,21 @@ struct ClipRing {
   std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
 };
 
+// finish_ring's end for a ring of more than four vertices, apart (as
+// cut_ring_any): rings of 5 to 8 vertices unrolled, the rest emit_ring<0>.
+[[gnu::noinline]] void finish_ring_wide(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
+                                        const PolygonView& target, double tol, Polygon& result, IpEdge* source) {
+  bool clean = false;
+  switch (n) {
+    case 5: clean = emit_ring<5>(in, in_label, 5, contact, target, tol, result, source); break;
+    case 6: clean = emit_ring<6>(in, in_label, 6, contact, target, tol, result, source); break;
+    case 7: clean = emit_ring<7>(in, in_label, 7, contact, target, tol, result, source); break;
+    case 8: clean = emit_ring<8>(in, in_label, 8, contact, target, tol, result, source); break;
+    default: clean = emit_ring<0>(in, in_label, n, contact, target, tol, result, source); break;
+  }
+  if (!clean) clean_result(in_label, contact, target, tol, result, source);
+}
+
 // clip_target's end on its last ring in[0..n) (labels in_label, no
 // kMixedEdgeLabel): emit_ring, then cleaning only if a vertex is
 // removable; no IP when fewer than 3 vertices are left.
@@ -418,7 +433,7 @@ struct ClipRing {
   switch (n) {
     case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
     case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: clean = emit_ring<0>(in, in_label, n, contact, target, tol, result, source); break;
+    default: finish_ring_wide(in, in_label, n, contact, target, tol, result, source); return;
   }
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
@@ -428,8 +443,9 @@ struct ClipRing {
 // registers (not cold: the pair benchmarks of hexagons and octagons use it
 // for most cuts). Rings of 6 to 10 vertices (the cuts of two hexagons or
 // octagons) with their count known at compile time, the rest cut_ring<0>.
-[[gnu::noinline]] int cut_ring_any(const Vec2* in, const int* in_label, int n, Vec2 nc, Vec2 pc, double tol,
+[[gnu::noinline]] int cut_ring_any(const Vec2* in, const int* in_label, int n, Lanes nc_l, Lanes pc_l, double tol,
                                    int line_label, Vec2* out, int* out_label) {
+  const Vec2 nc = detail::vec2(nc_l), pc = detail::vec2(pc_l);  // one register each across the call
   switch (n) {
     case 6: return cut_ring<6>(in, in_label, 6, nc, pc, tol, line_label, out, out_label);
     case 7: return cut_ring<7>(in, in_label, 7, nc, pc, tol, line_label, out, out_label);
@@ -527,25 +543,28 @@ struct ClipRing {
   int in_count = target.count;
   ClipRing* out_ring = &rings[0];
   ClipRing* spare_ring = &rings[1];
-  // Only the lines whose bit is set, in increasing order.
-  for (; lines != 0 && in_count >= 3; lines &= lines - 1u) {
+  // Only the lines whose bit is set, in increasing order, while 3 vertices
+  // are left.
+  if (in_count < 3) lines = 0;
+  for (; lines != 0; lines &= lines - 1u) {
     const int c = __builtin_ctz(lines);
     const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
     Vec2* out = out_ring->v.data();
     int* out_label = out_ring->label.data();
     const int line = contact_label(c);
+    // The counts by their frequency: quadrilaterals, triangles (a corner
+    // cut off), pentagons, the rest.
     int count = 0;
-    switch (in_count) {
-      case 3: count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label); break;
-      case 4: count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label); break;
-      case 5: count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label); break;
-      default: count = cut_ring_any(in, in_label, in_count, nc, pc, tol, line, out, out_label); break;
-    }
+    if (in_count == 4) count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label);
+    else if (in_count == 3) count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label);
+    else if (in_count == 5) count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label);
+    else count = cut_ring_any(in, in_label, in_count, detail::lanes(nc), detail::lanes(pc), tol, line, out, out_label);
     if (count < 0) continue;  // no vertex outside: the ring stays
     in_count = count;
     in = out;
     in_label = out_label;
     std::swap(out_ring, spare_ring);
+    if (count < 3) break;
   }
   if (sharp != 0) {
     bevel_and_finish(contact, target, tol, sharp, in, in_label, in_count, out_ring, spare_ring, result, source);
