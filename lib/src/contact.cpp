@@ -53,6 +53,15 @@ inline double across_min(Lanes d) {
   return d[1] < d[0] ? d[1] : d[0];
 #endif
 }
+// {across_min(a), across_min(b)}: the two folds finished by one minpd on
+// their high and low lanes (the same selection lane by lane).
+inline Lanes across_min2(Lanes a, Lanes b) {
+#if defined(__SSE2__)
+  return _mm_min_pd(_mm_unpackhi_pd(a, b), _mm_unpacklo_pd(a, b));
+#else
+  return Lanes{across_min(a), across_min(b)};
+#endif
+}
 
 // The lane constants of paper_side_edge, {x, x} each. GCC builds such a
 // constant from its scalar (movsd + unpcklpd: two instructions, again each
@@ -412,7 +421,8 @@ template <int kN, bool kMinus>
     m0 = lane_min(m0, c[p]);
     m1 = lane_min(m1, e[p]);
   }
-  const double d0 = across_min(m0), d1 = across_min(m1);
+  const Lanes d01 = across_min2(m0, m1);  // {d_exit(0), d_exit(1)}
+  const double d0 = d01[0], d1 = d01[1];
   const double f_start = zero_start ? 0.0 : traction(d0);
   const double f_end = zero_end ? 0.0 : traction(d1);
   if ((zero_start || d0 > 0.0) && (zero_end || d1 > 0.0)) {
