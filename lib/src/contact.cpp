@@ -543,13 +543,14 @@ template <bool kMinus>
   }
 }
 
-template <int kN, bool kMinus>
-[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Integration rule,
-                                                 Vec2 a, Vec2 ab, double tol, bool zero_start, bool zero_end,
-                                                 EdgeSums& sums) {
-  if (rule != Integration::kPaperBisector)
+// kPaper: the rule is Integration::kPaperBisector (known for the whole
+// contact, so that no edge tests it).
+template <int kN, bool kMinus, bool kPaper>
+[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
+                                                 double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+  if constexpr (!kPaper)
     return envelope_side_edge<kMinus>(poly, k, a, ab, tol, zero_start, zero_end, sums);
-  if constexpr (kN > 0)
+  else if constexpr (kN > 0)
     return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
   else
     return paper_side_edge_any<kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
@@ -668,9 +669,10 @@ enum class On { kNeither = 0, kCp = 1, kTp = 2 };
 }
 
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
-// ip.count >= 3. One named result, returned on every path, so that it is
-// built in the caller's slot (no copy of it at the end).
-template <int kNc, int kNt>
+// ip.count >= 3, and kPaper: rule is Integration::kPaperBisector. One named
+// result, returned on every path, so that it is built in the caller's slot
+// (no copy of it at the end).
+template <int kNc, int kNt, bool kPaper>
 [[gnu::always_inline]] inline NormalForce contact_force_ip(const PotentialSide& cp, const PotentialSide& tp,
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
@@ -696,7 +698,7 @@ template <int kNc, int kNt>
   // zeroed on every call).
   static thread_local BisectorSet own_cp, own_tp;
   BisectorSpan rays_cp{cp.bisectors, cp.bisector_count}, rays_tp{tp.bisectors, tp.bisector_count};
-  if (rule == Integration::kPaperBisector) {
+  if (kPaper) {
     if (!rays_cp.b) {
       own_cp.count = bisectors(cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.b.data());
       rays_cp = {own_cp.b.data(), own_cp.count};
@@ -736,11 +738,11 @@ template <int kNc, int kNt>
     EdgeSums sums;  // set when used
     bool used = false;
     if (on_this == On::kCp)
-      used = one_side_edge<kNt, true>(tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol, on_prev == On::kTp,
-                                      on_next == On::kTp, sums);
+      used = one_side_edge<kNt, true, kPaper>(tp.poly, tp.kn_over_h, rays_tp, a, ab, tol, on_prev == On::kTp,
+                                              on_next == On::kTp, sums);
     else if (on_this == On::kTp)
-      used = one_side_edge<kNc, false>(cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol, on_prev == On::kCp,
-                                       on_next == On::kCp, sums);
+      used = one_side_edge<kNc, false, kPaper>(cp.poly, cp.kn_over_h, rays_cp, a, ab, tol, on_prev == On::kCp,
+                                               on_next == On::kCp, sums);
     else
       used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
     if (!used) {
@@ -779,11 +781,20 @@ template <int kNc, int kNt>
   return out;
 }
 
+// Another rule than the paper's (the exact envelope): out of line, with the
+// vertex counts read at run time.
+[[gnu::noinline]] NormalForce contact_force_other_rule(const PotentialSide& cp, const PotentialSide& tp,
+                                                       const Polygon& ip, Integration rule, double tol,
+                                                       const IpEdge* source, LoadingPoint where) {
+  return contact_force_ip<0, 0, false>(cp, tp, ip, rule, tol, source, where);
+}
+
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
                             double tol, const IpEdge* source, LoadingPoint where) {
   if (ip.count < 3) return NormalForce{};
-  return contact_force_ip<kNc, kNt>(cp, tp, ip, rule, tol, source, where);
+  if (rule != Integration::kPaperBisector) return contact_force_other_rule(cp, tp, ip, rule, tol, source, where);
+  return contact_force_ip<kNc, kNt, true>(cp, tp, ip, rule, tol, source, where);
 }
 
 // contact_force_n with the vertex counts of CP and TP as compile-time
