@@ -314,6 +314,83 @@ template <bool kMinus>
   return sums;
 }
 
+// paper_side_edge's general case, an edge that takes neither shortcut:
+// the crossings with the rays, sorted, and the paper's segments between
+// them (integrate_halves when there are none). c, s: the edge's lines as
+// paper_side_edge builds them; mid, f_start, f_end: its d_exit at t = 1/2
+// and end tractions.
+template <int kN, bool kMinus>
+[[gnu::always_inline]] inline void paper_side_crossings(const Lanes* c, const Lanes* s, int n, double k,
+                                                        BisectorSpan rays, double mid, double f_start, double f_end,
+                                                        EdgeSums& sums) {
+  const int pairs = (n + 1) / 2;
+  const LaneConstants* const kc = lane_constants();
+  const auto at = [&](double t) {
+    const Lanes tt = {t, t};
+    Lanes d = load(kc->max);
+    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    return across_min(d);
+  };
+  const auto traction = [k](double d) {
+    if (!(d > 0.0)) return 0.0;
+    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+  };
+  const double f_mid = traction(mid);
+  // The crossings strictly inside (0, 1), in ray order (Crossings::add's
+  // test), at most 2 kN (a virtual node adds a ray).
+  double cross[2 * (kN ? kN : kMaxVertices)];
+  int count = 0;
+  const auto add = [&](double x) {
+    if (x > 0.0 && x < 1.0) cross[count++] = x;
+  };
+  if (rays.count == n) {
+    const Lanes zero = {0.0, 0.0};
+    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
+    for (int p = 0; p < pairs; ++p) {
+      const int q = p == 0 ? pairs - 1 : p - 1;
+      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
+      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
+      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
+      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
+      if (!hits) continue;
+      const Lanes t = num / den;
+      hits &= lane_bits(ca + sa * t >= zero);
+      if (hits & 1u) add(t[0]);
+      if (hits & 2u) add(t[1]);
+    }
+  } else {
+    for (int r = 0; r < rays.count && r < 2 * n; ++r) {
+      const Bisector& ray = rays.b[r];
+      const int la = ray.line_a, lb = ray.line_b;
+      const double ca = c[la >> 1][la & 1], cb = c[lb >> 1][lb & 1], sa = s[la >> 1][la & 1], sb = s[lb >> 1][lb & 1];
+      double num = cb - ca, den = sa - sb;
+      if (den < 0.0) {
+        num = -num;
+        den = -den;
+      }
+      if (!(num > 0.0 && num < den)) continue;
+      const double t = num / den;
+      if (ca + sa * t >= ray.d0) add(t);
+    }
+  }
+  if (count == 0) {
+    sums = integrate_halves(f_start, f_mid, f_end);
+    return;
+  }
+  sort_points(cross, count);
+  sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
+}
+
+// paper_side_crossings out of line, for triangles to pentagons: the shallow
+// contacts of a jointed rock mass take a shortcut on most edges, and the
+// general case inline costs every edge (measured; hexagons to octagons,
+// deep overlaps of round particles, keep it inline).
+template <int kN, bool kMinus>
+[[gnu::noinline]] void paper_side_crossings_call(const Lanes* c, const Lanes* s, int n, double k, BisectorSpan rays,
+                                                 double mid, double f_start, double f_end, EdgeSums& sums) {
+  paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
+}
+
 // An IP edge of known source lies on one polygon's boundary, where that
 // polygon's potential is zero: only the other side's phi enters Eq. 11,
 // phi_CP with a plus sign (kMinus false), phi_TP with a minus. The same
@@ -398,14 +475,13 @@ template <int kN, bool kMinus>
       s[p] = (Lanes)((LaneMask)(nx * abx + ny * aby) ^ sign);                // -dot(n, ab)
     }
   }
-  // d_exit at t: EdgeLines::at's fold (at_start: t = 0 without the products,
-  // at_end: t = 1 without them).
+  // d_exit at the midpoint: EdgeLines::at's fold (at_start: t = 0 without
+  // the products, at_end: t = 1 without them).
   const auto fold_at = [&](Lanes tt) {
     Lanes d = load(kc->max);
     for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
     return across_min(d);
   };
-  const auto at = [&](double t) { return fold_at(Lanes{t, t}); };
   const double mid = fold_at(load(kc->half));
   if (mid <= tol) return false;
   const auto traction = [k](double d) {
@@ -476,50 +552,10 @@ template <int kN, bool kMinus>
       }
     }
   }
-  const double f_mid = traction(mid);
-  // The crossings strictly inside (0, 1), in ray order (Crossings::add's
-  // test), at most 2 kN (a virtual node adds a ray).
-  double cross[2 * (kN ? kN : kMaxVertices)];
-  int count = 0;
-  const auto add = [&](double x) {
-    if (x > 0.0 && x < 1.0) cross[count++] = x;
-  };
-  if (rays.count == n) {
-    const Lanes zero = {0.0, 0.0};
-    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
-    for (int p = 0; p < pairs; ++p) {
-      const int q = p == 0 ? pairs - 1 : p - 1;
-      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
-      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
-      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
-      if (!hits) continue;
-      const Lanes t = num / den;
-      hits &= lane_bits(ca + sa * t >= zero);
-      if (hits & 1u) add(t[0]);
-      if (hits & 2u) add(t[1]);
-    }
-  } else {
-    for (int r = 0; r < rays.count && r < 2 * n; ++r) {
-      const Bisector& ray = rays.b[r];
-      const int la = ray.line_a, lb = ray.line_b;
-      const double ca = c[la >> 1][la & 1], cb = c[lb >> 1][lb & 1], sa = s[la >> 1][la & 1], sb = s[lb >> 1][lb & 1];
-      double num = cb - ca, den = sa - sb;
-      if (den < 0.0) {
-        num = -num;
-        den = -den;
-      }
-      if (!(num > 0.0 && num < den)) continue;
-      const double t = num / den;
-      if (ca + sa * t >= ray.d0) add(t);
-    }
-  }
-  if (count == 0) {
-    sums = integrate_halves(f_start, f_mid, f_end);
-    return true;
-  }
-  sort_points(cross, count);
-  sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
+  if constexpr (kN >= 3 && kN <= 5)
+    paper_side_crossings_call<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
+  else
+    paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
   return true;
 }
 
