@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -63,6 +64,15 @@ inline Lanes across_min2(Lanes a, Lanes b) {
 #endif
 }
 
+// Line i of lines kept two at a time (pair i / 2, lane i % 2): the i-th
+// double of the pairs' storage, read as such (GCC does not fold the pair
+// and lane indices back into i).
+inline double line_at(const Lanes* pairs, int i) {
+  double x;
+  std::memcpy(&x, reinterpret_cast<const char*>(pairs) + sizeof(double) * static_cast<std::size_t>(i), sizeof x);
+  return x;
+}
+
 // The lane constants of paper_side_edge, {x, x} each. GCC builds such a
 // constant from its scalar (movsd + unpcklpd: two instructions, again each
 // time register pressure evicts it); read through a pointer it cannot see
@@ -104,8 +114,8 @@ struct EdgeLines {
   int count = kN;
   int size() const { return kN ? kN : count; }
   int pairs() const { return kN ? kCapacity : (count + 1) / 2; }
-  double c_at(int i) const { return c[i >> 1][i & 1]; }
-  double s_at(int i) const { return s[i >> 1][i & 1]; }
+  double c_at(int i) const { return line_at(c, i); }
+  double s_at(int i) const { return line_at(s, i); }
   void build(const PolygonView& poly, Vec2 a, Vec2 ab) {
     if (!kN) count = poly.count;
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
@@ -362,7 +372,7 @@ template <int kN, bool kMinus>
     for (int r = 0; r < rays.count && r < 2 * n; ++r) {
       const Bisector& ray = rays.b[r];
       const int la = ray.line_a, lb = ray.line_b;
-      const double ca = c[la >> 1][la & 1], cb = c[lb >> 1][lb & 1], sa = s[la >> 1][la & 1], sb = s[lb >> 1][lb & 1];
+      const double ca = line_at(c, la), cb = line_at(c, lb), sa = line_at(s, la), sb = line_at(s, lb);
       double num = cb - ca, den = sa - sb;
       if (den < 0.0) {
         num = -num;
@@ -528,8 +538,8 @@ template <int kN, bool kMinus>
       // crossing t* = num / den inside (0, 1), then d* and the two
       // trapezoids 0 -> t* (2 t0 + t1 = t*, t0 + 2 t1 = 2 t*) and t* -> 1
       // (2 t* + 1, t* + 2).
-      const double ci = c[i >> 1][i & 1], cj = c[j >> 1][j & 1];
-      const double num = cj - ci, den = s[i >> 1][i & 1] - s[j >> 1][j & 1];
+      const double ci = line_at(c, i), cj = line_at(c, j);
+      const double num = cj - ci, den = line_at(s, i) - line_at(s, j);
       if (num > 0.0 && num < den) {
         const double t = num / den;
         const Lanes tt = {t, t};
@@ -539,7 +549,7 @@ template <int kN, bool kMinus>
           v[p] = c[p] + s[p] * tt;
           d = lane_min(d, v[p]);
         }
-        const double dt = across_min(d), vi = v[i >> 1][i & 1], vj = v[j >> 1][j & 1];
+        const double dt = across_min(d), vi = line_at(v, i), vj = line_at(v, j);
         // No other line below the two at t*, and d* > 0 (t* inside P, the
         // ray test's d >= 0, the traction unclamped).
         if (dt > 0.0 && dt == (vj < vi ? vj : vi)) {
