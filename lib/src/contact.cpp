@@ -629,12 +629,13 @@ template <int kN, bool kMinus, bool kPaper>
 // longer edges only, then finds it inside after all and keeps it.
 // cross(b - a, p - a) = (b - a).x (p - a).y - (b - a).y (p - a).x is
 // taken as the two lanes' products of b - a and the swapped p - a, then
-// their difference: the same operations, the same bits.
+// their difference: the same operations, the same bits. The edges from
+// the closing one (count - 1 -> 0) on, so that no index wraps.
 bool inside_ip(const Polygon& ip, Vec2 p) {
   const Lanes pl = detail::lanes(p);
-  Lanes a = detail::lanes(ip.vertex(0));
+  Lanes a = detail::lanes(ip.vertex(ip.count - 1));
   for (int e = 0; e < ip.count; ++e) {
-    const Lanes b = detail::lanes(ip.vertex(ip.next(e)));
+    const Lanes b = detail::lanes(ip.vertex(e));
     const Lanes t = (b - a) * detail::swapped(pl - a);
     if (t[0] - t[1] < 0.0) return false;  // CCW: the inside is on the left
     a = b;
