@@ -774,7 +774,8 @@ template <int kNc, int kNt, bool kPaper>
     on_this = on_next;
     on_next = on(e1);
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
-    const double len = detail::root(length_squared(ab));  // length(ab)
+    const Lanes ab2 = detail::lanes(ab) * detail::lanes(ab);
+    const double len = detail::root(ab2[0] + ab2[1]);  // length(ab): x x + y y, lane by lane
     if (len <= tol) continue;
     perimeter += len;
     // A vertex where an edge on CP's boundary starts or ends is on that
