@@ -64,6 +64,17 @@ inline Lanes across_min2(Lanes a, Lanes b) {
 #endif
 }
 
+// lane_bits(m0) | lane_bits(m1) << 2 for two comparison results: SSE2
+// packs their four lanes' 32-bit halves into one register (each lane's
+// sign in the high half of a 32-bit slot) for one movmskps.
+inline unsigned pair_bits(LaneMask m0, LaneMask m1) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(_mm_packs_epi32((__m128i)m0, (__m128i)m1))));
+#else
+  return lane_bits(m0) | lane_bits(m1) << 2;
+#endif
+}
+
 // Line i of lines kept two at a time (pair i / 2, lane i % 2): the i-th
 // double of the pairs' storage, read as such (GCC does not fold the pair
 // and lane indices back into i).
@@ -516,9 +527,14 @@ template <int kN, bool kMinus>
     // count's repeated line masked off.
     const Lanes l0 = {d0, d0}, l1 = {d1, d1};
     unsigned first = 0, last = 0;
-    for (int p = 0; p < pairs; ++p) {
-      first |= lane_bits(c[p] == l0) << (2 * p);
-      last |= lane_bits(e[p] == l1) << (2 * p);
+    if constexpr (kN == 3 || kN == 4) {
+      first = pair_bits(c[0] == l0, c[1] == l0);
+      last = pair_bits(e[0] == l1, e[1] == l1);
+    } else {
+      for (int p = 0; p < pairs; ++p) {
+        first |= lane_bits(c[p] == l0) << (2 * p);
+        last |= lane_bits(e[p] == l1) << (2 * p);
+      }
     }
     if (n % 2) {
       first &= ~(1u << n);
