@@ -526,15 +526,16 @@ template <int kN, bool kMinus>
     // Bit i: line i attains d_exit at t = 0 (first) / t = 1 (last); an odd
     // count's repeated line masked off.
     const Lanes l0 = {d0, d0}, l1 = {d1, d1};
+    // Two pairs at a time (pair_bits), an odd number's last alone.
     unsigned first = 0, last = 0;
-    if constexpr (kN == 3 || kN == 4) {
-      first = pair_bits(c[0] == l0, c[1] == l0);
-      last = pair_bits(e[0] == l1, e[1] == l1);
-    } else {
-      for (int p = 0; p < pairs; ++p) {
-        first |= lane_bits(c[p] == l0) << (2 * p);
-        last |= lane_bits(e[p] == l1) << (2 * p);
-      }
+    int q = 0;
+    for (; q + 1 < pairs; q += 2) {
+      first |= pair_bits(c[q] == l0, c[q + 1] == l0) << (2 * q);
+      last |= pair_bits(e[q] == l1, e[q + 1] == l1) << (2 * q);
+    }
+    if (q < pairs) {
+      first |= lane_bits(c[q] == l0) << (2 * q);
+      last |= lane_bits(e[q] == l1) << (2 * q);
     }
     if (n % 2) {
       first &= ~(1u << n);
