@@ -75,6 +75,16 @@ inline unsigned pair_bits(LaneMask m0, LaneMask m1) {
 #endif
 }
 
+// lane_bits(a) & lane_bits(b), the masks' and taken in their register
+// (SSE2; GCC's generic form of it re-derives each lane).
+inline unsigned lane_bits_and(LaneMask a, LaneMask b) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_pd(_mm_and_pd((__m128d)a, (__m128d)b)));
+#else
+  return lane_bits(a) & lane_bits(b);
+#endif
+}
+
 // Line i of lines kept two at a time (pair i / 2, lane i % 2): the i-th
 // double of the pairs' storage, read as such (GCC does not fold the pair
 // and lane indices back into i).
@@ -185,7 +195,7 @@ struct EdgeLines {
       const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
       const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
       const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
+      unsigned hits = lane_bits_and(num > zero, num < den);
       if (!hits) continue;
       const Lanes t = num / den;
       hits &= lane_bits(ca + sa * t >= zero);
@@ -372,7 +382,7 @@ template <int kN, bool kMinus>
       const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
       const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
       const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
+      unsigned hits = lane_bits_and(num > zero, num < den);
       if (!hits) continue;
       const Lanes t = num / den;
       hits &= lane_bits(ca + sa * t >= zero);
