@@ -111,6 +111,18 @@ inline const LaneConstants* lane_constants() {
 #endif
   return k;
 }
+// lane_min({DBL_MAX, DBL_MAX}, d), a fold's first step, with the start
+// read from kc->max as minpd's memory operand, so that no register holds
+// it across the edge (GCC keeps such a constant in one, one fewer for the
+// rest). The same selection, d < DBL_MAX ? d : DBL_MAX lane by lane.
+inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
+#if defined(__SSE2__) && defined(__GNUC__)
+  asm("minpd %1, %0" : "+x"(d) : "m"(*reinterpret_cast<const Lanes*>(kc->max)));
+  return d;
+#else
+  return detail::lane_min(Lanes{kc->max[0], kc->max[1]}, d);
+#endif
+}
 inline Lanes load(const double* pair) {
 #if defined(__SSE2__)
   return _mm_load_pd(pair);
@@ -506,13 +518,23 @@ template <int kN, bool kMinus>
       s[p] = (Lanes)((LaneMask)(nx * abx + ny * aby) ^ sign);                // -dot(n, ab)
     }
   }
+  // The lane by lane minimum of value(p) over the pairs p, folded from
+  // DBL_MAX as EdgeLines does; with the count known, its first step is
+  // min_from_max.
+  const auto fold_pairs = [&](auto&& value) {
+    if constexpr (kN > 0) {
+      Lanes d = min_from_max(kc, value(0));
+      for (int p = 1; p < pairs; ++p) d = lane_min(d, value(p));
+      return d;
+    } else {
+      Lanes d = load(kc->max);
+      for (int p = 0; p < pairs; ++p) d = lane_min(d, value(p));
+      return d;
+    }
+  };
   // d_exit at the midpoint: EdgeLines::at's fold (at_start: t = 0 without
   // the products, at_end: t = 1 without them).
-  const auto fold_at = [&](Lanes tt) {
-    Lanes d = load(kc->max);
-    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
-    return across_min(d);
-  };
+  const auto fold_at = [&](Lanes tt) { return across_min(fold_pairs([&](int p) { return c[p] + s[p] * tt; })); };
   const double mid = fold_at(load(kc->half));
   if (mid <= tol) return false;
   const auto traction = [k](double d) {
@@ -522,12 +544,8 @@ template <int kN, bool kMinus>
   // d_exit at the ends (at_start's and at_end's folds) and the lines that
   // attain it there.
   Lanes e[kCapacity];  // c_i + s_i: d_i(1)
-  Lanes m0 = load(kc->max), m1 = m0;
-  for (int p = 0; p < pairs; ++p) {
-    e[p] = c[p] + s[p];
-    m0 = lane_min(m0, c[p]);
-    m1 = lane_min(m1, e[p]);
-  }
+  for (int p = 0; p < pairs; ++p) e[p] = c[p] + s[p];
+  const Lanes m0 = fold_pairs([&](int p) { return c[p]; }), m1 = fold_pairs([&](int p) { return e[p]; });
   const Lanes d01 = across_min2(m0, m1);  // {d_exit(0), d_exit(1)}
   const double d0 = d01[0], d1 = d01[1];
   const double f_start = zero_start ? 0.0 : traction(d0);
@@ -571,11 +589,8 @@ template <int kN, bool kMinus>
         const double t = num / den;
         const Lanes tt = {t, t};
         Lanes v[kCapacity];
-        Lanes d = load(kc->max);
-        for (int p = 0; p < pairs; ++p) {
-          v[p] = c[p] + s[p] * tt;
-          d = lane_min(d, v[p]);
-        }
+        for (int p = 0; p < pairs; ++p) v[p] = c[p] + s[p] * tt;
+        const Lanes d = fold_pairs([&](int p) { return v[p]; });
         const double dt = across_min(d), vi = line_at(v, i), vj = line_at(v, j);
         // No other line below the two at t*, and d* > 0 (t* inside P, the
         // ray test's d >= 0, the traction unclamped).
