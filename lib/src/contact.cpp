@@ -583,8 +583,22 @@ template <int kN, bool kMinus>
       // crossing t* = num / den inside (0, 1), then d* and the two
       // trapezoids 0 -> t* (2 t0 + t1 = t*, t0 + 2 t1 = 2 t*) and t* -> 1
       // (2 t* + 1, t* + 2).
-      const double ci = line_at(c, i), cj = line_at(c, j);
-      const double num = cj - ci, den = line_at(s, i) - line_at(s, j);
+      // Triangles to pentagons: the lines read by index from a copy, so
+      // that c and s themselves are read by constant indices only (kept in
+      // registers, not stored for every edge; the general case is out of
+      // line for them). Larger counts keep theirs in memory anyway.
+      Lanes cl[kN >= 3 && kN <= 5 ? kCapacity : 1], sl[kN >= 3 && kN <= 5 ? kCapacity : 1];
+      const Lanes *cx = c, *sx = s;
+      if constexpr (kN >= 3 && kN <= 5) {
+        for (int p = 0; p < pairs; ++p) {
+          cl[p] = c[p];
+          sl[p] = s[p];
+        }
+        cx = cl;
+        sx = sl;
+      }
+      const double ci = line_at(cx, i), cj = line_at(cx, j);
+      const double num = cj - ci, den = line_at(sx, i) - line_at(sx, j);
       if (num > 0.0 && num < den) {
         const double t = num / den;
         const Lanes tt = {t, t};
@@ -604,8 +618,14 @@ template <int kN, bool kMinus>
       }
     }
   }
-  if constexpr (kN >= 3 && kN <= 5)
-    paper_side_crossings_call<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
+  if constexpr (kN >= 3 && kN <= 5) {
+    Lanes cl[kCapacity], sl[kCapacity];  // a copy, as in the two-line shortcut
+    for (int p = 0; p < pairs; ++p) {
+      cl[p] = c[p];
+      sl[p] = s[p];
+    }
+    paper_side_crossings_call<kN, kMinus>(cl, sl, n, k, rays, mid, f_start, f_end, sums);
+  }
   else
     paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
   return true;
