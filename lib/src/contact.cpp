@@ -123,6 +123,16 @@ inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
   return detail::lane_min(Lanes{kc->max[0], kc->max[1]}, d);
 #endif
 }
+// -v lane by lane (v with kc->sign's bit flipped), the sign read as
+// xorpd's memory operand, as min_from_max's start.
+inline Lanes negated(const LaneConstants* kc, Lanes v) {
+#if defined(__SSE2__) && defined(__GNUC__)
+  asm("xorpd %1, %0" : "+x"(v) : "m"(*reinterpret_cast<const Lanes*>(kc->sign)));
+  return v;
+#else
+  return -v;
+#endif
+}
 inline Lanes load(const double* pair) {
 #if defined(__SSE2__)
   return _mm_load_pd(pair);
@@ -497,25 +507,23 @@ template <int kN, bool kMinus>
     // are shared by more lines).
     using detail::lanes;
     const Lanes al = lanes(a), abl = lanes(ab);
-    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Lanes ni = lanes(poly.normal(i)), nj = lanes(poly.normal(j));
       const Lanes pi = ni * (lanes(poly.vertex(i)) - al), pj = nj * (lanes(poly.vertex(j)) - al);
       const Lanes qi = ni * abl, qj = nj * abl;
       c[p] = detail::low_lanes(pi, pj) + detail::high_lanes(pi, pj);                        // dot(n, v - a)
-      s[p] = (Lanes)((LaneMask)(detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj)) ^ sign);  // -dot(n, ab)
+      s[p] = negated(kc, detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj));  // -dot(n, ab)
     }
   } else {
     // The lines' components two at a time, {n_i.x, n_j.x} and so on.
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
-    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
       const Lanes nx = {ni.x, nj.x}, ny = {ni.y, nj.y};
       c[p] = nx * (Lanes{vi.x, vj.x} - ax) + ny * (Lanes{vi.y, vj.y} - ay);  // dot(n, v - a)
-      s[p] = (Lanes)((LaneMask)(nx * abx + ny * aby) ^ sign);                // -dot(n, ab)
+      s[p] = negated(kc, nx * abx + ny * aby);                                // -dot(n, ab)
     }
   }
   // The lane by lane minimum of value(p) over the pairs p, folded from
