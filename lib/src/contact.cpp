@@ -112,9 +112,9 @@ inline const LaneConstants* lane_constants() {
   return k;
 }
 // lane_min({DBL_MAX, DBL_MAX}, d), a fold's first step, with the start
-// read from kc->max as minpd's memory operand, so that no register holds
-// it across the edge (GCC keeps such a constant in one, one fewer for the
-// rest). The same selection, d < DBL_MAX ? d : DBL_MAX lane by lane.
+// read from kc->max as minpd's memory operand (GCC would keep it in a
+// register for the whole edge, which the rest of the edge's work then
+// lacks). The same selection, d < DBL_MAX ? d : DBL_MAX lane by lane.
 inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
 #if defined(__SSE2__) && defined(__GNUC__)
   asm("minpd %1, %0" : "+x"(d) : "m"(*reinterpret_cast<const Lanes*>(kc->max)));
@@ -124,7 +124,7 @@ inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
 #endif
 }
 // -v lane by lane (v with kc->sign's bit flipped), the sign read as
-// xorpd's memory operand, as min_from_max's start.
+// xorpd's memory operand, as in min_from_max.
 inline Lanes negated(const LaneConstants* kc, Lanes v) {
 #if defined(__SSE2__) && defined(__GNUC__)
   asm("xorpd %1, %0" : "+x"(v) : "m"(*reinterpret_cast<const Lanes*>(kc->sign)));
