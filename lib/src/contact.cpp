@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -53,6 +54,45 @@ inline double across_min(Lanes d) {
   return d[1] < d[0] ? d[1] : d[0];
 #endif
 }
+// {across_min(a), across_min(b)}: the two folds finished by one minpd on
+// their high and low lanes (the same selection lane by lane).
+inline Lanes across_min2(Lanes a, Lanes b) {
+#if defined(__SSE2__)
+  return _mm_min_pd(_mm_unpackhi_pd(a, b), _mm_unpacklo_pd(a, b));
+#else
+  return Lanes{across_min(a), across_min(b)};
+#endif
+}
+
+// lane_bits(m0) | lane_bits(m1) << 2 for two comparison results: SSE2
+// packs their four lanes' 32-bit halves into one register (each lane's
+// sign in the high half of a 32-bit slot) for one movmskps.
+inline unsigned pair_bits(LaneMask m0, LaneMask m1) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(_mm_packs_epi32((__m128i)m0, (__m128i)m1))));
+#else
+  return lane_bits(m0) | lane_bits(m1) << 2;
+#endif
+}
+
+// lane_bits(a) & lane_bits(b), the masks' and taken in their register
+// (SSE2; GCC's generic form of it re-derives each lane).
+inline unsigned lane_bits_and(LaneMask a, LaneMask b) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_pd(_mm_and_pd((__m128d)a, (__m128d)b)));
+#else
+  return lane_bits(a) & lane_bits(b);
+#endif
+}
+
+// Line i of lines kept two at a time (pair i / 2, lane i % 2): the i-th
+// double of the pairs' storage, read as such (GCC does not fold the pair
+// and lane indices back into i).
+inline double line_at(const Lanes* pairs, int i) {
+  double x;
+  std::memcpy(&x, reinterpret_cast<const char*>(pairs) + sizeof(double) * static_cast<std::size_t>(i), sizeof x);
+  return x;
+}
 
 // The lane constants of paper_side_edge, {x, x} each. GCC builds such a
 // constant from its scalar (movsd + unpcklpd: two instructions, again each
@@ -70,6 +110,28 @@ inline const LaneConstants* lane_constants() {
   asm("" : "+r"(k));  // opaque: not folded back into a built constant
 #endif
   return k;
+}
+// lane_min({DBL_MAX, DBL_MAX}, d), a fold's first step, with the start
+// read from kc->max as minpd's memory operand (GCC would keep it in a
+// register for the whole edge, which the rest of the edge's work then
+// lacks). The same selection, d < DBL_MAX ? d : DBL_MAX lane by lane.
+inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
+#if defined(__SSE2__) && defined(__GNUC__)
+  asm("minpd %1, %0" : "+x"(d) : "m"(*reinterpret_cast<const Lanes*>(kc->max)));
+  return d;
+#else
+  return detail::lane_min(Lanes{kc->max[0], kc->max[1]}, d);
+#endif
+}
+// -v lane by lane (v with kc->sign's bit flipped), the sign read as
+// xorpd's memory operand, as in min_from_max.
+inline Lanes negated(const LaneConstants* kc, Lanes v) {
+#if defined(__SSE2__) && defined(__GNUC__)
+  asm("xorpd %1, %0" : "+x"(v) : "m"(*reinterpret_cast<const Lanes*>(kc->sign)));
+  return v;
+#else
+  return -v;
+#endif
 }
 inline Lanes load(const double* pair) {
 #if defined(__SSE2__)
@@ -95,8 +157,8 @@ struct EdgeLines {
   int count = kN;
   int size() const { return kN ? kN : count; }
   int pairs() const { return kN ? kCapacity : (count + 1) / 2; }
-  double c_at(int i) const { return c[i >> 1][i & 1]; }
-  double s_at(int i) const { return s[i >> 1][i & 1]; }
+  double c_at(int i) const { return line_at(c, i); }
+  double s_at(int i) const { return line_at(s, i); }
   void build(const PolygonView& poly, Vec2 a, Vec2 ab) {
     if (!kN) count = poly.count;
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
@@ -155,7 +217,7 @@ struct EdgeLines {
       const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
       const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
       const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
+      unsigned hits = lane_bits_and(num > zero, num < den);
       if (!hits) continue;
       const Lanes t = num / den;
       hits &= lane_bits(ca + sa * t >= zero);
@@ -305,6 +367,83 @@ template <bool kMinus>
   return sums;
 }
 
+// paper_side_edge's general case, an edge that takes neither shortcut:
+// the crossings with the rays, sorted, and the paper's segments between
+// them (integrate_halves when there are none). c, s: the edge's lines as
+// paper_side_edge builds them; mid, f_start, f_end: its d_exit at t = 1/2
+// and end tractions.
+template <int kN, bool kMinus>
+[[gnu::always_inline]] inline void paper_side_crossings(const Lanes* c, const Lanes* s, int n, double k,
+                                                        BisectorSpan rays, double mid, double f_start, double f_end,
+                                                        EdgeSums& sums) {
+  const int pairs = (n + 1) / 2;
+  const LaneConstants* const kc = lane_constants();
+  const auto at = [&](double t) {
+    const Lanes tt = {t, t};
+    Lanes d = load(kc->max);
+    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    return across_min(d);
+  };
+  const auto traction = [k](double d) {
+    if (!(d > 0.0)) return 0.0;
+    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+  };
+  const double f_mid = traction(mid);
+  // The crossings strictly inside (0, 1), in ray order (Crossings::add's
+  // test), at most 2 kN (a virtual node adds a ray).
+  double cross[2 * (kN ? kN : kMaxVertices)];
+  int count = 0;
+  const auto add = [&](double x) {
+    if (x > 0.0 && x < 1.0) cross[count++] = x;
+  };
+  if (rays.count == n) {
+    const Lanes zero = {0.0, 0.0};
+    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
+    for (int p = 0; p < pairs; ++p) {
+      const int q = p == 0 ? pairs - 1 : p - 1;
+      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
+      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
+      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
+      unsigned hits = lane_bits_and(num > zero, num < den);
+      if (!hits) continue;
+      const Lanes t = num / den;
+      hits &= lane_bits(ca + sa * t >= zero);
+      if (hits & 1u) add(t[0]);
+      if (hits & 2u) add(t[1]);
+    }
+  } else {
+    for (int r = 0; r < rays.count && r < 2 * n; ++r) {
+      const Bisector& ray = rays.b[r];
+      const int la = ray.line_a, lb = ray.line_b;
+      const double ca = line_at(c, la), cb = line_at(c, lb), sa = line_at(s, la), sb = line_at(s, lb);
+      double num = cb - ca, den = sa - sb;
+      if (den < 0.0) {
+        num = -num;
+        den = -den;
+      }
+      if (!(num > 0.0 && num < den)) continue;
+      const double t = num / den;
+      if (ca + sa * t >= ray.d0) add(t);
+    }
+  }
+  if (count == 0) {
+    sums = integrate_halves(f_start, f_mid, f_end);
+    return;
+  }
+  sort_points(cross, count);
+  sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
+}
+
+// paper_side_crossings out of line, for triangles to pentagons: the shallow
+// contacts of a jointed rock mass take a shortcut on most edges, and the
+// general case inline costs every edge (measured; hexagons to octagons,
+// deep overlaps of round particles, keep it inline).
+template <int kN, bool kMinus>
+[[gnu::noinline]] void paper_side_crossings_call(const Lanes* c, const Lanes* s, int n, double k, BisectorSpan rays,
+                                                 double mid, double f_start, double f_end, EdgeSums& sums) {
+  paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
+}
+
 // An IP edge of known source lies on one polygon's boundary, where that
 // polygon's potential is zero: only the other side's phi enters Eq. 11,
 // phi_CP with a plus sign (kMinus false), phi_TP with a minus. The same
@@ -368,35 +507,42 @@ template <int kN, bool kMinus>
     // are shared by more lines).
     using detail::lanes;
     const Lanes al = lanes(a), abl = lanes(ab);
-    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Lanes ni = lanes(poly.normal(i)), nj = lanes(poly.normal(j));
       const Lanes pi = ni * (lanes(poly.vertex(i)) - al), pj = nj * (lanes(poly.vertex(j)) - al);
       const Lanes qi = ni * abl, qj = nj * abl;
       c[p] = detail::low_lanes(pi, pj) + detail::high_lanes(pi, pj);                        // dot(n, v - a)
-      s[p] = (Lanes)((LaneMask)(detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj)) ^ sign);  // -dot(n, ab)
+      s[p] = negated(kc, detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj));  // -dot(n, ab)
     }
   } else {
     // The lines' components two at a time, {n_i.x, n_j.x} and so on.
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
-    const LaneMask sign = (LaneMask)load(kc->sign);
     for (int p = 0; p < pairs; ++p) {
       const int i = 2 * p, j = i + 1 < n ? i + 1 : n - 1;
       const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
       const Lanes nx = {ni.x, nj.x}, ny = {ni.y, nj.y};
       c[p] = nx * (Lanes{vi.x, vj.x} - ax) + ny * (Lanes{vi.y, vj.y} - ay);  // dot(n, v - a)
-      s[p] = (Lanes)((LaneMask)(nx * abx + ny * aby) ^ sign);                // -dot(n, ab)
+      s[p] = negated(kc, nx * abx + ny * aby);                                // -dot(n, ab)
     }
   }
-  // d_exit at t: EdgeLines::at's fold (at_start: t = 0 without the products,
-  // at_end: t = 1 without them).
-  const auto fold_at = [&](Lanes tt) {
-    Lanes d = load(kc->max);
-    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
-    return across_min(d);
+  // The lane by lane minimum of value(p) over the pairs p, folded from
+  // DBL_MAX as EdgeLines does; with the count known, its first step is
+  // min_from_max.
+  const auto fold_pairs = [&](auto&& value) {
+    if constexpr (kN > 0) {
+      Lanes d = min_from_max(kc, value(0));
+      for (int p = 1; p < pairs; ++p) d = lane_min(d, value(p));
+      return d;
+    } else {
+      Lanes d = load(kc->max);
+      for (int p = 0; p < pairs; ++p) d = lane_min(d, value(p));
+      return d;
+    }
   };
-  const auto at = [&](double t) { return fold_at(Lanes{t, t}); };
+  // d_exit at the midpoint: EdgeLines::at's fold (at_start: t = 0 without
+  // the products, at_end: t = 1 without them).
+  const auto fold_at = [&](Lanes tt) { return across_min(fold_pairs([&](int p) { return c[p] + s[p] * tt; })); };
   const double mid = fold_at(load(kc->half));
   if (mid <= tol) return false;
   const auto traction = [k](double d) {
@@ -406,23 +552,26 @@ template <int kN, bool kMinus>
   // d_exit at the ends (at_start's and at_end's folds) and the lines that
   // attain it there.
   Lanes e[kCapacity];  // c_i + s_i: d_i(1)
-  Lanes m0 = load(kc->max), m1 = m0;
-  for (int p = 0; p < pairs; ++p) {
-    e[p] = c[p] + s[p];
-    m0 = lane_min(m0, c[p]);
-    m1 = lane_min(m1, e[p]);
-  }
-  const double d0 = across_min(m0), d1 = across_min(m1);
+  for (int p = 0; p < pairs; ++p) e[p] = c[p] + s[p];
+  const Lanes m0 = fold_pairs([&](int p) { return c[p]; }), m1 = fold_pairs([&](int p) { return e[p]; });
+  const Lanes d01 = across_min2(m0, m1);  // {d_exit(0), d_exit(1)}
+  const double d0 = d01[0], d1 = d01[1];
   const double f_start = zero_start ? 0.0 : traction(d0);
   const double f_end = zero_end ? 0.0 : traction(d1);
   if ((zero_start || d0 > 0.0) && (zero_end || d1 > 0.0)) {
     // Bit i: line i attains d_exit at t = 0 (first) / t = 1 (last); an odd
     // count's repeated line masked off.
     const Lanes l0 = {d0, d0}, l1 = {d1, d1};
+    // Two pairs at a time (pair_bits), an odd number's last alone.
     unsigned first = 0, last = 0;
-    for (int p = 0; p < pairs; ++p) {
-      first |= lane_bits(c[p] == l0) << (2 * p);
-      last |= lane_bits(e[p] == l1) << (2 * p);
+    int q = 0;
+    for (; q + 1 < pairs; q += 2) {
+      first |= pair_bits(c[q] == l0, c[q + 1] == l0) << (2 * q);
+      last |= pair_bits(e[q] == l1, e[q + 1] == l1) << (2 * q);
+    }
+    if (q < pairs) {
+      first |= lane_bits(c[q] == l0) << (2 * q);
+      last |= lane_bits(e[q] == l1) << (2 * q);
     }
     if (n % 2) {
       first &= ~(1u << n);
@@ -442,18 +591,29 @@ template <int kN, bool kMinus>
       // crossing t* = num / den inside (0, 1), then d* and the two
       // trapezoids 0 -> t* (2 t0 + t1 = t*, t0 + 2 t1 = 2 t*) and t* -> 1
       // (2 t* + 1, t* + 2).
-      const double ci = c[i >> 1][i & 1], cj = c[j >> 1][j & 1];
-      const double num = cj - ci, den = s[i >> 1][i & 1] - s[j >> 1][j & 1];
+      // Triangles to pentagons: the lines read by index from a copy, so
+      // that c and s themselves are read by constant indices only (kept in
+      // registers, not stored for every edge; the general case is out of
+      // line for them). Larger counts keep theirs in memory anyway.
+      Lanes cl[kN >= 3 && kN <= 5 ? kCapacity : 1], sl[kN >= 3 && kN <= 5 ? kCapacity : 1];
+      const Lanes *cx = c, *sx = s;
+      if constexpr (kN >= 3 && kN <= 5) {
+        for (int p = 0; p < pairs; ++p) {
+          cl[p] = c[p];
+          sl[p] = s[p];
+        }
+        cx = cl;
+        sx = sl;
+      }
+      const double ci = line_at(cx, i), cj = line_at(cx, j);
+      const double num = cj - ci, den = line_at(sx, i) - line_at(sx, j);
       if (num > 0.0 && num < den) {
         const double t = num / den;
         const Lanes tt = {t, t};
         Lanes v[kCapacity];
-        Lanes d = load(kc->max);
-        for (int p = 0; p < pairs; ++p) {
-          v[p] = c[p] + s[p] * tt;
-          d = lane_min(d, v[p]);
-        }
-        const double dt = across_min(d), vi = v[i >> 1][i & 1], vj = v[j >> 1][j & 1];
+        for (int p = 0; p < pairs; ++p) v[p] = c[p] + s[p] * tt;
+        const Lanes d = fold_pairs([&](int p) { return v[p]; });
+        const double dt = across_min(d), vi = line_at(v, i), vj = line_at(v, j);
         // No other line below the two at t*, and d* > 0 (t* inside P, the
         // ray test's d >= 0, the traction unclamped).
         if (dt > 0.0 && dt == (vj < vi ? vj : vi)) {
@@ -466,50 +626,16 @@ template <int kN, bool kMinus>
       }
     }
   }
-  const double f_mid = traction(mid);
-  // The crossings strictly inside (0, 1), in ray order (Crossings::add's
-  // test), at most 2 kN (a virtual node adds a ray).
-  double cross[2 * (kN ? kN : kMaxVertices)];
-  int count = 0;
-  const auto add = [&](double x) {
-    if (x > 0.0 && x < 1.0) cross[count++] = x;
-  };
-  if (rays.count == n) {
-    const Lanes zero = {0.0, 0.0};
-    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
+  if constexpr (kN >= 3 && kN <= 5) {
+    Lanes cl[kCapacity], sl[kCapacity];  // a copy, as in the two-line shortcut
     for (int p = 0; p < pairs; ++p) {
-      const int q = p == 0 ? pairs - 1 : p - 1;
-      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
-      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
-      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits(num > zero) & lane_bits(num < den);
-      if (!hits) continue;
-      const Lanes t = num / den;
-      hits &= lane_bits(ca + sa * t >= zero);
-      if (hits & 1u) add(t[0]);
-      if (hits & 2u) add(t[1]);
+      cl[p] = c[p];
+      sl[p] = s[p];
     }
-  } else {
-    for (int r = 0; r < rays.count && r < 2 * n; ++r) {
-      const Bisector& ray = rays.b[r];
-      const int la = ray.line_a, lb = ray.line_b;
-      const double ca = c[la >> 1][la & 1], cb = c[lb >> 1][lb & 1], sa = s[la >> 1][la & 1], sb = s[lb >> 1][lb & 1];
-      double num = cb - ca, den = sa - sb;
-      if (den < 0.0) {
-        num = -num;
-        den = -den;
-      }
-      if (!(num > 0.0 && num < den)) continue;
-      const double t = num / den;
-      if (ca + sa * t >= ray.d0) add(t);
-    }
+    paper_side_crossings_call<kN, kMinus>(cl, sl, n, k, rays, mid, f_start, f_end, sums);
   }
-  if (count == 0) {
-    sums = integrate_halves(f_start, f_mid, f_end);
-    return true;
-  }
-  sort_points(cross, count);
-  sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
+  else
+    paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
   return true;
 }
 
@@ -533,13 +659,14 @@ template <bool kMinus>
   }
 }
 
-template <int kN, bool kMinus>
-[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Integration rule,
-                                                 Vec2 a, Vec2 ab, double tol, bool zero_start, bool zero_end,
-                                                 EdgeSums& sums) {
-  if (rule != Integration::kPaperBisector)
+// kPaper: the rule is Integration::kPaperBisector (known for the whole
+// contact, so that no edge tests it).
+template <int kN, bool kMinus, bool kPaper>
+[[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
+                                                 double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+  if constexpr (!kPaper)
     return envelope_side_edge<kMinus>(poly, k, a, ab, tol, zero_start, zero_end, sums);
-  if constexpr (kN > 0)
+  else if constexpr (kN > 0)
     return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
   else
     return paper_side_edge_any<kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
@@ -572,12 +699,13 @@ template <int kN, bool kMinus>
 // longer edges only, then finds it inside after all and keeps it.
 // cross(b - a, p - a) = (b - a).x (p - a).y - (b - a).y (p - a).x is
 // taken as the two lanes' products of b - a and the swapped p - a, then
-// their difference: the same operations, the same bits.
+// their difference: the same operations, the same bits. The edges from
+// the closing one (count - 1 -> 0) on, so that no index wraps.
 bool inside_ip(const Polygon& ip, Vec2 p) {
   const Lanes pl = detail::lanes(p);
-  Lanes a = detail::lanes(ip.vertex(0));
+  Lanes a = detail::lanes(ip.vertex(ip.count - 1));
   for (int e = 0; e < ip.count; ++e) {
-    const Lanes b = detail::lanes(ip.vertex(ip.next(e)));
+    const Lanes b = detail::lanes(ip.vertex(e));
     const Lanes t = (b - a) * detail::swapped(pl - a);
     if (t[0] - t[1] < 0.0) return false;  // CCW: the inside is on the left
     a = b;
@@ -658,9 +786,10 @@ enum class On { kNeither = 0, kCp = 1, kTp = 2 };
 }
 
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
-// ip.count >= 3. One named result, returned on every path, so that it is
-// built in the caller's slot (no copy of it at the end).
-template <int kNc, int kNt>
+// ip.count >= 3, and kPaper: rule is Integration::kPaperBisector. One named
+// result, returned on every path, so that it is built in the caller's slot
+// (no copy of it at the end).
+template <int kNc, int kNt, bool kPaper>
 [[gnu::always_inline]] inline NormalForce contact_force_ip(const PotentialSide& cp, const PotentialSide& tp,
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
@@ -686,7 +815,7 @@ template <int kNc, int kNt>
   // zeroed on every call).
   static thread_local BisectorSet own_cp, own_tp;
   BisectorSpan rays_cp{cp.bisectors, cp.bisector_count}, rays_tp{tp.bisectors, tp.bisector_count};
-  if (rule == Integration::kPaperBisector) {
+  if (kPaper) {
     if (!rays_cp.b) {
       own_cp.count = bisectors(cp.poly, cp.small_edge, cp.small_edge_rays, own_cp.b.data());
       rays_cp = {own_cp.b.data(), own_cp.count};
@@ -715,7 +844,8 @@ template <int kNc, int kNt>
     on_this = on_next;
     on_next = on(e1);
     const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
-    const double len = detail::root(length_squared(ab));  // length(ab)
+    const Lanes ab2 = detail::lanes(ab) * detail::lanes(ab);
+    const double len = detail::root(ab2[0] + ab2[1]);  // length(ab): x x + y y, lane by lane
     if (len <= tol) continue;
     perimeter += len;
     // A vertex where an edge on CP's boundary starts or ends is on that
@@ -726,11 +856,11 @@ template <int kNc, int kNt>
     EdgeSums sums;  // set when used
     bool used = false;
     if (on_this == On::kCp)
-      used = one_side_edge<kNt, true>(tp.poly, tp.kn_over_h, rays_tp, rule, a, ab, tol, on_prev == On::kTp,
-                                      on_next == On::kTp, sums);
+      used = one_side_edge<kNt, true, kPaper>(tp.poly, tp.kn_over_h, rays_tp, a, ab, tol, on_prev == On::kTp,
+                                              on_next == On::kTp, sums);
     else if (on_this == On::kTp)
-      used = one_side_edge<kNc, false>(cp.poly, cp.kn_over_h, rays_cp, rule, a, ab, tol, on_prev == On::kCp,
-                                       on_next == On::kCp, sums);
+      used = one_side_edge<kNc, false, kPaper>(cp.poly, cp.kn_over_h, rays_cp, a, ab, tol, on_prev == On::kCp,
+                                               on_next == On::kCp, sums);
     else
       used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
     if (!used) {
@@ -769,11 +899,20 @@ template <int kNc, int kNt>
   return out;
 }
 
+// Another rule than the paper's (the exact envelope): out of line, with the
+// vertex counts read at run time.
+[[gnu::noinline]] NormalForce contact_force_other_rule(const PotentialSide& cp, const PotentialSide& tp,
+                                                       const Polygon& ip, Integration rule, double tol,
+                                                       const IpEdge* source, LoadingPoint where) {
+  return contact_force_ip<0, 0, false>(cp, tp, ip, rule, tol, source, where);
+}
+
 template <int kNc, int kNt>
 NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
                             double tol, const IpEdge* source, LoadingPoint where) {
   if (ip.count < 3) return NormalForce{};
-  return contact_force_ip<kNc, kNt>(cp, tp, ip, rule, tol, source, where);
+  if (rule != Integration::kPaperBisector) return contact_force_other_rule(cp, tp, ip, rule, tol, source, where);
+  return contact_force_ip<kNc, kNt, true>(cp, tp, ip, rule, tol, source, where);
 }
 
 // contact_force_n with the vertex counts of CP and TP as compile-time
