@@ -1,10 +1,11 @@
 // The pair loop: per near pair (independent of all others), the overlap
 // test and intersection polygon (Paper A Sect. 3.1), the normal contact
 // force and its loading point (Eqs. 10-20), the friction force
-// (friction.cpp, Eqs. 24-26), and the penalty energy when a check is due.
+// (friction.hpp, Eqs. 24-26), and the penalty energy when a check is due.
 #include <algorithm>
 #include <array>
 
+#include "simulation/friction.hpp"
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -69,7 +70,7 @@ constexpr std::size_t kBornListRoom = 256;
   r.normal_force = nf.force;
   r.ip_area = nf.ip_area;
   r.ip_length = 0.5 * nf.ip_perimeter;
-  // friction.cpp, Eqs. 24-26, with the last evaluation's pg and tangential
+  // friction.hpp, Eqs. 24-26, with the last evaluation's pg and tangential
   // force (the load's point and the result's force, still the last step's).
   if (friction_)
     pair_friction(cp, tp, r, *history, pair_friction_work_[static_cast<std::size_t>(k)], was_active, load.point,
