@@ -169,7 +169,9 @@ void Engine::pair_forces(bool with_energy) {
     p.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
     if (!p.candidate) {
       work += kWorkOther;
-      if (was_active) changed.ended.push_back(k);  // its slot is freed by merge_contacts
+      // Its slot is freed by merge_contacts. A copy of k (push_back takes a
+      // reference, which would keep k in memory through the whole loop).
+      if (was_active) changed.ended.push_back(long{k});
       continue;
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
@@ -183,7 +185,7 @@ void Engine::pair_forces(bool with_energy) {
     if (state != OverlapState::kOverlapping || ip.count < 3 ||
         !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
       work += kWorkCandidate;
-      if (was_active) changed.ended.push_back(k);
+      if (was_active) changed.ended.push_back(long{k});
       continue;
     }
     work += kWorkTouching;
