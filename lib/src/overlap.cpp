@@ -244,7 +244,10 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
     const Lanes half_tol = {kCutMargin * tol, kCutMargin * tol};
     std::uint64_t mask = 0;
     for (int k = 0; k < pa; ++k) mask |= std::uint64_t{lane_bits(hi_a[k] - ea.off[k] > half_tol)} << (2 * k);
-    *cuts = static_cast<std::uint32_t>(mask & ((std::uint64_t{1} << na) - 1u));
+    // An odd count's last pair repeats its last edge in lane 1: that bit
+    // (na) off. An even count's lanes are its edges (no bit past na - 1).
+    if (kA == 0 || kA % 2 == 1) mask &= (std::uint64_t{1} << na) - 1u;
+    *cuts = static_cast<std::uint32_t>(mask);
   }
   return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
 }
