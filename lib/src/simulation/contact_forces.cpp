@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 
+#include "lanes.hpp"
 #include "simulation/friction.hpp"
 #include "simulation/internal.hpp"
 
@@ -27,6 +28,13 @@ namespace {
 constexpr long kWorkTouching = 125;
 constexpr long kWorkCandidate = 6;
 constexpr long kWorkOther = 1;
+
+// aabb_overlap's verdict, both axes at once: a.lo <= b.hi and b.lo <=
+// a.hi in both lanes (ordered compares: a NaN bound fails, as there).
+inline bool boxes_overlap(const Aabb& a, const Aabb& b) {
+  using detail::lanes;
+  return (detail::lane_bits(lanes(a.lo) <= lanes(b.hi)) & detail::lane_bits(lanes(b.lo) <= lanes(a.hi))) == 3u;
+}
 
 constexpr double kTwoPi = 6.28318530717958647692;  // 2 pi, the penetration guard's first tier
 
@@ -166,7 +174,7 @@ void Engine::pair_forces(bool with_energy) {
     NearPair& p = near[k];
     const bool was_active = p.active;
     p.active = false;
-    p.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
+    p.candidate = boxes_overlap(boxes[p.i], boxes[p.j]);
     if (!p.candidate) {
       work += kWorkOther;
       // Its slot is freed by merge_contacts. A copy of k (push_back takes a
