@@ -172,10 +172,13 @@ void Engine::pair_forces(bool with_energy) {
       __builtin_prefetch(&sides[j]);
     }
     NearPair& p = near[k];
-    const bool was_active = p.active;
-    p.active = false;
+    // p.active (did the pair touch at the last step?) is read and cleared
+    // where it is needed, after the overlap test for a candidate: a value
+    // kept across that call would be spilled around it.
     p.candidate = boxes_overlap(boxes[p.i], boxes[p.j]);
     if (!p.candidate) {
+      const bool was_active = p.active;
+      p.active = false;
       work += kWorkOther;
       // Its slot is freed by merge_contacts. A copy of k (push_back takes a
       // reference, which would keep k in memory through the whole loop).
@@ -190,6 +193,8 @@ void Engine::pair_forces(bool with_energy) {
     const OverlapState state =
         overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &witness, facts);
     p.witness = static_cast<std::int16_t>(witness);  // an axis index: below 2 kMaxVertices
+    const bool was_active = p.active;
+    p.active = false;
     if (state != OverlapState::kOverlapping || ip.count < 3 ||
         !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
       work += kWorkCandidate;
