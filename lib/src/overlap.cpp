@@ -211,13 +211,14 @@ constexpr double kCutMargin = 0.5;
 // kA, kB: the vertex counts when known at compile time (0: read them), so
 // that the common pairs of triangles to pentagons run unrolled; every
 // distance is the same dot product, rounded the same way, either way.
-template <bool kCuts, int kA = 0, int kB = 0>
+// kWitness: false when the caller has tried the witness axis already.
+template <bool kCuts, int kA = 0, int kB = 0, bool kWitness = true>
 OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, double tol, std::uint32_t* cuts,
                                int* witness, const SupportLines::Pair* support_a,
                                const SupportLines::Pair* support_b) {
   const int na = kA ? kA : a.count, nb = kB ? kB : b.count;
   const int pa = (na + 1) / 2, pb = (nb + 1) / 2;
-  if (witness && static_cast<unsigned>(*witness) < static_cast<unsigned>(nb + na))
+  if (kWitness && witness && static_cast<unsigned>(*witness) < static_cast<unsigned>(nb + na))
     if (axis_distance<kA, kB>(a, b, *witness) > tol) return OverlapState::kSeparate;
   // Every axis, two per lane pair; dmax: the lane-wise maximum distance.
   EdgeLanes<kB> eb;
@@ -243,7 +244,10 @@ OverlapState separating_axes_n(const PolygonView& a, const PolygonView& b, doubl
     const Lanes half_tol = {kCutMargin * tol, kCutMargin * tol};
     std::uint64_t mask = 0;
     for (int k = 0; k < pa; ++k) mask |= std::uint64_t{lane_bits(hi_a[k] - ea.off[k] > half_tol)} << (2 * k);
-    *cuts = static_cast<std::uint32_t>(mask & ((std::uint64_t{1} << na) - 1u));
+    // An odd count's last pair repeats its last edge in lane 1: that bit
+    // (na) off. An even count's lanes are its edges (no bit past na - 1).
+    if (kA == 0 || kA % 2 == 1) mask &= (std::uint64_t{1} << na) - 1u;
+    *cuts = static_cast<std::uint32_t>(mask);
   }
   return d < -tol ? OverlapState::kOverlapping : OverlapState::kTouching;
 }
@@ -578,8 +582,9 @@ struct ClipRing {
 // found cutting. Flattened, so that the test runs in this call frame with
 // its pointer arguments known: a pair that does not overlap (most
 // candidates) costs the dispatch, this frame and the test, no more.
+// kWitness: false when the caller has tried the witness axis already.
 struct OverlapAndClip {
-  template <int kA, int kB>
+  template <int kA, int kB, bool kWitness = true>
   [[gnu::noinline, gnu::flatten]] static OverlapState run(const PolygonView& contact, const PolygonView& target,
                                                           double tol, Polygon& ip, IpEdge* source, int* witness,
                                                           const OverlapFacts& facts) {
@@ -591,8 +596,8 @@ struct OverlapAndClip {
       return run<0, 0>(contact, target, tol, ip, source, witness, own);
     }
     std::uint32_t lines = 0;
-    const OverlapState state = separating_axes_n<true, kA, kB>(contact, target, tol, &lines, witness,
-                                                               facts.contact_support, facts.target_support);
+    const OverlapState state = separating_axes_n<true, kA, kB, kWitness>(contact, target, tol, &lines, witness,
+                                                                         facts.contact_support, facts.target_support);
     if (state != OverlapState::kOverlapping) return state;
     // One verdict from one computation: the separating-axis test
     // says the interiors overlap by more than tol along every axis, yet the
@@ -633,6 +638,14 @@ OverlapState overlap_and_intersection(const PolygonView& contact, const PolygonV
                                       IpEdge* source, int* witness, const OverlapFacts& facts) {
   ip.count = 0;
   if (tol < 0.0) return overlap_and_intersection_own_tol(contact, target, ip, source, witness, facts);
+  if (contact.count == 4 && target.count == 4) {
+    // The common pair, two quadrilaterals, tries its witness axis here
+    // (separating_axes_n's first step): a pair that stays apart, most of
+    // them, ends with no call frame.
+    if (witness && static_cast<unsigned>(*witness) < 8u && axis_distance<4, 4>(contact, target, *witness) > tol)
+      return OverlapState::kSeparate;
+    return OverlapAndClip::run<4, 4, false>(contact, target, tol, ip, source, witness, facts);
+  }
   return by_counts<OverlapAndClip>(contact, target, tol, ip, source, witness, facts);
 }
 

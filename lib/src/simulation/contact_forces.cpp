@@ -1,10 +1,12 @@
 // The pair loop: per near pair (independent of all others), the overlap
 // test and intersection polygon (Paper A Sect. 3.1), the normal contact
 // force and its loading point (Eqs. 10-20), the friction force
-// (friction.cpp, Eqs. 24-26), and the penalty energy when a check is due.
+// (friction.hpp, Eqs. 24-26), and the penalty energy when a check is due.
 #include <algorithm>
 #include <array>
 
+#include "lanes.hpp"
+#include "simulation/friction.hpp"
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -26,6 +28,13 @@ namespace {
 constexpr long kWorkTouching = 125;
 constexpr long kWorkCandidate = 6;
 constexpr long kWorkOther = 1;
+
+// aabb_overlap's verdict, both axes at once: a.lo <= b.hi and b.lo <=
+// a.hi in both lanes (ordered compares: a NaN bound fails, as there).
+inline bool boxes_overlap(const Aabb& a, const Aabb& b) {
+  using detail::lanes;
+  return (detail::lane_bits(lanes(a.lo) <= lanes(b.hi)) & detail::lane_bits(lanes(b.lo) <= lanes(a.hi))) == 3u;
+}
 
 constexpr double kTwoPi = 6.28318530717958647692;  // 2 pi, the penetration guard's first tier
 
@@ -69,7 +78,7 @@ constexpr std::size_t kBornListRoom = 256;
   r.normal_force = nf.force;
   r.ip_area = nf.ip_area;
   r.ip_length = 0.5 * nf.ip_perimeter;
-  // friction.cpp, Eqs. 24-26, with the last evaluation's pg and tangential
+  // friction.hpp, Eqs. 24-26, with the last evaluation's pg and tangential
   // force (the load's point and the result's force, still the last step's).
   if (friction_)
     pair_friction(cp, tp, r, *history, pair_friction_work_[static_cast<std::size_t>(k)], was_active, load.point,
@@ -163,12 +172,17 @@ void Engine::pair_forces(bool with_energy) {
       __builtin_prefetch(&sides[j]);
     }
     NearPair& p = near[k];
-    const bool was_active = p.active;
-    p.active = false;
-    p.candidate = aabb_overlap(boxes[p.i], boxes[p.j]);
+    // p.active (did the pair touch at the last step?) is read and cleared
+    // where it is needed, after the overlap test for a candidate: a value
+    // kept across that call would be spilled around it.
+    p.candidate = boxes_overlap(boxes[p.i], boxes[p.j]);
     if (!p.candidate) {
+      const bool was_active = p.active;
+      p.active = false;
       work += kWorkOther;
-      if (was_active) changed.ended.push_back(k);  // its slot is freed by merge_contacts
+      // Its slot is freed by merge_contacts. A copy of k (push_back takes a
+      // reference, which would keep k in memory through the whole loop).
+      if (was_active) changed.ended.push_back(long{k});
       continue;
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).
@@ -179,10 +193,12 @@ void Engine::pair_forces(bool with_energy) {
     const OverlapState state =
         overlap_and_intersection(sides[p.i].side.poly, sides[p.j].side.poly, tol, ip, source.data(), &witness, facts);
     p.witness = static_cast<std::int16_t>(witness);  // an axis index: below 2 kMaxVertices
+    const bool was_active = p.active;
+    p.active = false;
     if (state != OverlapState::kOverlapping || ip.count < 3 ||
         !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
       work += kWorkCandidate;
-      if (was_active) changed.ended.push_back(k);
+      if (was_active) changed.ended.push_back(long{k});
       continue;
     }
     work += kWorkTouching;

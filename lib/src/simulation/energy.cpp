@@ -45,7 +45,7 @@ void Engine::add_friction_energy(Energy& e) const {
   // keeps no shear, its spring holds nothing (f_t = -|f_n| tan(phi) s is
   // no spring force).
   // Dissipated: the friction work W = -sum over steps of 1/2 (f_t^n +
-  // f_t^{n+1}) . Delta d^n (friction.cpp, accumulated per pair) is what
+  // f_t^{n+1}) . Delta d^n (friction.hpp, accumulated per pair) is what
   // friction took out of the blocks; what the springs do not hold of it is
   // gone: dissipated = W - stored. In a sticking step the trapezoid equals
   // the spring's energy change (f_t linear in d), so only sliding (the

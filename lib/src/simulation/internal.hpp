@@ -10,7 +10,7 @@
 //   damping.cpp         Eq. 5c damping and the settling start
 //   broad_phase.cpp     the near-pair list (sort and sweep with a skin)
 //   contact_forces.cpp  the pair loop: overlap, IP, normal force (Eqs. 10-20)
-//   friction.cpp        Coulomb friction with history (Eqs. 24-26)
+//   friction.hpp        Coulomb friction with history (Eqs. 24-26)
 //   guards.cpp          the per-block and energy guards, the stop message
 //   penetration_guard.cpp  the penetration guard (depth, approach energy)
 //   energy.cpp          energy and momentum
@@ -148,7 +148,7 @@ class Engine {
   PairResult* pair_force(long k, bool was_active, const Polygon& ip, const IpEdge* source, double tol, bool& pair_fault,
                          ThreadContacts& mine);
   void merge_contacts();  // serial: the slots of the pairs that began or stopped touching
-  // friction.cpp
+  // friction.hpp (inlined into the pair loop)
   void pair_friction(int cp, int tp, PairResult& r, PairHistory& hist, double& friction_work, bool was_active,
                      Vec2 last_point, Vec2 last_ft, const NormalForce& nf);
   double friction_tan(int a, int b) const;

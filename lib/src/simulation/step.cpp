@@ -48,7 +48,7 @@ void Engine::run_steps(std::int64_t count) {
       move_blocks();
       // broad_phase.cpp: the near pairs, rebuilt when a block left its grown box.
       update_near_pairs();
-      // contact_forces.cpp + friction.cpp: per pair, overlap and IP (Sect.
+      // contact_forces.cpp + friction.hpp: per pair, overlap and IP (Sect.
       // 3.1), normal force and pg (Eqs. 10-20), friction (Eqs. 24-26).
       pair_forces(energy_due);
       // integration.cpp, Eqs. 22-23, 28-29, 6-7: F^{n+1}, the body forces
