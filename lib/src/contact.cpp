@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -444,6 +446,33 @@ template <int kN, bool kMinus>
   paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
 }
 
+// A polygon's lines two at a time as paper_side_edge pairs them (pair p:
+// lines 2p and 2p + 1, an odd count's last line repeated): the normals' and
+// vertices' components {n_i.x, n_j.x}, {n_i.y, n_j.y}, {v_i.x, v_j.x},
+// {v_i.y, v_j.y}. Hexagons to octagons: gathered once per contact, so that
+// each IP edge reads its lines' components as whole pairs (each pair is
+// otherwise assembled again on every edge from the polygon's points). The
+// same values: the same bits.
+template <int kN>
+struct PairedLines {
+  static constexpr int kCapacity = (kN + 1) / 2;
+  Lanes nx[kCapacity], ny[kCapacity], vx[kCapacity], vy[kCapacity];  // set by gather
+  void gather(const PolygonView& poly) {
+    for (int p = 0; p < kCapacity; ++p) {
+      const int i = 2 * p, j = i + 1 < kN ? i + 1 : kN - 1;
+      const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
+      nx[p] = Lanes{ni.x, nj.x};
+      ny[p] = Lanes{ni.y, nj.y};
+      vx[p] = Lanes{vi.x, vj.x};
+      vy[p] = Lanes{vi.y, vj.y};
+    }
+  }
+};
+// The paired lines a paper_side_edge<kN> reads: hexagons to octagons only
+// (an empty type for the other counts, which build theirs per edge).
+template <int kN>
+using PairedFor = std::conditional_t<(kN >= 6 && kN <= 8), PairedLines<kN>, std::nullptr_t>;
+
 // An IP edge of known source lies on one polygon's boundary, where that
 // polygon's potential is zero: only the other side's phi enters Eq. 11,
 // phi_CP with a plus sign (kMinus false), phi_TP with a minus. The same
@@ -492,7 +521,9 @@ template <int kN, bool kMinus>
 // integrated (1 or 2 here).
 template <int kN, bool kMinus>
 [[gnu::always_inline]] inline bool paper_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
-                                                   double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+                                                   double tol, bool zero_start, bool zero_end, EdgeSums& sums,
+                                                   const PairedFor<kN>* paired = nullptr) {
+  // paired: null where the caller gathered none (paper_side_edge_any).
   const int n = kN ? kN : poly.count;
   const int pairs = (n + 1) / 2;
   constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
@@ -515,6 +546,16 @@ template <int kN, bool kMinus>
       c[p] = detail::low_lanes(pi, pj) + detail::high_lanes(pi, pj);                        // dot(n, v - a)
       s[p] = negated(kc, detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj));  // -dot(n, ab)
     }
+  } else if (kN >= 6 && kN <= 8 && paired) {
+    // The contact's paired lines (PairedLines, hexagons to octagons), the
+    // same operations as below.
+    const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
+    if constexpr (kN >= 6 && kN <= 8)
+      for (int p = 0; p < pairs; ++p) {
+        const Lanes nx = paired->nx[p], ny = paired->ny[p];
+        c[p] = nx * (paired->vx[p] - ax) + ny * (paired->vy[p] - ay);  // dot(n, v - a)
+        s[p] = negated(kc, nx * abx + ny * aby);                        // -dot(n, ab)
+      }
   } else {
     // The lines' components two at a time, {n_i.x, n_j.x} and so on.
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
@@ -663,11 +704,12 @@ template <bool kMinus>
 // contact, so that no edge tests it).
 template <int kN, bool kMinus, bool kPaper>
 [[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
-                                                 double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+                                                 double tol, bool zero_start, bool zero_end, EdgeSums& sums,
+                                                 const PairedFor<kN>* paired) {
   if constexpr (!kPaper)
     return envelope_side_edge<kMinus>(poly, k, a, ab, tol, zero_start, zero_end, sums);
   else if constexpr (kN > 0)
-    return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums, paired);
   else
     return paper_side_edge_any<kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
 }
@@ -836,6 +878,11 @@ template <int kNc, int kNt, bool kPaper>
     const IpEdge s = sources[k];
     return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
   };
+  // Hexagons to octagons: each side's lines paired once for all its edges.
+  PairedFor<kNc> paired_cp;  // left uninitialised: gathered when used
+  PairedFor<kNt> paired_tp;
+  if constexpr (kPaper && kNc >= 6 && kNc <= 8) paired_cp.gather(cp.poly);
+  if constexpr (kPaper && kNt >= 6 && kNt <= 8) paired_tp.gather(tp.poly);
   // The previous, this and the next edge's, carried along the loop.
   On on_prev = On::kNeither, on_this = on(ip.count - 1), on_next = on(0);
   for (int e = 0; e < ip.count; ++e) {
@@ -857,10 +904,10 @@ template <int kNc, int kNt, bool kPaper>
     bool used = false;
     if (on_this == On::kCp)
       used = one_side_edge<kNt, true, kPaper>(tp.poly, tp.kn_over_h, rays_tp, a, ab, tol, on_prev == On::kTp,
-                                              on_next == On::kTp, sums);
+                                              on_next == On::kTp, sums, &paired_tp);
     else if (on_this == On::kTp)
       used = one_side_edge<kNc, false, kPaper>(cp.poly, cp.kn_over_h, rays_cp, a, ab, tol, on_prev == On::kCp,
-                                               on_next == On::kCp, sums);
+                                               on_next == On::kCp, sums, &paired_cp);
     else
       used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
     if (!used) {
