@@ -32,6 +32,17 @@ inline void sort_points(double* t, int count) {
   }
 }
 
+// sort_points for t[0..count) > 0 after a sentinel t[-1] <= 0: the same
+// order, each shift stopped by the sentinel rather than an index test.
+inline void sort_after_sentinel(double* t, int count) {
+  for (int i = 1; i < count; ++i) {
+    const double x = t[i];
+    double* p = t + i;
+    for (; p[-1] > x; --p) p[0] = p[-1];
+    p[0] = x;
+  }
+}
+
 struct Crossings {
   std::array<double, 4 * kMaxVertices> t;  // left uninitialised: count says how many are set
   int count = 0;
@@ -392,8 +403,11 @@ template <int kN, bool kMinus>
   };
   const double f_mid = traction(mid);
   // The crossings strictly inside (0, 1), in ray order (Crossings::add's
-  // test), at most 2 kN (a virtual node adds a ray).
-  double cross[2 * (kN ? kN : kMaxVertices)];
+  // test), at most 2 kN (a virtual node adds a ray), after a sentinel 0
+  // (below every crossing: the sort's shifts stop there without an index test).
+  double slots[2 * (kN ? kN : kMaxVertices) + 1];
+  slots[0] = 0.0;
+  double* const cross = slots + 1;
   int count = 0;
   const auto add = [&](double x) {
     if (x > 0.0 && x < 1.0) cross[count++] = x;
@@ -432,14 +446,16 @@ template <int kN, bool kMinus>
     sums = integrate_halves(f_start, f_mid, f_end);
     return;
   }
-  sort_points(cross, count);
+  sort_after_sentinel(cross, count);
   sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
 }
 
-// paper_side_crossings out of line, for triangles to pentagons: the shallow
-// contacts of a jointed rock mass take a shortcut on most edges, and the
-// general case inline costs every edge (measured; hexagons to octagons,
-// deep overlaps of round particles, keep it inline).
+// paper_side_crossings out of line, for the counts known at compile time:
+// the shallow contacts of a jointed rock mass (triangles to pentagons) take
+// a shortcut on most edges, and the general case inline costs every edge;
+// for hexagons to octagons (deep overlaps of round particles, a quarter of
+// the edges in the general case) it costs the other edges' registers
+// (measured).
 template <int kN, bool kMinus>
 [[gnu::noinline]] void paper_side_crossings_call(const Lanes* c, const Lanes* s, int n, double k, BisectorSpan rays,
                                                  double mid, double f_start, double f_end, EdgeSums& sums) {
@@ -516,7 +532,8 @@ using PairedFor = std::conditional_t<(kN >= 6 && kN <= 8), PairedLines<kN>, std:
 // Both need the traction linear on each piece: the end distances > 0 (the
 // clamp d > 0 ? k d : 0 would bend it), or the end known on this side's
 // boundary (zero_start / zero_end: d = 0 there, f = 0). The midpoint's
-// tol test comes first, as on every edge. The sums differ from the paper's
+// tol test comes first, as on every edge (for hexagons to octagons, after
+// the ends, which may settle it). The sums differ from the paper's
 // segment by segment only by round-off; segments counts the trapezoids
 // integrated (1 or 2 here).
 template <int kN, bool kMinus>
@@ -584,8 +601,11 @@ template <int kN, bool kMinus>
   // d_exit at the midpoint: EdgeLines::at's fold (at_start: t = 0 without
   // the products, at_end: t = 1 without them).
   const auto fold_at = [&](Lanes tt) { return across_min(fold_pairs([&](int p) { return c[p] + s[p] * tt; })); };
-  const double mid = fold_at(load(kc->half));
-  if (mid <= tol) return false;
+  double mid = 0.0;  // d_exit(1/2), when taken
+  if constexpr (kN < 6) {
+    mid = fold_at(load(kc->half));
+    if (mid <= tol) return false;
+  }
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
     return kMinus ? 0.0 - k * d : 0.0 + k * d;
@@ -597,6 +617,19 @@ template <int kN, bool kMinus>
   const Lanes m0 = fold_pairs([&](int p) { return c[p]; }), m1 = fold_pairs([&](int p) { return e[p]; });
   const Lanes d01 = across_min2(m0, m1);  // {d_exit(0), d_exit(1)}
   const double d0 = d01[0], d1 = d01[1];
+  if constexpr (kN >= 6) {
+    // Hexagons to octagons: the midpoint's tol test after the ends. Each
+    // line's d_i(1/2) = c_i + (s_i / 2), the sum of c_i and a term between
+    // 0 and s_i, lies between c_i and c_i + s_i, and so does its rounded
+    // value (rounding is monotone): as computed, d_i(1/2) >= min(d_i(0),
+    // d_i(1)), and the midpoint's fold >= min(d0, d1). An edge whose ends
+    // are both beyond tol passes the test without the fold (the general
+    // case takes it for its traction at t = 1/2).
+    if (!((d1 < d0 ? d1 : d0) > tol)) {
+      mid = fold_at(load(kc->half));
+      if (mid <= tol) return false;
+    }
+  }
   const double f_start = zero_start ? 0.0 : traction(d0);
   const double f_end = zero_end ? 0.0 : traction(d1);
   if ((zero_start || d0 > 0.0) && (zero_end || d1 > 0.0)) {
@@ -675,6 +708,8 @@ template <int kN, bool kMinus>
     }
     paper_side_crossings_call<kN, kMinus>(cl, sl, n, k, rays, mid, f_start, f_end, sums);
   }
+  else if constexpr (kN >= 6)  // the midpoint's distance taken here (see above)
+    paper_side_crossings_call<kN, kMinus>(c, s, n, k, rays, fold_at(load(kc->half)), f_start, f_end, sums);
   else
     paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
   return true;
