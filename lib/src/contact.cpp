@@ -862,6 +862,31 @@ enum class On { kNeither = 0, kCp = 1, kTp = 2 };
   return true;
 }
 
+// detail::green_centroid (count >= 3) with each edge's point sums in lanes:
+// c = a x b as the difference of the lanes of a * {b.y, b.x}, then
+// {Sx, Sy} += {c, c} (a + b), and the centroid's divisions lane by lane:
+// the same operations in the same order, the same bits.
+inline AreaMoments green_centroid_lanes(const Vec2* v, int count) {
+  AreaMoments m;
+  const Lanes o = detail::lanes(v[0]);
+  Lanes a = detail::lanes(v[1]) - o, sxy = {0.0, 0.0};
+  double s = 0;
+  for (int i = 1; i + 1 < count; ++i) {
+    const Lanes b = detail::lanes(v[i + 1]) - o;
+    const Lanes p = a * detail::swapped(b);
+    const double c = p[0] - p[1];
+    s += c;
+    sxy += Lanes{c, c} * (a + b);
+    a = b;
+  }
+  s *= 0.5;
+  sxy = sxy / Lanes{6.0, 6.0};
+  m.area = s;
+  if (s == 0.0) return m;
+  m.centroid = detail::vec2(o + sxy / Lanes{s, s});
+  return m;
+}
+
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
 // ip.count >= 3, and kPaper: rule is Integration::kPaperBisector. One named
 // result, returned on every path, so that it is built in the caller's slot
@@ -873,8 +898,10 @@ template <int kNc, int kNt, bool kPaper>
   // area_centroid(ip): inline and unrolled for the common triangles and
   // quadrilaterals, a call for the rest (the same operations in the same
   // order: the same bits).
+  // Hexagons to octagons (IPs of more vertices): green_centroid_lanes inline.
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
+                         : (kNc >= 6 && kNt >= 6) ? green_centroid_lanes(ip.v.data(), ip.count)
                                          : area_centroid(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   const Lanes c_lanes = detail::lanes(c);
