@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -27,6 +29,17 @@ inline void sort_points(double* t, int count) {
     int j = i;
     for (; j > 0 && t[j - 1] > x; --j) t[j] = t[j - 1];
     t[j] = x;
+  }
+}
+
+// sort_points for t[0..count) > 0 after a sentinel t[-1] <= 0: the same
+// order, each shift stopped by the sentinel rather than an index test.
+inline void sort_after_sentinel(double* t, int count) {
+  for (int i = 1; i < count; ++i) {
+    const double x = t[i];
+    double* p = t + i;
+    for (; p[-1] > x; --p) p[0] = p[-1];
+    p[0] = x;
   }
 }
 
@@ -390,8 +403,11 @@ template <int kN, bool kMinus>
   };
   const double f_mid = traction(mid);
   // The crossings strictly inside (0, 1), in ray order (Crossings::add's
-  // test), at most 2 kN (a virtual node adds a ray).
-  double cross[2 * (kN ? kN : kMaxVertices)];
+  // test), at most 2 kN (a virtual node adds a ray), after a sentinel 0
+  // (below every crossing: the sort's shifts stop there without an index test).
+  double slots[2 * (kN ? kN : kMaxVertices) + 1];
+  slots[0] = 0.0;
+  double* const cross = slots + 1;
   int count = 0;
   const auto add = [&](double x) {
     if (x > 0.0 && x < 1.0) cross[count++] = x;
@@ -430,19 +446,48 @@ template <int kN, bool kMinus>
     sums = integrate_halves(f_start, f_mid, f_end);
     return;
   }
-  sort_points(cross, count);
+  sort_after_sentinel(cross, count);
   sums = integrate_sorted(cross, count, f_start, f_mid, f_end, [&](double t) { return traction(at(t)); });
 }
 
-// paper_side_crossings out of line, for triangles to pentagons: the shallow
-// contacts of a jointed rock mass take a shortcut on most edges, and the
-// general case inline costs every edge (measured; hexagons to octagons,
-// deep overlaps of round particles, keep it inline).
+// paper_side_crossings out of line, for the counts known at compile time:
+// the shallow contacts of a jointed rock mass (triangles to pentagons) take
+// a shortcut on most edges, and the general case inline costs every edge;
+// for hexagons to octagons (deep overlaps of round particles, a quarter of
+// the edges in the general case) it costs the other edges' registers
+// (measured).
 template <int kN, bool kMinus>
 [[gnu::noinline]] void paper_side_crossings_call(const Lanes* c, const Lanes* s, int n, double k, BisectorSpan rays,
                                                  double mid, double f_start, double f_end, EdgeSums& sums) {
   paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
 }
+
+// A polygon's lines two at a time as paper_side_edge pairs them (pair p:
+// lines 2p and 2p + 1, an odd count's last line repeated): the normals' and
+// vertices' components {n_i.x, n_j.x}, {n_i.y, n_j.y}, {v_i.x, v_j.x},
+// {v_i.y, v_j.y}. Hexagons to octagons: gathered once per contact, so that
+// each IP edge reads its lines' components as whole pairs (each pair is
+// otherwise assembled again on every edge from the polygon's points). The
+// same values: the same bits.
+template <int kN>
+struct PairedLines {
+  static constexpr int kCapacity = (kN + 1) / 2;
+  Lanes nx[kCapacity], ny[kCapacity], vx[kCapacity], vy[kCapacity];  // set by gather
+  void gather(const PolygonView& poly) {
+    for (int p = 0; p < kCapacity; ++p) {
+      const int i = 2 * p, j = i + 1 < kN ? i + 1 : kN - 1;
+      const Vec2 ni = poly.normal(i), nj = poly.normal(j), vi = poly.vertex(i), vj = poly.vertex(j);
+      nx[p] = Lanes{ni.x, nj.x};
+      ny[p] = Lanes{ni.y, nj.y};
+      vx[p] = Lanes{vi.x, vj.x};
+      vy[p] = Lanes{vi.y, vj.y};
+    }
+  }
+};
+// The paired lines a paper_side_edge<kN> reads: hexagons to octagons only
+// (an empty type for the other counts, which build theirs per edge).
+template <int kN>
+using PairedFor = std::conditional_t<(kN >= 6 && kN <= 8), PairedLines<kN>, std::nullptr_t>;
 
 // An IP edge of known source lies on one polygon's boundary, where that
 // polygon's potential is zero: only the other side's phi enters Eq. 11,
@@ -487,12 +532,15 @@ template <int kN, bool kMinus>
 // Both need the traction linear on each piece: the end distances > 0 (the
 // clamp d > 0 ? k d : 0 would bend it), or the end known on this side's
 // boundary (zero_start / zero_end: d = 0 there, f = 0). The midpoint's
-// tol test comes first, as on every edge. The sums differ from the paper's
+// tol test comes first, as on every edge (for hexagons to octagons, after
+// the ends, which may settle it). The sums differ from the paper's
 // segment by segment only by round-off; segments counts the trapezoids
 // integrated (1 or 2 here).
 template <int kN, bool kMinus>
 [[gnu::always_inline]] inline bool paper_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
-                                                   double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+                                                   double tol, bool zero_start, bool zero_end, EdgeSums& sums,
+                                                   const PairedFor<kN>* paired = nullptr) {
+  // paired: null where the caller gathered none (paper_side_edge_any).
   const int n = kN ? kN : poly.count;
   const int pairs = (n + 1) / 2;
   constexpr int kCapacity = kN ? (kN + 1) / 2 : kMaxVertices / 2;
@@ -515,6 +563,16 @@ template <int kN, bool kMinus>
       c[p] = detail::low_lanes(pi, pj) + detail::high_lanes(pi, pj);                        // dot(n, v - a)
       s[p] = negated(kc, detail::low_lanes(qi, qj) + detail::high_lanes(qi, qj));  // -dot(n, ab)
     }
+  } else if (kN >= 6 && kN <= 8 && paired) {
+    // The contact's paired lines (PairedLines, hexagons to octagons), the
+    // same operations as below.
+    const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
+    if constexpr (kN >= 6 && kN <= 8)
+      for (int p = 0; p < pairs; ++p) {
+        const Lanes nx = paired->nx[p], ny = paired->ny[p];
+        c[p] = nx * (paired->vx[p] - ax) + ny * (paired->vy[p] - ay);  // dot(n, v - a)
+        s[p] = negated(kc, nx * abx + ny * aby);                        // -dot(n, ab)
+      }
   } else {
     // The lines' components two at a time, {n_i.x, n_j.x} and so on.
     const Lanes ax = {a.x, a.x}, ay = {a.y, a.y}, abx = {ab.x, ab.x}, aby = {ab.y, ab.y};
@@ -543,8 +601,11 @@ template <int kN, bool kMinus>
   // d_exit at the midpoint: EdgeLines::at's fold (at_start: t = 0 without
   // the products, at_end: t = 1 without them).
   const auto fold_at = [&](Lanes tt) { return across_min(fold_pairs([&](int p) { return c[p] + s[p] * tt; })); };
-  const double mid = fold_at(load(kc->half));
-  if (mid <= tol) return false;
+  double mid = 0.0;  // d_exit(1/2), when taken
+  if constexpr (kN < 6) {
+    mid = fold_at(load(kc->half));
+    if (mid <= tol) return false;
+  }
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
     return kMinus ? 0.0 - k * d : 0.0 + k * d;
@@ -556,6 +617,19 @@ template <int kN, bool kMinus>
   const Lanes m0 = fold_pairs([&](int p) { return c[p]; }), m1 = fold_pairs([&](int p) { return e[p]; });
   const Lanes d01 = across_min2(m0, m1);  // {d_exit(0), d_exit(1)}
   const double d0 = d01[0], d1 = d01[1];
+  if constexpr (kN >= 6) {
+    // Hexagons to octagons: the midpoint's tol test after the ends. Each
+    // line's d_i(1/2) = c_i + (s_i / 2), the sum of c_i and a term between
+    // 0 and s_i, lies between c_i and c_i + s_i, and so does its rounded
+    // value (rounding is monotone): as computed, d_i(1/2) >= min(d_i(0),
+    // d_i(1)), and the midpoint's fold >= min(d0, d1). An edge whose ends
+    // are both beyond tol passes the test without the fold (the general
+    // case takes it for its traction at t = 1/2).
+    if (!((d1 < d0 ? d1 : d0) > tol)) {
+      mid = fold_at(load(kc->half));
+      if (mid <= tol) return false;
+    }
+  }
   const double f_start = zero_start ? 0.0 : traction(d0);
   const double f_end = zero_end ? 0.0 : traction(d1);
   if ((zero_start || d0 > 0.0) && (zero_end || d1 > 0.0)) {
@@ -634,6 +708,8 @@ template <int kN, bool kMinus>
     }
     paper_side_crossings_call<kN, kMinus>(cl, sl, n, k, rays, mid, f_start, f_end, sums);
   }
+  else if constexpr (kN >= 6)  // the midpoint's distance taken here (see above)
+    paper_side_crossings_call<kN, kMinus>(c, s, n, k, rays, fold_at(load(kc->half)), f_start, f_end, sums);
   else
     paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
   return true;
@@ -663,11 +739,12 @@ template <bool kMinus>
 // contact, so that no edge tests it).
 template <int kN, bool kMinus, bool kPaper>
 [[gnu::always_inline]] inline bool one_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
-                                                 double tol, bool zero_start, bool zero_end, EdgeSums& sums) {
+                                                 double tol, bool zero_start, bool zero_end, EdgeSums& sums,
+                                                 const PairedFor<kN>* paired) {
   if constexpr (!kPaper)
     return envelope_side_edge<kMinus>(poly, k, a, ab, tol, zero_start, zero_end, sums);
   else if constexpr (kN > 0)
-    return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
+    return paper_side_edge<kN, kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums, paired);
   else
     return paper_side_edge_any<kMinus>(poly, k, rays, a, ab, tol, zero_start, zero_end, sums);
 }
@@ -785,6 +862,31 @@ enum class On { kNeither = 0, kCp = 1, kTp = 2 };
   return true;
 }
 
+// detail::green_centroid (count >= 3) with each edge's point sums in lanes:
+// c = a x b as the difference of the lanes of a * {b.y, b.x}, then
+// {Sx, Sy} += {c, c} (a + b), and the centroid's divisions lane by lane:
+// the same operations in the same order, the same bits.
+inline AreaMoments green_centroid_lanes(const Vec2* v, int count) {
+  AreaMoments m;
+  const Lanes o = detail::lanes(v[0]);
+  Lanes a = detail::lanes(v[1]) - o, sxy = {0.0, 0.0};
+  double s = 0;
+  for (int i = 1; i + 1 < count; ++i) {
+    const Lanes b = detail::lanes(v[i + 1]) - o;
+    const Lanes p = a * detail::swapped(b);
+    const double c = p[0] - p[1];
+    s += c;
+    sxy += Lanes{c, c} * (a + b);
+    a = b;
+  }
+  s *= 0.5;
+  sxy = sxy / Lanes{6.0, 6.0};
+  m.area = s;
+  if (s == 0.0) return m;
+  m.centroid = detail::vec2(o + sxy / Lanes{s, s});
+  return m;
+}
+
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
 // ip.count >= 3, and kPaper: rule is Integration::kPaperBisector. One named
 // result, returned on every path, so that it is built in the caller's slot
@@ -796,8 +898,10 @@ template <int kNc, int kNt, bool kPaper>
   // area_centroid(ip): inline and unrolled for the common triangles and
   // quadrilaterals, a call for the rest (the same operations in the same
   // order: the same bits).
+  // Hexagons to octagons (IPs of more vertices): green_centroid_lanes inline.
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
+                         : (kNc >= 6 && kNt >= 6) ? green_centroid_lanes(ip.v.data(), ip.count)
                                          : area_centroid(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   const Lanes c_lanes = detail::lanes(c);
@@ -836,6 +940,11 @@ template <int kNc, int kNt, bool kPaper>
     const IpEdge s = sources[k];
     return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
   };
+  // Hexagons to octagons: each side's lines paired once for all its edges.
+  PairedFor<kNc> paired_cp;  // left uninitialised: gathered when used
+  PairedFor<kNt> paired_tp;
+  if constexpr (kPaper && kNc >= 6 && kNc <= 8) paired_cp.gather(cp.poly);
+  if constexpr (kPaper && kNt >= 6 && kNt <= 8) paired_tp.gather(tp.poly);
   // The previous, this and the next edge's, carried along the loop.
   On on_prev = On::kNeither, on_this = on(ip.count - 1), on_next = on(0);
   for (int e = 0; e < ip.count; ++e) {
@@ -857,10 +966,10 @@ template <int kNc, int kNt, bool kPaper>
     bool used = false;
     if (on_this == On::kCp)
       used = one_side_edge<kNt, true, kPaper>(tp.poly, tp.kn_over_h, rays_tp, a, ab, tol, on_prev == On::kTp,
-                                              on_next == On::kTp, sums);
+                                              on_next == On::kTp, sums, &paired_tp);
     else if (on_this == On::kTp)
       used = one_side_edge<kNc, false, kPaper>(cp.poly, cp.kn_over_h, rays_cp, a, ab, tol, on_prev == On::kCp,
-                                               on_next == On::kCp, sums);
+                                               on_next == On::kCp, sums, &paired_cp);
     else
       used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
     if (!used) {
