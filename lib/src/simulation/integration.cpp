@@ -65,7 +65,7 @@ template <class Prefetch, class Each>
       step_motion2_[i] = rotate_and_displace_vertices(polygon_span(i), c, dd);
       if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic(i) * dd.tail<3>(), dd[2]);
     } else {
-      step_motion2_[i] = displace_vertices(polygon_span(i), c, dd);  // the largest vertex motion, squared (guard)
+      step_motion2_[i] = detail::displace_polygon(polygon_span(i), c, dd);  // displace_vertices: the largest vertex motion, squared (guard)
       if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
     update_block_geometry(i);
