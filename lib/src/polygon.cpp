@@ -277,35 +277,44 @@ Aabb bounds(PolygonView poly) { return bounds_n<0>(poly); }
 namespace {
 
 // update_polygon_geometry for kN vertices (0: poly.count); kFacts: also
-// the support lines and, from their normals, the sharp corners.
+// the support lines and, from their normals, the sharp corners. The
+// moments and box are written to `moments` and `box` (a simulation's
+// arrays: no PolygonGeometry between); returns min_edge2.
 template <int kN, bool kFacts>
-PolygonGeometry polygon_geometry(const PolygonSpan& poly, SupportLines::Pair* support, std::uint32_t* sharp) {
+[[gnu::always_inline]] inline double polygon_geometry(const PolygonSpan& poly, SupportLines::Pair* support,
+                                                      std::uint32_t* sharp, AreaMoments& moments, Aabb& box) {
   const int count = kN ? kN : poly.count;
-  PolygonGeometry g;
   const Lanes min2 = edge_normals<kN>(poly, kFacts ? support : nullptr);
-  g.min_edge2 = std::min(min2[0], min2[1]);
   if (kFacts) *sharp = detail::sharp_corners_lines<kN>(support, count);
-  g.moments = green_moments<kN>(poly.v, count);
-  g.box = bounds_n<kN>(poly);
-  return g;
+  moments = green_moments<kN>(poly.v, count);
+  box = bounds_n<kN>(poly);
+  return std::min(min2[0], min2[1]);
 }
 
 }  // namespace
 
 PolygonGeometry update_polygon_geometry(PolygonSpan poly) {
-  if (poly.count == 4) return polygon_geometry<4, false>(poly, nullptr, nullptr);
-  return polygon_geometry<0, false>(poly, nullptr, nullptr);
+  PolygonGeometry g;
+  if (poly.count == 4) g.min_edge2 = polygon_geometry<4, false>(poly, nullptr, nullptr, g.moments, g.box);
+  else g.min_edge2 = polygon_geometry<0, false>(poly, nullptr, nullptr, g.moments, g.box);
+  return g;
 }
 
 // Flattened: the kernels above inline (no call per block and step).
-[[gnu::flatten]] PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support,
-                                                         std::uint32_t& sharp) {
-  if (poly.count == 4) return polygon_geometry<4, true>(poly, support, &sharp);
+[[gnu::flatten]] double update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support, std::uint32_t& sharp,
+                                                AreaMoments& moments, Aabb& box) {
+  if (poly.count == 4) return polygon_geometry<4, true>(poly, support, &sharp, moments, box);
   if (poly.count < 3 || poly.count > kMaxBlockVertices) {  // no support lines: sharp_corners
     sharp = sharp_corners(poly);
-    return polygon_geometry<0, false>(poly, nullptr, nullptr);
+    return polygon_geometry<0, false>(poly, nullptr, nullptr, moments, box);
   }
-  return polygon_geometry<0, true>(poly, support, &sharp);
+  return polygon_geometry<0, true>(poly, support, &sharp, moments, box);
+}
+
+PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support, std::uint32_t& sharp) {
+  PolygonGeometry g;
+  g.min_edge2 = update_polygon_geometry(poly, support, sharp, g.moments, g.box);
+  return g;
 }
 
 double diameter(PolygonView poly) {

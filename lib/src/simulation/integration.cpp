@@ -108,10 +108,9 @@ void Engine::update_block_geometry(int i) {
   // The polygon's normals, moments and box, and with the normals at hand
   // block_facts' sharp corners and support lines (the same bits).
   const std::size_t b = static_cast<std::size_t>(i);
-  const PolygonGeometry g = update_polygon_geometry(polygon_span(i), support_[b], sharp_corners_[b]);
-  moments_[i] = g.moments;
-  boxes_[i] = g.box;
-  sides_[i].tol = geometric_tolerance(g.box);
+  const double min_edge2 =
+      update_polygon_geometry(polygon_span(i), support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
+  sides_[i].tol = geometric_tolerance(boxes_[b]);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     PotentialSide& side = sides_[i].side;
     // Without a small edge the bisectors are the vertex rays, the shared
@@ -122,7 +121,7 @@ void Engine::update_block_geometry(int i) {
     // made the first time (room for a vertex ray and a virtual node per
     // edge), rebuilt every step.
     const double small = side.small_edge;  // small_edge_fraction H (choose_potential_length)
-    const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
+    const bool plain = !(min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     if (plain) {
       if (side.bisector_count != side.poly.count) {
         side.bisectors = detail::vertex_rays(side.poly.count);
