@@ -227,6 +227,30 @@ Vec6 Engine::gather_contact_forces(int i) {
   team_barrier(Simulation::kPhaseKick);
 }
 
+// Defined here (guards.cpp reports what it finds): gather_and_kick's
+// flattened block loop inlines it after the kick.
+Engine::GuardFault Engine::guard_fault(int i) const {
+  // Block i (free) after its kick: a non-finite state, a collapsed area, or
+  // a vertex that moved more in this step than max_step_motion of the
+  // thinnest block within its reach (itself and its candidates: a block in
+  // free flight is not stopped because a thin plate exists somewhere else).
+  // Finite, all nine values at once: x * 0 is +-0 for a finite x and NaN
+  // for an infinite or NaN one, and a sum of +-0 is +-0 (== 0) unless a NaN
+  // enters it. No branch per value (the guard runs per block and step).
+  using detail::Lanes;
+  const Vec6& v = vel_[i];
+  const AreaMoments& m = moments_[i];
+  const Lanes zero{0.0, 0.0};
+  const Lanes sum = Lanes{v[0], v[1]} * zero + Lanes{v[2], v[3]} * zero + Lanes{v[4], v[5]} * zero +
+                    Lanes{m.centroid.x, m.centroid.y} * zero + Lanes{m.area, 0.0} * zero;
+  const bool finite = sum[0] + sum[1] == 0.0;
+  if (!finite) return GuardFault::kNonFinite;
+  if (!(moments_[i].area > 0.0)) return GuardFault::kAreaCollapsed;
+  const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
+  if (step_motion2_[i] > motion_limit * motion_limit) return GuardFault::kStepMotion;
+  return GuardFault::kNone;
+}
+
 Vec6 Engine::force_acceleration(int i, const Vec6& f) const {
   // M^-1 f (Eq. 5a).
   const AreaMoments& m = moments_[i];
