@@ -58,17 +58,18 @@ template <class Prefetch, class Each>
     disp_[i] += dd;
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
+    const PolygonSpan poly = polygon_span(i);
     if (exact_rotation_) {
       // RotationUpdate::kExact (see there and rotate_and_displace_vertices):
       // the rigid part turned by r0 exactly, and the stress (this step's
       // increment on the start configuration) turned with the material.
-      step_motion2_[i] = rotate_and_displace_vertices(polygon_span(i), c, dd);
+      step_motion2_[i] = rotate_and_displace_vertices(poly, c, dd);
       if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic(i) * dd.tail<3>(), dd[2]);
     } else {
-      step_motion2_[i] = detail::displace_polygon(polygon_span(i), c, dd);  // displace_vertices: the largest vertex motion, squared (guard)
+      step_motion2_[i] = detail::displace_polygon(poly, c, dd);  // displace_vertices: the largest vertex motion, squared (guard)
       if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
-    update_block_geometry(i);
+    update_block_geometry(i, poly);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   });
   mine.left_skin = left_skin;
@@ -104,12 +105,14 @@ void Engine::update_geometry() {
   for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
 }
 
-void Engine::update_block_geometry(int i) {
+void Engine::update_block_geometry(int i) { update_block_geometry(i, polygon_span(i)); }
+
+void Engine::update_block_geometry(int i, PolygonSpan poly) {
   // The polygon's normals, moments and box, and with the normals at hand
   // block_facts' sharp corners and support lines (the same bits).
   const std::size_t b = static_cast<std::size_t>(i);
   const double min_edge2 =
-      update_polygon_geometry(polygon_span(i), support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
+      update_polygon_geometry(poly, support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
   sides_[i].tol = geometric_tolerance(boxes_[b]);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     PotentialSide& side = sides_[i].side;
