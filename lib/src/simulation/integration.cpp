@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "block_lanes.hpp"
+#include "geometry_kernels.hpp"
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -111,8 +112,12 @@ void Engine::update_block_geometry(int i, PolygonSpan poly) {
   // The polygon's normals, moments and box, and with the normals at hand
   // block_facts' sharp corners and support lines (the same bits).
   const std::size_t b = static_cast<std::size_t>(i);
+  // A quadrilateral's inline (no call per block and step), the same
+  // kernel as update_polygon_geometry's.
   const double min_edge2 =
-      update_polygon_geometry(poly, support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
+      poly.count == 4
+          ? detail::polygon_geometry<4, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b])
+          : update_polygon_geometry(poly, support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
   sides_[i].tol = geometric_tolerance(boxes_[b]);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     PotentialSide& side = sides_[i].side;
