@@ -112,12 +112,21 @@ void Engine::update_block_geometry(int i, PolygonSpan poly) {
   // The polygon's normals, moments and box, and with the normals at hand
   // block_facts' sharp corners and support lines (the same bits).
   const std::size_t b = static_cast<std::size_t>(i);
-  // A quadrilateral's inline (no call per block and step), the same
-  // kernel as update_polygon_geometry's.
-  const double min_edge2 =
-      poly.count == 4
-          ? detail::polygon_geometry<4, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b])
-          : update_polygon_geometry(poly, support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
+  // Triangles to pentagons inline, their loops unrolled (no call per block
+  // and step), the same kernel as update_polygon_geometry's.
+  double min_edge2;
+  switch (poly.count) {
+    case 4:
+      min_edge2 = detail::polygon_geometry<4, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b]);
+      break;
+    case 5:
+      min_edge2 = detail::polygon_geometry<5, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b]);
+      break;
+    case 3:
+      min_edge2 = detail::polygon_geometry<3, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b]);
+      break;
+    default: min_edge2 = update_polygon_geometry(poly, support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
+  }
   sides_[i].tol = geometric_tolerance(boxes_[b]);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     PotentialSide& side = sides_[i].side;
