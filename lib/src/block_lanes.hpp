@@ -39,10 +39,14 @@ template <int kN>
 }
 
 // displace_vertices inline (the per-block move, no call per block and
-// step): a quadrilateral's loop unrolled.
+// step): the loops of triangles to pentagons unrolled.
 [[gnu::always_inline]] inline double displace_polygon(const PolygonSpan& poly, Vec2 centroid, const Vec6& d) {
-  if (poly.count == 4) return displace_n<4>(poly, centroid, d);
-  return displace_n<0>(poly, centroid, d);
+  switch (poly.count) {
+    case 4: return displace_n<4>(poly, centroid, d);
+    case 5: return displace_n<5>(poly, centroid, d);
+    case 3: return displace_n<3>(poly, centroid, d);
+    default: return displace_n<0>(poly, centroid, d);
+  }
 }
 
 // A Vec6 as three lane pairs (g0, g1), (g2, g3), (g4, g5).
