@@ -290,8 +290,9 @@ void Engine::kick_block(int i, const Vec6& force) {
     damped_kick_block(i, force);  // Eq. 5c (damping.cpp)
     return;
   }
-  acc_[i] = force_acceleration(i, force);
-  vel_[i] += 0.5 * dt_ * acc_[i];
+  const Vec6 a = force_acceleration(i, force);  // a local: the stores below cannot alias it
+  acc_[i] = a;
+  vel_[i] += 0.5 * dt_ * a;
 }
 
 void Engine::kick() {
