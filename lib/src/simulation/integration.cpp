@@ -53,8 +53,9 @@ template <class Prefetch, class Each>
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   const double per_block = over_block_share(mine, [&](int i) { prefetch_block(i); }, [&](int i) __attribute__((always_inline)) {
     if (fixed_[i]) return;
-    vel_[i] += 0.5 * dt_ * acc_[i];
-    const Vec6 dd = dt_ * vel_[i];  // Eq. 8
+    const Vec6 v = vel_[i] + 0.5 * dt_ * acc_[i];  // a local: the stores below cannot alias it
+    vel_[i] = v;
+    const Vec6 dd = dt_ * v;  // Eq. 8
     step_disp_[i] = dd;
     disp_[i] += dd;
     const Vec2 c = moments_[i].centroid;
