@@ -54,7 +54,6 @@ template <int kN>
   return min2;
 }
 
-
 // Green's theorem on edges, in coordinates relative to v[0] so that large
 // offsets do not cancel catastrophically. For edge (a, b), c = a x b:
 //   S   += c / 2,  Sx += c (ax + bx) / 6,  Sy += c (ay + by) / 6,
@@ -121,7 +120,6 @@ AreaMoments green_moments(const Vec2* v, int n) {
   return m;
 }
 
-
 // bounds for kN vertices (0: poly.count), lane by lane from the empty box in
 // vertex order: lane_min / lane_max are std::min / std::max, operands in
 // that order.
@@ -137,7 +135,6 @@ Aabb bounds_n(const PolygonView& poly) {
   }
   return {detail::vec2(lo), detail::vec2(hi)};
 }
-
 
 // update_polygon_geometry for kN vertices (0: poly.count); kFacts: also
 // the support lines and, from their normals, the sharp corners. The

@@ -44,10 +44,7 @@ namespace {
 using detail::bounds_n;
 using detail::edge_normals;
 using detail::green_moments;
-using detail::LaneMask;
-using detail::Lanes;
 using detail::polygon_geometry;
-
 
 }  // namespace
 
@@ -201,7 +198,6 @@ double perimeter(PolygonView poly) {
 }
 
 double geometric_tolerance(PolygonView poly) { return geometric_tolerance(bounds(poly)); }
-
 
 PointLocation locate_point(PolygonView poly, Vec2 p, double tol) {
   if (tol < 0.0) tol = geometric_tolerance(poly);
