@@ -7,32 +7,8 @@
 
 namespace dda {
 
-namespace {
-
-using detail::Lanes;
-
-// displace_vertices for kN vertices (0: poly.count).
-template <int kN>
-double displace_n(const PolygonSpan& poly, Vec2 centroid, const Vec6& d) {
-  const int count = kN ? kN : poly.count;
-  const Lanes c = detail::lanes(centroid);
-  const Vec6 dd = d;  // a local copy: the vertex stores cannot alias it, its lanes stay in registers
-  double motion2 = 0.0;
-  for (int k = 0; k < count; ++k) {
-    const Lanes p = detail::lanes(poly.v[static_cast<std::size_t>(k)]);
-    const Lanes u = detail::point_displacement_lanes(c, p, dd);
-    poly.v[static_cast<std::size_t>(k)] = detail::vec2(p + u);
-    const Lanes u2 = u * u;
-    motion2 = std::max(motion2, u2[0] + u2[1]);
-  }
-  return motion2;
-}
-
-}  // namespace
-
 double displace_vertices(PolygonSpan poly, Vec2 centroid, const Vec6& d) {
-  if (poly.count == 4) return displace_n<4>(poly, centroid, d);
-  return displace_n<0>(poly, centroid, d);
+  return detail::displace_polygon(poly, centroid, d);
 }
 
 double rotate_and_displace_vertices(PolygonSpan poly, Vec2 centroid, const Vec6& d) {

@@ -4,6 +4,8 @@
 // element is computed with the scalar formula's operations in its order:
 // the same bits. Not part of the public API.
 #pragma once
+#include <algorithm>
+
 #include "dda/block.hpp"
 #include "lanes.hpp"
 
@@ -16,6 +18,35 @@ namespace dda::detail {
 inline Lanes point_displacement_lanes(Lanes centroid, Lanes p, const Vec6& d) {
   const Lanes t = p - centroid, s = swapped(t);
   return Lanes{d[0], d[1]} + s * Lanes{-d[2], d[2]} + t * Lanes{d[3], d[4]} + Lanes{0.5, 0.5} * s * Lanes{d[5], d[5]};
+}
+
+// displace_vertices for kN vertices (0: poly.count): each vertex moved by
+// point_displacement_lanes, and the largest motion squared.
+template <int kN>
+[[gnu::always_inline]] inline double displace_n(const PolygonSpan& poly, Vec2 centroid, const Vec6& d) {
+  const int count = kN ? kN : poly.count;
+  const Lanes c = lanes(centroid);
+  const Vec6 dd = d;  // a local copy: the vertex stores cannot alias it, its lanes stay in registers
+  double motion2 = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const Lanes p = lanes(poly.v[static_cast<std::size_t>(k)]);
+    const Lanes u = point_displacement_lanes(c, p, dd);
+    poly.v[static_cast<std::size_t>(k)] = vec2(p + u);
+    const Lanes u2 = u * u;
+    motion2 = std::max(motion2, u2[0] + u2[1]);
+  }
+  return motion2;
+}
+
+// displace_vertices inline (the per-block move, no call per block and
+// step): the loops of triangles to pentagons unrolled.
+[[gnu::always_inline]] inline double displace_polygon(const PolygonSpan& poly, Vec2 centroid, const Vec6& d) {
+  switch (poly.count) {
+    case 4: return displace_n<4>(poly, centroid, d);
+    case 5: return displace_n<5>(poly, centroid, d);
+    case 3: return displace_n<3>(poly, centroid, d);
+    default: return displace_n<0>(poly, centroid, d);
+  }
 }
 
 // A Vec6 as three lane pairs (g0, g1), (g2, g3), (g4, g5).

@@ -1083,9 +1083,12 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
   // say how many are set.
   static thread_local std::array<Vec2, kMaxVertices> ring[2];
   std::array<double, kMaxVertices> d;
+  // The edges' offsets n_j . v_j, once per call (every cell reads them).
+  std::array<double, kMaxVertices> support;
+  for (int j = 0; j < p.count; ++j) support[static_cast<std::size_t>(j)] = dot(p.normal(j), p.vertex(j));
   for (int i = 0; i < p.count; ++i) {
     const Vec2 ni = p.normal(i);
-    const double ci = dot(ni, p.vertex(i));
+    const double ci = support[static_cast<std::size_t>(i)];
     const Vec2* cell = region.v.data();
     int count = region.count, next = 0;
     for (int j = 0; j < p.count && count >= 3; ++j) {
@@ -1093,7 +1096,7 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
       const Vec2 nj = p.normal(j);
       // Keep normal.x <= offset; a vertex within snap of the line is on it.
       const Vec2 normal = nj - ni;
-      const double offset = dot(nj, p.vertex(j)) - ci;
+      const double offset = support[static_cast<std::size_t>(j)] - ci;
       // A region wholly on the kept side (every d <= 0) is what clip_ring
       // would copy, one wholly beyond (every d > 0) what it would empty:
       // neither is cut (mostly the case, an IP being small beside its block).

@@ -147,6 +147,10 @@ inline void support_lines(const PolygonView& poly, SupportLines& out) { support_
 // normals at hand. A polygon support_lines writes nothing for leaves
 // support as it is.
 PolygonGeometry update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support, std::uint32_t& sharp);
+// The same with the moments and box written to `moments` and `box` (a
+// simulation's per-block arrays); returns min_edge2.
+double update_polygon_geometry(PolygonSpan poly, SupportLines::Pair* support, std::uint32_t& sharp,
+                               AreaMoments& moments, Aabb& box);
 
 // The overlap verdict and, when overlapping, the intersection polygon with
 // its edge sources, in one pass (the hot path of a contact pair). The

@@ -1,7 +1,8 @@
 // The guards: a run that leaves the method's domain stops with a
 // SimulationError naming the step, time, block, pair, the value, the bound
 // and dt/dt_crit. Per block (flagged in the kick loop): a non-finite state,
-// a collapsed area, a vertex moving too far in one step; per pair (flagged
+// a collapsed area, a vertex moving too far in one step (guard_fault,
+// integration.cpp: inline in the kick loop); per pair (flagged
 // in the pair loop): the penetration guard (penetration_guard.cpp); every
 // energy_check_every steps: the total energy's growth and the energy budget.
 #include <algorithm>
@@ -10,7 +11,6 @@
 #include <exception>
 #include <sstream>
 
-#include "lanes.hpp"
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -98,28 +98,6 @@ std::string Engine::block_label(int i) const {
       s << " '" << block_names_[static_cast<std::size_t>(i)] << "'";
   }
   return s.str();
-}
-
-Engine::GuardFault Engine::guard_fault(int i) const {
-  // Block i (free) after its kick: a non-finite state, a collapsed area, or
-  // a vertex that moved more in this step than max_step_motion of the
-  // thinnest block within its reach (itself and its candidates: a block in
-  // free flight is not stopped because a thin plate exists somewhere else).
-  // Finite, all nine values at once: x * 0 is +-0 for a finite x and NaN
-  // for an infinite or NaN one, and a sum of +-0 is +-0 (== 0) unless a NaN
-  // enters it. No branch per value (the guard runs per block and step).
-  using detail::Lanes;
-  const Vec6& v = vel_[i];
-  const AreaMoments& m = moments_[i];
-  const Lanes zero{0.0, 0.0};
-  const Lanes sum = Lanes{v[0], v[1]} * zero + Lanes{v[2], v[3]} * zero + Lanes{v[4], v[5]} * zero +
-                    Lanes{m.centroid.x, m.centroid.y} * zero + Lanes{m.area, 0.0} * zero;
-  const bool finite = sum[0] + sum[1] == 0.0;
-  if (!finite) return GuardFault::kNonFinite;
-  if (!(moments_[i].area > 0.0)) return GuardFault::kAreaCollapsed;
-  const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
-  if (step_motion2_[i] > motion_limit * motion_limit) return GuardFault::kStepMotion;
-  return GuardFault::kNone;
 }
 
 void Engine::check_state(bool energy_due) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "block_lanes.hpp"
+#include "geometry_kernels.hpp"
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -52,23 +53,25 @@ template <class Prefetch, class Each>
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   const double per_block = over_block_share(mine, [&](int i) { prefetch_block(i); }, [&](int i) __attribute__((always_inline)) {
     if (fixed_[i]) return;
-    vel_[i] += 0.5 * dt_ * acc_[i];
-    const Vec6 dd = dt_ * vel_[i];  // Eq. 8
+    const Vec6 v = vel_[i] + 0.5 * dt_ * acc_[i];  // a local: the stores below cannot alias it
+    vel_[i] = v;
+    const Vec6 dd = dt_ * v;  // Eq. 8
     step_disp_[i] = dd;
     disp_[i] += dd;
     const Vec2 c = moments_[i].centroid;
     start_centroid_[i] = c;
+    const PolygonSpan poly = polygon_span(i);
     if (exact_rotation_) {
       // RotationUpdate::kExact (see there and rotate_and_displace_vertices):
       // the rigid part turned by r0 exactly, and the stress (this step's
       // increment on the start configuration) turned with the material.
-      step_motion2_[i] = rotate_and_displace_vertices(polygon_span(i), c, dd);
+      step_motion2_[i] = rotate_and_displace_vertices(poly, c, dd);
       if (strains_) stress_[i] = rotated_stress(stress_[i] + elastic(i) * dd.tail<3>(), dd[2]);
     } else {
-      step_motion2_[i] = displace_vertices(polygon_span(i), c, dd);  // the largest vertex motion, squared (guard)
+      step_motion2_[i] = detail::displace_polygon(poly, c, dd);  // displace_vertices: the largest vertex motion, squared (guard)
       if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
-    update_block_geometry(i);
+    update_block_geometry(i, poly);
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   });
   mine.left_skin = left_skin;
@@ -104,14 +107,28 @@ void Engine::update_geometry() {
   for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
 }
 
-void Engine::update_block_geometry(int i) {
+void Engine::update_block_geometry(int i) { update_block_geometry(i, polygon_span(i)); }
+
+void Engine::update_block_geometry(int i, PolygonSpan poly) {
   // The polygon's normals, moments and box, and with the normals at hand
   // block_facts' sharp corners and support lines (the same bits).
   const std::size_t b = static_cast<std::size_t>(i);
-  const PolygonGeometry g = update_polygon_geometry(polygon_span(i), support_[b], sharp_corners_[b]);
-  moments_[i] = g.moments;
-  boxes_[i] = g.box;
-  sides_[i].tol = geometric_tolerance(g.box);
+  // Triangles to pentagons inline, their loops unrolled (no call per block
+  // and step), the same kernel as update_polygon_geometry's.
+  double min_edge2;
+  switch (poly.count) {
+    case 4:
+      min_edge2 = detail::polygon_geometry<4, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b]);
+      break;
+    case 5:
+      min_edge2 = detail::polygon_geometry<5, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b]);
+      break;
+    case 3:
+      min_edge2 = detail::polygon_geometry<3, true>(poly, support_[b], &sharp_corners_[b], moments_[b], boxes_[b]);
+      break;
+    default: min_edge2 = update_polygon_geometry(poly, support_[b], sharp_corners_[b], moments_[b], boxes_[b]);
+  }
+  sides_[i].tol = geometric_tolerance(boxes_[b]);
   if (scene_.contact.integration == Integration::kPaperBisector) {
     PotentialSide& side = sides_[i].side;
     // Without a small edge the bisectors are the vertex rays, the shared
@@ -122,7 +139,7 @@ void Engine::update_block_geometry(int i) {
     // made the first time (room for a vertex ray and a virtual node per
     // edge), rebuilt every step.
     const double small = side.small_edge;  // small_edge_fraction H (choose_potential_length)
-    const bool plain = !(g.min_edge2 < small * small);  // bisectors()' small-edge test on every edge
+    const bool plain = !(min_edge2 < small * small);  // bisectors()' small-edge test on every edge
     if (plain) {
       if (side.bisector_count != side.poly.count) {
         side.bisectors = detail::vertex_rays(side.poly.count);
@@ -228,6 +245,30 @@ Vec6 Engine::gather_contact_forces(int i) {
   team_barrier(Simulation::kPhaseKick);
 }
 
+// Defined here (guards.cpp reports what it finds): gather_and_kick's
+// flattened block loop inlines it after the kick.
+Engine::GuardFault Engine::guard_fault(int i) const {
+  // Block i (free) after its kick: a non-finite state, a collapsed area, or
+  // a vertex that moved more in this step than max_step_motion of the
+  // thinnest block within its reach (itself and its candidates: a block in
+  // free flight is not stopped because a thin plate exists somewhere else).
+  // Finite, all nine values at once: x * 0 is +-0 for a finite x and NaN
+  // for an infinite or NaN one, and a sum of +-0 is +-0 (== 0) unless a NaN
+  // enters it. No branch per value (the guard runs per block and step).
+  using detail::Lanes;
+  const Vec6& v = vel_[i];
+  const AreaMoments& m = moments_[i];
+  const Lanes zero{0.0, 0.0};
+  const Lanes sum = Lanes{v[0], v[1]} * zero + Lanes{v[2], v[3]} * zero + Lanes{v[4], v[5]} * zero +
+                    Lanes{m.centroid.x, m.centroid.y} * zero + Lanes{m.area, 0.0} * zero;
+  const bool finite = sum[0] + sum[1] == 0.0;
+  if (!finite) return GuardFault::kNonFinite;
+  if (!(moments_[i].area > 0.0)) return GuardFault::kAreaCollapsed;
+  const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
+  if (step_motion2_[i] > motion_limit * motion_limit) return GuardFault::kStepMotion;
+  return GuardFault::kNone;
+}
+
 Vec6 Engine::force_acceleration(int i, const Vec6& f) const {
   // M^-1 f (Eq. 5a).
   const AreaMoments& m = moments_[i];
@@ -250,8 +291,9 @@ void Engine::kick_block(int i, const Vec6& force) {
     damped_kick_block(i, force);  // Eq. 5c (damping.cpp)
     return;
   }
-  acc_[i] = force_acceleration(i, force);
-  vel_[i] += 0.5 * dt_ * acc_[i];
+  const Vec6 a = force_acceleration(i, force);  // a local: the stores below cannot alias it
+  acc_[i] = a;
+  vel_[i] += 0.5 * dt_ * a;
 }
 
 void Engine::kick() {

@@ -121,6 +121,7 @@ class Engine {
   void move_blocks();
   void update_geometry();
   void update_block_geometry(int i);
+  void update_block_geometry(int i, PolygonSpan poly);  // poly: polygon_span(i)
   void block_facts(int i);
   Vec6 body_force(int i) const;
   void gather_and_kick();
