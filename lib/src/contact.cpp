@@ -887,9 +887,12 @@ inline AreaMoments green_centroid_lanes(const Vec2* v, int count) {
   return m;
 }
 
-// area_centroid of an IP of 5 or more vertices: unrolled for pentagons.
+// area_centroid of an IP of 5 or more vertices: unrolled for pentagons and
+// hexagons.
 [[gnu::noinline]] AreaMoments ip_centroid_5_up(const Vec2* v, int count) {
-  return count == 5 ? detail::green_centroid<5>(v, 5) : detail::green_centroid(v, count);
+  return count == 5   ? detail::green_centroid<5>(v, 5)
+         : count == 6 ? detail::green_centroid<6>(v, 6)
+                      : detail::green_centroid(v, count);
 }
 
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
@@ -901,9 +904,9 @@ template <int kNc, int kNt, bool kPaper>
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
   // area_centroid(ip): inline and unrolled for the common triangles and
-  // quadrilaterals, a call for the rest, unrolled for pentagons (half of
-  // two quadrilaterals' IPs) (the same operations in the same order: the
-  // same bits).
+  // quadrilaterals, a call for the rest (half of two quadrilaterals' IPs:
+  // unrolled there for pentagons and hexagons); the same operations in the
+  // same order: the same bits.
   // Hexagons to octagons (IPs of more vertices): green_centroid_lanes inline.
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
