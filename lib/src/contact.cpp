@@ -887,11 +887,11 @@ inline AreaMoments green_centroid_lanes(const Vec2* v, int count) {
   return m;
 }
 
-// area_centroid of an IP of 5 or more vertices: unrolled for pentagons and
-// hexagons.
+// area_centroid of an IP of 5 or more vertices: unrolled for 5 to 7.
 [[gnu::noinline]] AreaMoments ip_centroid_5_up(const Vec2* v, int count) {
   return count == 5   ? detail::green_centroid<5>(v, 5)
          : count == 6 ? detail::green_centroid<6>(v, 6)
+         : count == 7 ? detail::green_centroid<7>(v, 7)
                       : detail::green_centroid(v, count);
 }
 
@@ -905,7 +905,7 @@ template <int kNc, int kNt, bool kPaper>
                                                            const IpEdge* source, LoadingPoint where) {
   // area_centroid(ip): inline and unrolled for the common triangles and
   // quadrilaterals, a call for the rest (half of two quadrilaterals' IPs:
-  // unrolled there for pentagons and hexagons); the same operations in the
+  // unrolled there for 5 to 7 vertices); the same operations in the
   // same order: the same bits.
   // Hexagons to octagons (IPs of more vertices): green_centroid_lanes inline.
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
