@@ -947,7 +947,7 @@ template <int kNc, int kNt, bool kPaper>
   const IpEdge* const sources = source ? source : kUnknown;
   auto on = [sources](int k) {
     const IpEdge s = sources[k];
-    return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
+    return static_cast<On>((2 - static_cast<int>(s.on_contact)) & -static_cast<int>(s.known()));
   };
   // Hexagons to octagons: each side's lines paired once for all its edges.
   PairedFor<kNc> paired_cp;  // left uninitialised: gathered when used
