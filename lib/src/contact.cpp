@@ -887,6 +887,14 @@ inline AreaMoments green_centroid_lanes(const Vec2* v, int count) {
   return m;
 }
 
+// area_centroid of an IP of 5 or more vertices: unrolled for 5 to 7.
+[[gnu::noinline]] AreaMoments ip_centroid_5_up(const Vec2* v, int count) {
+  return count == 5   ? detail::green_centroid<5>(v, 5)
+         : count == 6 ? detail::green_centroid<6>(v, 6)
+         : count == 7 ? detail::green_centroid<7>(v, 7)
+                      : detail::green_centroid(v, count);
+}
+
 // normal_contact_force for CP and TP with kNc and kNt vertices (0: any),
 // ip.count >= 3, and kPaper: rule is Integration::kPaperBisector. One named
 // result, returned on every path, so that it is built in the caller's slot
@@ -896,13 +904,14 @@ template <int kNc, int kNt, bool kPaper>
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
   // area_centroid(ip): inline and unrolled for the common triangles and
-  // quadrilaterals, a call for the rest (the same operations in the same
-  // order: the same bits).
+  // quadrilaterals, a call for the rest (half of two quadrilaterals' IPs:
+  // unrolled there for 5 to 7 vertices); the same operations in the
+  // same order: the same bits.
   // Hexagons to octagons (IPs of more vertices): green_centroid_lanes inline.
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
                          : (kNc >= 6 && kNt >= 6) ? green_centroid_lanes(ip.v.data(), ip.count)
-                                         : area_centroid(ip.v.data(), ip.count);
+                                         : ip_centroid_5_up(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   const Lanes c_lanes = detail::lanes(c);
   // The sums in locals, the result built once at the end: a NormalForce
@@ -938,7 +947,7 @@ template <int kNc, int kNt, bool kPaper>
   const IpEdge* const sources = source ? source : kUnknown;
   auto on = [sources](int k) {
     const IpEdge s = sources[k];
-    return static_cast<On>(static_cast<int>(s.known()) * (2 - static_cast<int>(s.on_contact)));
+    return static_cast<On>((2 - static_cast<int>(s.on_contact)) & -static_cast<int>(s.known()));
   };
   // Hexagons to octagons: each side's lines paired once for all its edges.
   PairedFor<kNc> paired_cp;  // left uninitialised: gathered when used
