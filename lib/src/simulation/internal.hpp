@@ -125,7 +125,20 @@ class Engine {
   void block_facts(int i);
   Vec6 body_force(int i) const;
   void gather_and_kick();
+  // The arrays gather_contact_forces reads (and the reach it writes), taken
+  // once per block loop: the kicks' stores could alias the vectors' members,
+  // which would be reloaded per block.
+  struct GatherArrays {
+    const int* offset;
+    const int* pairs;
+    const NearPair* near;
+    const PairLoad* loads;
+    const double* radius;
+    double* reach;
+  };
+  GatherArrays gather_arrays();
   Vec6 gather_contact_forces(int i);
+  Vec6 gather_contact_forces(int i, const GatherArrays& a);
   void kick_block(int i, const Vec6& force);
   void kick();
   // Eq. 5c damping (Scene::damping): the kick with C = a M + b K, switching
