@@ -181,7 +181,7 @@ Vec6 Engine::body_force(int i) const {
 
 Engine::GatherArrays Engine::gather_arrays() {
   return {near_pair_offset_.data(), block_pairs_.data(), near_pairs_.data(),
-          pair_loads_.data(),       radius_.data(),      reach_radius_.data()};
+          pair_loads_.data(),       radius_.data(),      pair_radius_.data(), reach_radius_.data()};
 }
 
 Vec6 Engine::gather_contact_forces(int i) { return gather_contact_forces(i, gather_arrays()); }
@@ -206,9 +206,9 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
     const int k = pairs[q];
     const NearPair& p = near[k];
     if (!p.candidate) continue;
-    // The other block's radius: reach already holds block i's (fewer
-    // instructions than choosing the other block).
-    reach = std::min(reach, std::min(radius[p.i], radius[p.j]));
+    // The pair's smaller radius (pair_radius_): reach already holds block
+    // i's, so the other block's is the same minimum.
+    reach = std::min(reach, a.pair_radius[k]);
     if (!p.active || !free_block) continue;
     const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);

@@ -134,6 +134,7 @@ class Engine {
     const NearPair* near;
     const PairLoad* loads;
     const double* radius;
+    const double* pair_radius;
     double* reach;
   };
   GatherArrays gather_arrays();
@@ -156,6 +157,7 @@ class Engine {
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
   void update_near_pairs();
   void rebuild_near_pairs();
+  void set_pair_radii();
   bool near_pairs_unchanged() const;  // BroadPhase::kNone: would a rebuild list the same pairs?
   // contact_forces.cpp: per near pair, overlap, IP, contact force
   void pair_forces(bool with_energy);
@@ -278,6 +280,7 @@ class Engine {
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
   std::vector<int> block_pairs_;
+  std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (gather's reach)
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).
