@@ -207,8 +207,9 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
     const NearPair& p = near[k];
     if (!p.candidate) continue;
     // The pair's smaller radius (pair_radius_): reach already holds block
-    // i's, so the other block's is the same minimum.
-    reach = std::min(reach, a.pair_radius[k]);
+    // i's, so the other block's is the same minimum (the operands in
+    // minsd's order: reach is kept in its register).
+    reach = std::min(a.pair_radius[k], reach);
     if (!p.active || !free_block) continue;
     const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
