@@ -199,7 +199,10 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
   const double* radius = a.radius;
   double reach = radius[i];
   const detail::Lanes c = detail::lanes(moments_[i].centroid);
-  const bool free_block = !fixed_[i];
+  // The value of p.active a pair summed here has: 1 (active) for a free
+  // block, 2 (never: a bool) for a fixed one, whose sum stays its body
+  // force. One compare per candidate.
+  const int summed = fixed_[i] ? 2 : 1;
   const Vec6 body = body_force(i);
   detail::Lanes6 sum{{body[0], body[1]}, {body[2], body[3]}, {body[4], body[5]}};
   for (int q = a.offset[i], end = a.offset[i + 1]; q < end; ++q) {
@@ -210,7 +213,7 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
     // i's, so the other block's is the same minimum (the operands in
     // minsd's order: reach is kept in its register).
     reach = std::min(a.pair_radius[k], reach);
-    if (!p.active || !free_block) continue;
+    if (p.active != summed) continue;
     const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     // A pair whose pg was kept within its IP carries the rest of Eq. 20's
