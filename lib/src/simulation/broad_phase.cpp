@@ -166,12 +166,21 @@ void Engine::rebuild_near_pairs() {
     block_pairs_[static_cast<std::size_t>(fill[i]++)] = static_cast<int>(k);
     block_pairs_[static_cast<std::size_t>(fill[j]++)] = static_cast<int>(k);
   }
+  set_pair_radii();
+}
+
+void Engine::set_pair_radii() {
+  // Each near pair's smaller inscribed radius (radius_, fixed at t = 0):
+  // what a candidate pair gives both its blocks' reach in gather.
+  pair_radius_.resize(near_pairs_.size());
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k)
+    pair_radius_[k] = std::min(radius_[static_cast<std::size_t>(near_pairs_[k].i)], radius_[static_cast<std::size_t>(near_pairs_[k].j)]);
 }
 
 std::size_t Engine::bytes_per_near_pair() const {
   // A near pair's own state; a touching pair's contact slot is apart
   // (sizeof(ContactSlot): the result and the friction history).
-  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + (friction_ ? sizeof(double) : 0);
+  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + sizeof(double) + (friction_ ? sizeof(double) : 0);
 }
 
 }  // namespace dda

@@ -177,12 +177,14 @@ void Engine::pair_forces(bool with_energy) {
     // kept across that call would be spilled around it.
     p.candidate = boxes_overlap(boxes[p.i], boxes[p.j]);
     if (!p.candidate) {
-      const bool was_active = p.active;
-      p.active = false;
       work += kWorkOther;
       // Its slot is freed by merge_contacts. A copy of k (push_back takes a
       // reference, which would keep k in memory through the whole loop).
-      if (was_active) changed.ended.push_back(long{k});
+      // The flag is written only when set (most such pairs were apart).
+      if (p.active) {
+        p.active = false;
+        changed.ended.push_back(long{k});
+      }
       continue;
     }
     // Sect. 3.1.2 (overlap) and 3.1.3 (intersection polygon by cutting).

@@ -179,30 +179,41 @@ Vec6 Engine::body_force(int i) const {
   return f;
 }
 
-Vec6 Engine::gather_contact_forces(int i) {
+Engine::GatherArrays Engine::gather_arrays() {
+  return {near_pair_offset_.data(), block_pairs_.data(), near_pairs_.data(),
+          pair_loads_.data(),       radius_.data(),      pair_radius_.data(), reach_radius_.data()};
+}
+
+Vec6 Engine::gather_contact_forces(int i) { return gather_contact_forces(i, gather_arrays()); }
+
+Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
   // Block i's force F^{n+1}: its body force, then its contact forces, Eqs.
   // 22-23 and 28-29 through T(pg)^T, added in increasing pair order (the
   // same bits for any thread count); and the
   // smallest inscribed radius within its reach (itself and its candidates)
   // for the step-motion guard. The sum is kept in lanes (point_load_lanes)
-  // and the arrays in locals: the force's stores could alias them.
-  const int* pairs = block_pairs_.data();
-  const NearPair* near = near_pairs_.data();
-  const PairLoad* loads = pair_loads_.data();
-  const double* radius = radius_.data();
+  // and the arrays in locals (a): the force's stores could alias them.
+  const int* pairs = a.pairs;
+  const NearPair* near = a.near;
+  const PairLoad* loads = a.loads;
+  const double* radius = a.radius;
   double reach = radius[i];
   const detail::Lanes c = detail::lanes(moments_[i].centroid);
-  const bool free_block = !fixed_[i];
+  // The value of p.active a pair summed here has: 1 (active) for a free
+  // block, 2 (never: a bool) for a fixed one, whose sum stays its body
+  // force. One compare per candidate.
+  const int summed = fixed_[i] ? 2 : 1;
   const Vec6 body = body_force(i);
   detail::Lanes6 sum{{body[0], body[1]}, {body[2], body[3]}, {body[4], body[5]}};
-  for (int q = near_pair_offset_[i], end = near_pair_offset_[i + 1]; q < end; ++q) {
+  for (int q = a.offset[i], end = a.offset[i + 1]; q < end; ++q) {
     const int k = pairs[q];
     const NearPair& p = near[k];
     if (!p.candidate) continue;
-    // The other block's radius: reach already holds block i's (fewer
-    // instructions than choosing the other block).
-    reach = std::min(reach, std::min(radius[p.i], radius[p.j]));
-    if (!p.active || !free_block) continue;
+    // The pair's smaller radius (pair_radius_): reach already holds block
+    // i's, so the other block's is the same minimum (the operands in
+    // minsd's order: reach is kept in its register).
+    reach = std::min(a.pair_radius[k], reach);
+    if (p.active != summed) continue;
     const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     // A pair whose pg was kept within its IP carries the rest of Eq. 20's
@@ -220,7 +231,7 @@ Vec6 Engine::gather_contact_forces(int i) {
       sum.g45 -= g.g45;
     }
   }
-  reach_radius_[i] = reach;
+  a.reach[i] = reach;
   Vec6 force;
   force << sum.g01[0], sum.g01[1], sum.g23[0], sum.g23[1], sum.g45[0], sum.g45[1];
   return force;
@@ -234,8 +245,9 @@ Vec6 Engine::gather_contact_forces(int i) {
   // slots (contact_forces.cpp): this phase reads only the pairs' loads.
   if (thread_index() == 0) merge_contacts();
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
+  const GatherArrays arrays = gather_arrays();
   const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
-    const Vec6 force = gather_contact_forces(i);
+    const Vec6 force = gather_contact_forces(i, arrays);
     if (fixed_[i]) return;
     kick_block(i, force);
     if (guard_fault(i) != GuardFault::kNone) failed = true;

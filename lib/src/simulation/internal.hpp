@@ -125,7 +125,21 @@ class Engine {
   void block_facts(int i);
   Vec6 body_force(int i) const;
   void gather_and_kick();
+  // The arrays gather_contact_forces reads (and the reach it writes), taken
+  // once per block loop: the kicks' stores could alias the vectors' members,
+  // which would be reloaded per block.
+  struct GatherArrays {
+    const int* offset;
+    const int* pairs;
+    const NearPair* near;
+    const PairLoad* loads;
+    const double* radius;
+    const double* pair_radius;
+    double* reach;
+  };
+  GatherArrays gather_arrays();
   Vec6 gather_contact_forces(int i);
+  Vec6 gather_contact_forces(int i, const GatherArrays& a);
   void kick_block(int i, const Vec6& force);
   void kick();
   // Eq. 5c damping (Scene::damping): the kick with C = a M + b K, switching
@@ -143,6 +157,7 @@ class Engine {
   // broad_phase.cpp: the near-pair list, rebuilt when a block left its skin
   void update_near_pairs();
   void rebuild_near_pairs();
+  void set_pair_radii();
   bool near_pairs_unchanged() const;  // BroadPhase::kNone: would a rebuild list the same pairs?
   // contact_forces.cpp: per near pair, overlap, IP, contact force
   void pair_forces(bool with_energy);
@@ -265,6 +280,7 @@ class Engine {
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
   std::vector<int> block_pairs_;
+  std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (gather's reach)
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).

@@ -428,6 +428,7 @@ void Engine::restore_state(ByteReader& r) {
         r.fail("a block's pair entry names the wrong blocks");
       block_pairs_[static_cast<std::size_t>(q)] = b.pair;
     }
+  set_pair_radii();
   // The touching pairs' contacts once more (what contacts() returned when
   // the stream was saved): checked, not kept (contacts() builds them from
   // the pairs).
