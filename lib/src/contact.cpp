@@ -154,6 +154,31 @@ inline Lanes load(const double* pair) {
 #endif
 }
 
+// The crossings of an IP edge with a polygon's vertex rays (Sect. 3.2.3):
+// ray i between lines i - 1 and i (line n - 1 for i = 0), d0 = 0, on the
+// edge's lines d_i(t) = c_i + s_i t kept two at a time (pair p: lines 2p
+// and 2p + 1, an odd count's last line repeated, which meets itself: num =
+// 0, never a hit). Two rays at a time, each by EdgeLines::crossing's test
+// (num and den negated together when den < 0; a hit needs 0 < num < den
+// and d_a(t) >= 0 at t = num / den); add(t) for each hit in ray order.
+template <class Add>
+[[gnu::always_inline]] inline void vertex_ray_crossings(const Lanes* c, const Lanes* s, int pairs, Add&& add) {
+  const Lanes zero = {0.0, 0.0};
+  const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
+  for (int p = 0; p < pairs; ++p) {
+    const int q = p == 0 ? pairs - 1 : p - 1;
+    const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
+    const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
+    const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
+    unsigned hits = lane_bits_and(num > zero, num < den);
+    if (!hits) continue;
+    const Lanes t = num / den;
+    hits &= lane_bits(ca + sa * t >= zero);
+    if (hits & 1u) add(t[0]);
+    if (hits & 2u) add(t[1]);
+  }
+}
+
 // The signed distances inside one polygon's edge lines along one IP edge
 // a + t (b - a), t in [0, 1]: d_i(t) = c_i + s_i t (Eq. 13), so that
 // d_exit(t) = min_i d_i(t) (Eq. 14). Built once per edge and side; every
@@ -223,20 +248,7 @@ struct EdgeLines {
   // each hit in ray order. An odd count's repeated line meets itself
   // (num = 0): never a hit.
   void vertex_crossings(Crossings& cr) const {
-    const Lanes zero = {0.0, 0.0};
-    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
-    for (int p = 0; p < pairs(); ++p) {
-      const int q = p == 0 ? pairs() - 1 : p - 1;
-      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
-      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
-      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits_and(num > zero, num < den);
-      if (!hits) continue;
-      const Lanes t = num / den;
-      hits &= lane_bits(ca + sa * t >= zero);
-      if (hits & 1u) cr.add(t[0]);
-      if (hits & 2u) cr.add(t[1]);
-    }
+    vertex_ray_crossings(c, s, pairs(), [&cr](double t) { cr.add(t); });
   }
 };
 
@@ -413,20 +425,7 @@ template <int kN, bool kMinus>
     if (x > 0.0 && x < 1.0) cross[count++] = x;
   };
   if (rays.count == n) {
-    const Lanes zero = {0.0, 0.0};
-    const LaneMask sign = (LaneMask)Lanes{-0.0, -0.0};
-    for (int p = 0; p < pairs; ++p) {
-      const int q = p == 0 ? pairs - 1 : p - 1;
-      const Lanes ca = upper_lower(c[q], c[p]), sa = upper_lower(s[q], s[p]);  // lines 2p - 1, 2p
-      const LaneMask flip = (sa - s[p] < zero) & sign;                         // den < 0: negate both
-      const Lanes num = (Lanes)((LaneMask)(c[p] - ca) ^ flip), den = (Lanes)((LaneMask)(sa - s[p]) ^ flip);
-      unsigned hits = lane_bits_and(num > zero, num < den);
-      if (!hits) continue;
-      const Lanes t = num / den;
-      hits &= lane_bits(ca + sa * t >= zero);
-      if (hits & 1u) add(t[0]);
-      if (hits & 2u) add(t[1]);
-    }
+    vertex_ray_crossings(c, s, pairs, add);
   } else {
     for (int r = 0; r < rays.count && r < 2 * n; ++r) {
       const Bisector& ray = rays.b[r];
