@@ -19,21 +19,9 @@ namespace {
 
 constexpr double kSixth = 1.0 / 6.0;  // a multiplication instead of a division per segment
 
-// Crossings of one IP edge with rays or envelope kinks: parameters strictly
-// inside (0, 1) (the end points are demarcation points anyway; so is 1/2,
-// which integrate_edge skips as a repeated point).
-// Insertion sort of t[0..count): a handful of points.
-inline void sort_points(double* t, int count) {
-  for (int i = 1; i < count; ++i) {
-    const double x = t[i];
-    int j = i;
-    for (; j > 0 && t[j - 1] > x; --j) t[j] = t[j - 1];
-    t[j] = x;
-  }
-}
-
-// sort_points for t[0..count) > 0 after a sentinel t[-1] <= 0: the same
-// order, each shift stopped by the sentinel rather than an index test.
+// Insertion sort of t[0..count) > 0 after a sentinel t[-1] <= 0 (a
+// handful of points): each shift is stopped by the sentinel rather than
+// by an index test.
 inline void sort_after_sentinel(double* t, int count) {
   for (int i = 1; i < count; ++i) {
     const double x = t[i];
@@ -43,13 +31,20 @@ inline void sort_after_sentinel(double* t, int count) {
   }
 }
 
+// Crossings of one IP edge with rays or envelope kinks: parameters strictly
+// inside (0, 1) (the end points are demarcation points anyway; so is 1/2,
+// which integrate_edge skips as a repeated point), after the sort's
+// sentinel 0.
 struct Crossings {
-  std::array<double, 4 * kMaxVertices> t;  // left uninitialised: count says how many are set
+  static constexpr int kCapacity = 4 * kMaxVertices;
+  std::array<double, kCapacity + 1> slots;  // [0]: the sentinel; then count crossings, the rest unset
   int count = 0;
+  Crossings() { slots[0] = 0.0; }
+  const double* t() const { return slots.data() + 1; }
   void add(double x) {
-    if (x > 0.0 && x < 1.0 && count < static_cast<int>(t.size())) t[static_cast<std::size_t>(count++)] = x;
+    if (x > 0.0 && x < 1.0 && count < kCapacity) slots[static_cast<std::size_t>(++count)] = x;
   }
-  void sort() { sort_points(t.data(), count); }
+  void sort() { sort_after_sentinel(slots.data() + 1, count); }
 };
 
 using detail::LaneMask;
@@ -335,7 +330,7 @@ template <class TractionAt>
 template <class TractionAt>
 [[gnu::always_inline]] inline EdgeSums integrate_edge(const Crossings& cr, double f_start, double f_mid, double f_end,
                                                       TractionAt&& traction_at) {
-  return integrate_sorted(cr.t.data(), cr.count, f_start, f_mid, f_end, traction_at);
+  return integrate_sorted(cr.t(), cr.count, f_start, f_mid, f_end, traction_at);
 }
 
 // Demarcation points of one side on an edge (Sect. 3.2.3 steps 1-4): the
@@ -861,31 +856,6 @@ enum class On { kNeither = 0, kCp = 1, kTp = 2 };
   return true;
 }
 
-// detail::green_centroid (count >= 3) with each edge's point sums in lanes:
-// c = a x b as the difference of the lanes of a * {b.y, b.x}, then
-// {Sx, Sy} += {c, c} (a + b), and the centroid's divisions lane by lane:
-// the same operations in the same order, the same bits.
-inline AreaMoments green_centroid_lanes(const Vec2* v, int count) {
-  AreaMoments m;
-  const Lanes o = detail::lanes(v[0]);
-  Lanes a = detail::lanes(v[1]) - o, sxy = {0.0, 0.0};
-  double s = 0;
-  for (int i = 1; i + 1 < count; ++i) {
-    const Lanes b = detail::lanes(v[i + 1]) - o;
-    const Lanes p = a * detail::swapped(b);
-    const double c = p[0] - p[1];
-    s += c;
-    sxy += Lanes{c, c} * (a + b);
-    a = b;
-  }
-  s *= 0.5;
-  sxy = sxy / Lanes{6.0, 6.0};
-  m.area = s;
-  if (s == 0.0) return m;
-  m.centroid = detail::vec2(o + sxy / Lanes{s, s});
-  return m;
-}
-
 // area_centroid of an IP of 5 or more vertices: unrolled for 5 to 7.
 [[gnu::noinline]] AreaMoments ip_centroid_5_up(const Vec2* v, int count) {
   return count == 5   ? detail::green_centroid<5>(v, 5)
@@ -906,10 +876,8 @@ template <int kNc, int kNt, bool kPaper>
   // quadrilaterals, a call for the rest (half of two quadrilaterals' IPs:
   // unrolled there for 5 to 7 vertices); the same operations in the
   // same order: the same bits.
-  // Hexagons to octagons (IPs of more vertices): green_centroid_lanes inline.
   const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
                          : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
-                         : (kNc >= 6 && kNt >= 6) ? green_centroid_lanes(ip.v.data(), ip.count)
                                          : ip_centroid_5_up(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   const Lanes c_lanes = detail::lanes(c);
