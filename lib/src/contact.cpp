@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
 #if defined(__SSE2__)
@@ -456,6 +457,31 @@ template <int kN, bool kMinus>
   paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
 }
 
+// The pairs (first, last) of line masks of a kN-gon (kN = 3 to 5) in
+// which each mask is one line and the two lines are adjacent (i - j = +-1
+// or +-(kN - 1)): bit first | last << kN of a table built at compile time,
+// so that paper_side_edge's two-line test is one lookup instead of two
+// single-bit tests and an index difference (the same predicate).
+template <int kN>
+struct AdjacentLines {
+  static constexpr int kKeys = 1 << (2 * kN);
+  std::uint64_t bits[(kKeys + 63) / 64] = {};
+  constexpr AdjacentLines() {
+    for (int i = 0; i < kN; ++i)
+      for (int j : {i + 1 < kN ? i + 1 : 0, i > 0 ? i - 1 : kN - 1}) {
+        const unsigned key = 1u << i | (1u << j) << kN;
+        bits[key / 64] |= std::uint64_t{1} << (key % 64);
+      }
+  }
+  // first, last: masks of kN bits.
+  constexpr bool test(unsigned first, unsigned last) const {
+    const unsigned key = first | last << kN;
+    return (bits[key / 64] >> (key % 64)) & 1u;
+  }
+};
+template <int kN>
+constexpr AdjacentLines<kN> kAdjacentLines{};
+
 // A polygon's lines two at a time as paper_side_edge pairs them (pair p:
 // lines 2p and 2p + 1, an odd count's last line repeated): the normals' and
 // vertices' components {n_i.x, n_j.x}, {n_i.y, n_j.y}, {v_i.x, v_j.x},
@@ -652,9 +678,22 @@ template <int kN, bool kMinus>
       sums.segments = 1;
       return true;
     }
-    const int i = __builtin_ctz(first | 1u << 31), j = __builtin_ctz(last | 1u << 31);
-    const int ij = i - j;
-    if (rays.count == n && first == 1u << i && last == 1u << j && (ij == 1 || ij == -1 || ij == n - 1 || ij == 1 - n)) {
+    // i, j: the lines nearest at the start and at the end when adjacent.
+    int i = 0, j = 0;
+    bool adjacent;
+    if constexpr (kN >= 3 && kN <= 5) {
+      adjacent = rays.count == n && kAdjacentLines<kN>.test(first, last);
+      if (adjacent) {
+        i = __builtin_ctz(first);  // one bit each
+        j = __builtin_ctz(last);
+      }
+    } else {
+      i = __builtin_ctz(first | 1u << 31);
+      j = __builtin_ctz(last | 1u << 31);
+      const int ij = i - j;
+      adjacent = rays.count == n && first == 1u << i && last == 1u << j && (ij == 1 || ij == -1 || ij == n - 1 || ij == 1 - n);
+    }
+    if (adjacent) {
       // Two adjacent lines, i nearest at the start, j at the end: their
       // crossing t* = num / den inside (0, 1), then d* and the two
       // trapezoids 0 -> t* (2 t0 + t1 = t*, t0 + 2 t1 = 2 t*) and t* -> 1
