@@ -1028,28 +1028,31 @@ template <int kNc, int kNt, bool kPaper>
 [[gnu::noinline]] NormalForce contact_force_other_rule(const PotentialSide& cp, const PotentialSide& tp,
                                                        const Polygon& ip, Integration rule, double tol,
                                                        const IpEdge* source, LoadingPoint where) {
+  if (ip.count < 3) return NormalForce{};
   return contact_force_ip<0, 0, false>(cp, tp, ip, rule, tol, source, where);
 }
 
+// The paper's rule (Integration::kPaperBisector) from here on: the rule is
+// no argument of the dispatch below, so that all of its arguments travel in
+// registers (none on the stack) and no contact tests it again.
 template <int kNc, int kNt>
-NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
-                            double tol, const IpEdge* source, LoadingPoint where) {
+NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol,
+                            const IpEdge* source, LoadingPoint where) {
   if (ip.count < 3) return NormalForce{};
-  if (rule != Integration::kPaperBisector) return contact_force_other_rule(cp, tp, ip, rule, tol, source, where);
-  return contact_force_ip<kNc, kNt, true>(cp, tp, ip, rule, tol, source, where);
+  return contact_force_ip<kNc, kNt, true>(cp, tp, ip, Integration::kPaperBisector, tol, source, where);
 }
 
 // contact_force_n with the vertex counts of CP and TP as compile-time
 // constants when both are 3 to 5 (blocks cut by joint sets are mostly
 // quadrilaterals, then pentagons and triangles), else read at run time.
 template <int kNc>
-NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule,
-                        double tol, const IpEdge* source, LoadingPoint where) {
+NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol,
+                        const IpEdge* source, LoadingPoint where) {
   switch (tp.poly.count) {
-    case 3: return contact_force_n<kNc, 3>(cp, tp, ip, rule, tol, source, where);
-    case 4: return contact_force_n<kNc, 4>(cp, tp, ip, rule, tol, source, where);
-    case 5: return contact_force_n<kNc, 5>(cp, tp, ip, rule, tol, source, where);
-    default: return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+    case 3: return contact_force_n<kNc, 3>(cp, tp, ip, tol, source, where);
+    case 4: return contact_force_n<kNc, 4>(cp, tp, ip, tol, source, where);
+    case 5: return contact_force_n<kNc, 5>(cp, tp, ip, tol, source, where);
+    default: return contact_force_n<0, 0>(cp, tp, ip, tol, source, where);
   }
 }
 
@@ -1058,23 +1061,23 @@ NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const 
 // paper_side_edge_any's call and switch. Out of line: the common blocks
 // are triangles to pentagons.
 [[gnu::noinline]] NormalForce by_equal_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
-                                             Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
+                                             double tol, const IpEdge* source, LoadingPoint where) {
   if (cp.poly.count == tp.poly.count) switch (cp.poly.count) {
-      case 6: return contact_force_n<6, 6>(cp, tp, ip, rule, tol, source, where);
-      case 7: return contact_force_n<7, 7>(cp, tp, ip, rule, tol, source, where);
-      case 8: return contact_force_n<8, 8>(cp, tp, ip, rule, tol, source, where);
+      case 6: return contact_force_n<6, 6>(cp, tp, ip, tol, source, where);
+      case 7: return contact_force_n<7, 7>(cp, tp, ip, tol, source, where);
+      case 8: return contact_force_n<8, 8>(cp, tp, ip, tol, source, where);
       default: break;
     }
-  return contact_force_n<0, 0>(cp, tp, ip, rule, tol, source, where);
+  return contact_force_n<0, 0>(cp, tp, ip, tol, source, where);
 }
 
-NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, Integration rule, double tol,
+NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol,
                       const IpEdge* source, LoadingPoint where) {
   switch (cp.poly.count) {
-    case 3: return by_tp_count<3>(cp, tp, ip, rule, tol, source, where);
-    case 4: return by_tp_count<4>(cp, tp, ip, rule, tol, source, where);
-    case 5: return by_tp_count<5>(cp, tp, ip, rule, tol, source, where);
-    default: return by_equal_count(cp, tp, ip, rule, tol, source, where);
+    case 3: return by_tp_count<3>(cp, tp, ip, tol, source, where);
+    case 4: return by_tp_count<4>(cp, tp, ip, tol, source, where);
+    case 5: return by_tp_count<5>(cp, tp, ip, tol, source, where);
+    default: return by_equal_count(cp, tp, ip, tol, source, where);
   }
 }
 
@@ -1082,7 +1085,8 @@ NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Po
 
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
                                  Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
-  return by_counts(cp, tp, ip, rule, tol, source, where);
+  if (rule != Integration::kPaperBisector) return contact_force_other_rule(cp, tp, ip, rule, tol, source, where);
+  return by_counts(cp, tp, ip, tol, source, where);
 }
 
 
