@@ -912,12 +912,15 @@ template <int kNc, int kNt, bool kPaper>
                                                            const Polygon& ip, Integration rule, double tol,
                                                            const IpEdge* source, LoadingPoint where) {
   // area_centroid(ip): inline and unrolled for the common triangles and
-  // quadrilaterals, a call for the rest (half of two quadrilaterals' IPs:
-  // unrolled there for 5 to 7 vertices); the same operations in the
-  // same order: the same bits.
-  const AreaMoments am = ip.count == 4   ? detail::green_centroid<4>(ip.v.data(), 4)
-                         : ip.count == 3 ? detail::green_centroid<3>(ip.v.data(), 3)
-                                         : ip_centroid_5_up(ip.v.data(), ip.count);
+  // quadrilaterals, and for pentagons where both blocks have 3 to 5
+  // vertices (a fifth of two quadrilaterals' IPs), a call for the rest
+  // (unrolled there for 5 to 7 vertices); the same operations in the same
+  // order: the same bits.
+  constexpr bool kSmall = kNc >= 3 && kNc <= 5 && kNt >= 3 && kNt <= 5;
+  const AreaMoments am = ip.count == 4             ? detail::green_centroid<4>(ip.v.data(), 4)
+                         : ip.count == 3           ? detail::green_centroid<3>(ip.v.data(), 3)
+                         : kSmall && ip.count == 5 ? detail::green_centroid<5>(ip.v.data(), 5)
+                                                   : ip_centroid_5_up(ip.v.data(), ip.count);
   const Vec2 c = am.centroid;
   const Lanes c_lanes = detail::lanes(c);
   // The sums in locals, the result built once at the end: a NormalForce
