@@ -808,16 +808,18 @@ template <int kN, bool kMinus, bool kPaper>
 // call a point outside by round-off: bound_to_ip, which bounds by the
 // longer edges only, then finds it inside after all and keeps it.
 // cross(b - a, p - a) = (b - a).x (p - a).y - (b - a).y (p - a).x is
-// taken as the two lanes' products of b - a and the swapped p - a, then
-// their difference: the same operations, the same bits. The edges from
-// the closing one (count - 1 -> 0) on, so that no index wraps.
+// taken as the two lanes' products of b - a and the swapped p - a; the
+// cross product is negative exactly when the first product is below the
+// second (x - y < 0 iff x < y, infinities and NaN alike), which is tested
+// without the difference. The edges from the closing one (count - 1 -> 0)
+// on, so that no index wraps.
 bool inside_ip(const Polygon& ip, Vec2 p) {
   const Lanes pl = detail::lanes(p);
   Lanes a = detail::lanes(ip.vertex(ip.count - 1));
   for (int e = 0; e < ip.count; ++e) {
     const Lanes b = detail::lanes(ip.vertex(e));
     const Lanes t = (b - a) * detail::swapped(pl - a);
-    if (t[0] - t[1] < 0.0) return false;  // CCW: the inside is on the left
+    if (t[0] < t[1]) return false;  // cross < 0 (CCW: the inside is on the left)
     a = b;
   }
   return true;
@@ -913,7 +915,7 @@ template <int kNc, int kNt, bool kPaper>
                                                            const IpEdge* source, LoadingPoint where) {
   // area_centroid(ip): inline and unrolled for the common triangles and
   // quadrilaterals, and for pentagons where both blocks have 3 to 5
-  // vertices (a fifth of two quadrilaterals' IPs), a call for the rest
+  // vertices (a quarter of two quadrilaterals' IPs), a call for the rest
   // (unrolled there for 5 to 7 vertices); the same operations in the same
   // order: the same bits.
   constexpr bool kSmall = kNc >= 3 && kNc <= 5 && kNt >= 3 && kNt <= 5;
