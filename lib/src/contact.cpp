@@ -1039,10 +1039,12 @@ template <int kNc, int kNt, bool kPaper>
 
 // The paper's rule (Integration::kPaperBisector) from here on: the rule is
 // no argument of the dispatch below, so that all of its arguments travel in
-// registers (none on the stack) and no contact tests it again.
+// registers (none on the stack) and no contact tests it again; the loading
+// point's rule takes the rule's place, so that the other arguments stay in
+// the registers normal_contact_force receives them in.
 template <int kNc, int kNt>
-NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol,
-                            const IpEdge* source, LoadingPoint where) {
+NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, LoadingPoint where,
+                            double tol, const IpEdge* source) {
   if (ip.count < 3) return NormalForce{};
   return contact_force_ip<kNc, kNt, true>(cp, tp, ip, Integration::kPaperBisector, tol, source, where);
 }
@@ -1051,13 +1053,13 @@ NormalForce contact_force_n(const PotentialSide& cp, const PotentialSide& tp, co
 // constants when both are 3 to 5 (blocks cut by joint sets are mostly
 // quadrilaterals, then pentagons and triangles), else read at run time.
 template <int kNc>
-NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol,
-                        const IpEdge* source, LoadingPoint where) {
+NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, LoadingPoint where,
+                        double tol, const IpEdge* source) {
   switch (tp.poly.count) {
-    case 3: return contact_force_n<kNc, 3>(cp, tp, ip, tol, source, where);
-    case 4: return contact_force_n<kNc, 4>(cp, tp, ip, tol, source, where);
-    case 5: return contact_force_n<kNc, 5>(cp, tp, ip, tol, source, where);
-    default: return contact_force_n<0, 0>(cp, tp, ip, tol, source, where);
+    case 3: return contact_force_n<kNc, 3>(cp, tp, ip, where, tol, source);
+    case 4: return contact_force_n<kNc, 4>(cp, tp, ip, where, tol, source);
+    case 5: return contact_force_n<kNc, 5>(cp, tp, ip, where, tol, source);
+    default: return contact_force_n<0, 0>(cp, tp, ip, where, tol, source);
   }
 }
 
@@ -1066,23 +1068,23 @@ NormalForce by_tp_count(const PotentialSide& cp, const PotentialSide& tp, const 
 // paper_side_edge_any's call and switch. Out of line: the common blocks
 // are triangles to pentagons.
 [[gnu::noinline]] NormalForce by_equal_count(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
-                                             double tol, const IpEdge* source, LoadingPoint where) {
+                                             LoadingPoint where, double tol, const IpEdge* source) {
   if (cp.poly.count == tp.poly.count) switch (cp.poly.count) {
-      case 6: return contact_force_n<6, 6>(cp, tp, ip, tol, source, where);
-      case 7: return contact_force_n<7, 7>(cp, tp, ip, tol, source, where);
-      case 8: return contact_force_n<8, 8>(cp, tp, ip, tol, source, where);
+      case 6: return contact_force_n<6, 6>(cp, tp, ip, where, tol, source);
+      case 7: return contact_force_n<7, 7>(cp, tp, ip, where, tol, source);
+      case 8: return contact_force_n<8, 8>(cp, tp, ip, where, tol, source);
       default: break;
     }
-  return contact_force_n<0, 0>(cp, tp, ip, tol, source, where);
+  return contact_force_n<0, 0>(cp, tp, ip, where, tol, source);
 }
 
-NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, double tol,
-                      const IpEdge* source, LoadingPoint where) {
+NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip, LoadingPoint where,
+                      double tol, const IpEdge* source) {
   switch (cp.poly.count) {
-    case 3: return by_tp_count<3>(cp, tp, ip, tol, source, where);
-    case 4: return by_tp_count<4>(cp, tp, ip, tol, source, where);
-    case 5: return by_tp_count<5>(cp, tp, ip, tol, source, where);
-    default: return by_equal_count(cp, tp, ip, tol, source, where);
+    case 3: return by_tp_count<3>(cp, tp, ip, where, tol, source);
+    case 4: return by_tp_count<4>(cp, tp, ip, where, tol, source);
+    case 5: return by_tp_count<5>(cp, tp, ip, where, tol, source);
+    default: return by_equal_count(cp, tp, ip, where, tol, source);
   }
 }
 
@@ -1091,7 +1093,7 @@ NormalForce by_counts(const PotentialSide& cp, const PotentialSide& tp, const Po
 NormalForce normal_contact_force(const PotentialSide& cp, const PotentialSide& tp, const Polygon& ip,
                                  Integration rule, double tol, const IpEdge* source, LoadingPoint where) {
   if (rule != Integration::kPaperBisector) return contact_force_other_rule(cp, tp, ip, rule, tol, source, where);
-  return by_counts(cp, tp, ip, tol, source, where);
+  return by_counts(cp, tp, ip, where, tol, source);
 }
 
 
