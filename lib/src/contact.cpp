@@ -812,17 +812,27 @@ template <int kN, bool kMinus, bool kPaper>
 // cross product is negative exactly when the first product is below the
 // second (x - y < 0 iff x < y, infinities and NaN alike), which is tested
 // without the difference. The edges from the closing one (count - 1 -> 0)
-// on, so that no index wraps.
+// on, so that no index wraps. kN: the IP's vertex count when known at
+// compile time (0: read it), so that a triangle's or quadrilateral's edges
+// run unrolled; the same tests in the same order either way.
+template <int kN = 0>
 bool inside_ip(const Polygon& ip, Vec2 p) {
+  const int n = kN ? kN : ip.count;
   const Lanes pl = detail::lanes(p);
-  Lanes a = detail::lanes(ip.vertex(ip.count - 1));
-  for (int e = 0; e < ip.count; ++e) {
+  Lanes a = detail::lanes(ip.vertex(n - 1));
+#pragma GCC unroll 4
+  for (int e = 0; e < n; ++e) {
     const Lanes b = detail::lanes(ip.vertex(e));
     const Lanes t = (b - a) * detail::swapped(pl - a);
     if (t[0] < t[1]) return false;  // cross < 0 (CCW: the inside is on the left)
     a = b;
   }
   return true;
+}
+// inside_ip with the count known for the common IPs, triangles and
+// quadrilaterals.
+inline bool inside_ip_any(const Polygon& ip, Vec2 p) {
+  return ip.count == 4 ? inside_ip<4>(ip, p) : ip.count == 3 ? inside_ip<3>(ip, p) : inside_ip<0>(ip, p);
 }
 
 void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
@@ -1024,7 +1034,7 @@ template <int kNc, int kNt, bool kPaper>
     point = c + lambda * (perp_left(force) / fl);
   }
   NormalForce out{valid ? force : Vec2{}, point, valid ? moment : 0.0, 0.0, c, am.area, perimeter, segments, valid};
-  if (valid && where == LoadingPoint::kWithinIp && !inside_ip(ip, out.point)) bound_to_ip(ip, tol, out);
+  if (valid && where == LoadingPoint::kWithinIp && !inside_ip_any(ip, out.point)) bound_to_ip(ip, tol, out);
   return out;
 }
 
