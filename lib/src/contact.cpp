@@ -829,10 +829,13 @@ bool inside_ip(const Polygon& ip, Vec2 p) {
   }
   return true;
 }
-// inside_ip with the count known for the common IPs, triangles and
-// quadrilaterals.
+// inside_ip with the count known for the common IPs, triangles to
+// pentagons.
 inline bool inside_ip_any(const Polygon& ip, Vec2 p) {
-  return ip.count == 4 ? inside_ip<4>(ip, p) : ip.count == 3 ? inside_ip<3>(ip, p) : inside_ip<0>(ip, p);
+  return ip.count == 4   ? inside_ip<4>(ip, p)
+         : ip.count == 3 ? inside_ip<3>(ip, p)
+         : ip.count == 5 ? inside_ip<5>(ip, p)
+                         : inside_ip<0>(ip, p);
 }
 
 void bound_to_ip(const Polygon& ip, double tol, NormalForce& out) {
