@@ -978,48 +978,70 @@ template <int kNc, int kNt, bool kPaper>
   PairedFor<kNt> paired_tp;
   if constexpr (kPaper && kNc >= 6 && kNc <= 8) paired_cp.gather(cp.poly);
   if constexpr (kPaper && kNt >= 6 && kNt <= 8) paired_tp.gather(tp.poly);
-  // The previous, this and the next edge's, carried along the loop.
-  On on_prev = On::kNeither, on_this = on(ip.count - 1), on_next = on(0);
-  for (int e = 0; e < ip.count; ++e) {
-    const int e1 = ip.next(e);
-    on_prev = on_this;
-    on_this = on_next;
-    on_next = on(e1);
-    const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
-    const Lanes ab2 = detail::lanes(ab) * detail::lanes(ab);
-    const double len = detail::root(ab2[0] + ab2[1]);  // length(ab): x x + y y, lane by lane
-    if (len <= tol) continue;
-    perimeter += len;
-    // A vertex where an edge on CP's boundary starts or ends is on that
-    // boundary: d_exit = 0 there (likewise for TP). For the potential of a
-    // side that is used on edge e (so e is not on that side's boundary),
-    // its start a is on it when the previous IP edge is, its end when the
-    // next one is.
-    EdgeSums sums;  // set when used
-    bool used = false;
-    if (on_this == On::kCp)
-      used = one_side_edge<kNt, true, kPaper>(tp.poly, tp.kn_over_h, rays_tp, a, ab, tol, on_prev == On::kTp,
-                                              on_next == On::kTp, sums, &paired_tp);
-    else if (on_this == On::kTp)
-      used = one_side_edge<kNc, false, kPaper>(cp.poly, cp.kn_over_h, rays_cp, a, ab, tol, on_prev == On::kCp,
-                                               on_next == On::kCp, sums, &paired_cp);
-    else
-      used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
-    if (!used) {
-      // On the boundary of each side it would use: zero traction on its two halves.
-      segments += 2;
-      continue;
+  // Eqs. 16-18 over the IP's edges, kCount of them (0: ip.count): where
+  // both blocks have 3 to 5 vertices (kSmall), a triangle's or
+  // quadrilateral's IP runs unrolled, its edges' indices constants. The
+  // same operations in the same order for any count: the same bits. Both
+  // lambdas inline (always_inline: GCC otherwise keeps the accumulators
+  // in memory for the larger counts).
+  const auto integrate_edges = [&](auto count) __attribute__((always_inline)) {
+    constexpr int kCount = decltype(count)::value;
+    // The previous, this and the next edge's, carried along the loop.
+    On on_prev = On::kNeither, on_this = on((kCount ? kCount : ip.count) - 1), on_next = on(0);
+    const auto edge = [&](int e) __attribute__((always_inline)) {
+      const int e1 = kCount ? (e + 1 == kCount ? 0 : e + 1) : ip.next(e);
+      on_prev = on_this;
+      on_this = on_next;
+      on_next = on(e1);
+      const Vec2 a = ip.vertex(e), ab = ip.vertex(e1) - a;
+      const Lanes ab2 = detail::lanes(ab) * detail::lanes(ab);
+      const double len = detail::root(ab2[0] + ab2[1]);  // length(ab): x x + y y, lane by lane
+      if (len <= tol) return;
+      perimeter += len;
+      // A vertex where an edge on CP's boundary starts or ends is on that
+      // boundary: d_exit = 0 there (likewise for TP). For the potential of a
+      // side that is used on edge e (so e is not on that side's boundary),
+      // its start a is on it when the previous IP edge is, its end when the
+      // next one is.
+      EdgeSums sums;  // set when used
+      bool used = false;
+      if (on_this == On::kCp)
+        used = one_side_edge<kNt, true, kPaper>(tp.poly, tp.kn_over_h, rays_tp, a, ab, tol, on_prev == On::kTp,
+                                                on_next == On::kTp, sums, &paired_tp);
+      else if (on_this == On::kTp)
+        used = one_side_edge<kNc, false, kPaper>(cp.poly, cp.kn_over_h, rays_cp, a, ab, tol, on_prev == On::kCp,
+                                                 on_next == On::kCp, sums, &paired_cp);
+      else
+        used = two_sided_edge(cp, tp, rays_cp, rays_tp, rule, a, ab, tol, on_prev, on_next, sums);
+      if (!used) {
+        // On the boundary of each side it would use: zero traction on its two halves.
+        segments += 2;
+        return;
+      }
+      segments += sums.segments;
+      const Vec2 n = ip.normal(e);
+      const double w = 0.5 * len * sums.s0;
+      force_lanes += Lanes{w, w} * detail::lanes(n);
+      // cross(w (a - c) + w1 ab, n) lane by lane: u = {u.x, u.y}, u * {n.y, n.x},
+      // then the difference of the lanes (the same operations).
+      const double w1 = len * sums.s1 * kSixth;
+      const Lanes u = Lanes{w, w} * (detail::lanes(a) - c_lanes) + Lanes{w1, w1} * detail::lanes(ab);
+      const Lanes un = u * detail::swapped(detail::lanes(n));
+      moment += un[0] - un[1];
+    };
+    if constexpr (kCount != 0) {
+#pragma GCC unroll 4
+      for (int e = 0; e < kCount; ++e) edge(e);
+    } else {
+      for (int e = 0; e < ip.count; ++e) edge(e);
     }
-    segments += sums.segments;
-    const Vec2 n = ip.normal(e);
-    const double w = 0.5 * len * sums.s0;
-    force_lanes += Lanes{w, w} * detail::lanes(n);
-    // cross(w (a - c) + w1 ab, n) lane by lane: u = {u.x, u.y}, u * {n.y, n.x},
-    // then the difference of the lanes (the same operations).
-    const double w1 = len * sums.s1 * kSixth;
-    const Lanes u = Lanes{w, w} * (detail::lanes(a) - c_lanes) + Lanes{w1, w1} * detail::lanes(ab);
-    const Lanes un = u * detail::swapped(detail::lanes(n));
-    moment += un[0] - un[1];
+  };
+  if constexpr (kSmall) {
+    if (ip.count == 4) integrate_edges(std::integral_constant<int, 4>{});
+    else if (ip.count == 3) integrate_edges(std::integral_constant<int, 3>{});
+    else integrate_edges(std::integral_constant<int, 0>{});
+  } else {
+    integrate_edges(std::integral_constant<int, 0>{});
   }
   const Vec2 force = detail::vec2(force_lanes);
   // Every member written (in declaration order: force, point, moment,
