@@ -238,8 +238,11 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
 }
 
 [[gnu::flatten]] void Engine::gather_and_kick() {
-  // Per block: its contact forces, a^{n+1}, the second half kick, and the
-  // per-block guards (flagged here, reported by check_state).
+  // Per free block: its contact forces, a^{n+1}, the second half kick, and
+  // the per-block guards (flagged here, reported by check_state). A fixed
+  // block is skipped: no kick and no guard reads its sum or its reach (it
+  // keeps the reach of the constructor's force evaluation), and a boundary
+  // block has many near pairs.
   bool failed = false;
   // Thread 0 first gives the pairs that began to touch their contact
   // slots (contact_forces.cpp): this phase reads only the pairs' loads.
@@ -247,8 +250,8 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   const GatherArrays arrays = gather_arrays();
   const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
-    const Vec6 force = gather_contact_forces(i, arrays);
     if (fixed_[i]) return;
+    const Vec6 force = gather_contact_forces(i, arrays);
     kick_block(i, force);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   });
