@@ -72,6 +72,7 @@ template <class Prefetch, class Each>
       if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
     update_block_geometry(i, poly);
+    density_[i] = mass_[i] / moments_[i].area;  // mass is conserved: the density follows the strained area
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   });
   mine.left_skin = left_skin;
@@ -104,7 +105,13 @@ void Engine::prefetch_gather(int i) const {
 }
 
 void Engine::update_geometry() {
-  for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
+  // The blocks' geometry at t = 0, and their masses (set once: the moves
+  // conserve them, the density follows the strained area).
+  for (int i = 0; i < block_count(); ++i) {
+    update_block_geometry(i);
+    if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
+    density_[i] = mass_[i] / moments_[i].area;
+  }
 }
 
 void Engine::update_block_geometry(int i) { update_block_geometry(i, polygon_span(i)); }
@@ -152,9 +159,6 @@ void Engine::update_block_geometry(int i, PolygonSpan poly) {
       side.bisector_count = bisectors(side.poly, small, scene_.contact.small_edge_rays, own.get());
     }
   }
-  // Mass is conserved (set once, at t = 0): the density follows the strained area.
-  if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
-  density_[i] = mass_[i] / moments_[i].area;
 }
 
 void Engine::block_facts(int i) {
