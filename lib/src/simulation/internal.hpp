@@ -125,17 +125,14 @@ class Engine {
   void block_facts(int i);
   Vec6 body_force(int i) const;
   void gather_and_kick();
-  // The arrays gather_contact_forces reads (and the reach it writes), taken
-  // once per block loop: the kicks' stores could alias the vectors' members,
-  // which would be reloaded per block.
+  // The arrays gather_contact_forces reads, taken once per block loop: the
+  // kicks' stores could alias the vectors' members, which would be reloaded
+  // per block.
   struct GatherArrays {
     const int* offset;
     const int* pairs;
     const NearPair* near;
     const PairLoad* loads;
-    const double* radius;
-    const double* pair_radius;
-    double* reach;
   };
   GatherArrays gather_arrays();
   Vec6 gather_contact_forces(int i);
@@ -171,6 +168,7 @@ class Engine {
   // guards.cpp, penetration_guard.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
   GuardFault guard_fault(int i) const;
+  double reach_radius(int i) const;
   bool guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error);
   void check_state(bool energy_due);
   bool pair_guard_fault(int cp, int tp, const PairResult& r) const;
@@ -252,7 +250,17 @@ class Engine {
 
   // Guards.
   double min_inscribed_radius_ = 0.0;
-  std::vector<double> radius_, reach_radius_;  // inscribed radii at t = 0; per-step reach
+  std::vector<double> radius_;  // inscribed radii at t = 0
+  // Block i's reach (reach_radius(i), the step-motion guard's radius): the
+  // smallest radius_ of it and its candidates, found from the pairs'
+  // candidate flags when asked for; reach_radius_ holds a restored state's
+  // until the next step (reach_restored_), whose flags it does not have.
+  // near_radius_: per block, the smallest radius_ of it and all its near
+  // pairs (set_pair_radii), a lower bound of its reach whatever the
+  // candidates: the guard asks for the reach only when the motion exceeds
+  // the bound's limit.
+  std::vector<double> reach_radius_, near_radius_;
+  bool reach_restored_ = false;
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
   double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m
@@ -280,7 +288,7 @@ class Engine {
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
   std::vector<int> block_pairs_;
-  std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (gather's reach)
+  std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (reach_radius)
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).

@@ -223,7 +223,11 @@ void Engine::save_state(ByteWriter& w) const {
   put_list(w, mass_, value);
 
   // The guards' and the energy budget's accumulators.
-  put_list(w, reach_radius_, value);
+  {
+    std::vector<double> reach(static_cast<std::size_t>(block_count()));
+    for (int i = 0; i < block_count(); ++i) reach[static_cast<std::size_t>(i)] = reach_radius(i);
+    put_list(w, reach, value);
+  }
   w.f64(energy0_);
   w.f64(energy_scale_);
   w.f64(dropped_friction_work_);
@@ -352,6 +356,7 @@ void Engine::restore_state(ByteReader& r) {
   get_list(r, density_, n, "the densities", value);
   get_list(r, mass_, n, "the masses", value);
   get_list(r, reach_radius_, n, "the reach radii", value);
+  reach_restored_ = true;  // the next step's pair loop sets the candidates the reach is found from
   energy0_ = r.f64();
   energy_scale_ = r.f64();
   dropped_friction_work_ = r.f64();

@@ -23,6 +23,7 @@ void Engine::run_steps(std::int64_t count) {
   // SimulationError cannot leave the parallel region: it is caught where it
   // is thrown, every thread stops after that step, and it is rethrown here.
   if (count <= 0) return;
+  reach_restored_ = false;  // this step's candidates give the reach (reach_radius)
   const std::int64_t first = steps_;
   const int every = scene_.guards.energy_check_every;
   std::exception_ptr error;
@@ -74,13 +75,14 @@ void Engine::run_steps(std::int64_t count) {
 }
 
 void Engine::compute_forces() {
-  // Serial: the pairs' loads at the current state, and each block's reach
-  // (the constructor's a^0: kick and start_damping sum the blocks' forces).
+  // Serial: the pairs' loads at the current state, and with their candidate
+  // flags each block's reach (the constructor's a^0: kick and
+  // start_damping sum the blocks' forces).
   rebuild_near_pairs();
   if (thread_contacts_.empty()) thread_contacts_.resize(1);
   pair_forces(false);
+  reach_restored_ = false;
   merge_contacts();  // contact_forces.cpp: slots for the pairs in contact
-  for (int i = 0; i < block_count(); ++i) (void)gather_contact_forces(i);
   count_candidates();
 }
 
