@@ -358,6 +358,7 @@ struct Engine::PairHistory {
   Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
   Vec2 slide_dir{};       // sliding direction s of the last sliding step
   bool sliding = false;
+  double friction_tan = 0.0;  // friction_tan of its blocks, kept from its first contact (no table look-up per step)
 };
 
 // One touching pair's contact, computed independently of all others
@@ -383,7 +384,7 @@ struct Engine::PairResult {
 };
 
 // A touching pair's contact slot: its result and its friction history
-// (left fresh without friction), 80 + 40 = 120 B, two cache lines of its
+// (left fresh without friction), 80 + 48 = 128 B, two cache lines of its
 // own (128 B). Slots are handed out from a free list, so neighbouring slots
 // mostly belong to pairs of different threads of a team: with slots
 // sharing a line, every contact's write would take the line from the other

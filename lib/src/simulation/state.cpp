@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "dda/state_bytes.hpp"
+#include "simulation/friction.hpp"  // friction_tan
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -409,7 +410,9 @@ void Engine::restore_state(ByteReader& r) {
     ContactSlot s;
     s.result = {c.info.normal_force, c.info.tangential_force, c.info.ip_area, c.info.ip_length,
                 c.energy,           c.depth,                  c.depth_bound,  c.approach_energy};
-    if (friction_) s.history = {frictions[k].d, frictions[k].slide_dir, frictions[k].sliding};
+    if (friction_)
+      s.history = {frictions[k].d, frictions[k].slide_dir, frictions[k].sliding,
+                   friction_tan(near_pairs_[k].i, near_pairs_[k].j)};
     contact_slots_.push_back(s);
   }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);
