@@ -285,9 +285,7 @@ Engine::GuardFault Engine::guard_fault(int i) const {
 double Engine::reach_radius(int i) const {
   // The smallest inscribed radius within block i's reach: its own and its
   // candidates' (the pairs whose boxes overlapped at the last pair loop),
-  // each pair's the smaller of its blocks' (pair_radius_). A restored
-  // state's until the next step.
-  if (reach_restored_) return reach_radius_[static_cast<std::size_t>(i)];
+  // each pair's the smaller of its blocks' (pair_radius_).
   double reach = radius_[static_cast<std::size_t>(i)];
   for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
     const int k = block_pairs_[static_cast<std::size_t>(q)];

@@ -251,16 +251,13 @@ class Engine {
   // Guards.
   double min_inscribed_radius_ = 0.0;
   std::vector<double> radius_;  // inscribed radii at t = 0
-  // Block i's reach (reach_radius(i), the step-motion guard's radius): the
-  // smallest radius_ of it and its candidates, found from the pairs'
-  // candidate flags when asked for; reach_radius_ holds a restored state's
-  // until the next step (reach_restored_), whose flags it does not have.
-  // near_radius_: per block, the smallest radius_ of it and all its near
-  // pairs (set_pair_radii), a lower bound of its reach whatever the
-  // candidates: the guard asks for the reach only when the motion exceeds
-  // the bound's limit.
-  std::vector<double> reach_radius_, near_radius_;
-  bool reach_restored_ = false;
+  // Block i's reach (reach_radius(i), the step-motion guard's radius) is
+  // the smallest radius_ of it and its candidates, found from the pairs'
+  // candidate flags when asked for. near_radius_: per block, the smallest
+  // radius_ of it and all its near pairs (set_pair_radii), a lower bound of
+  // its reach whatever the candidates: the guard asks for the reach only
+  // when the motion exceeds the bound's limit.
+  std::vector<double> near_radius_;
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
   double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m

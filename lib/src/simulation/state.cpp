@@ -356,8 +356,11 @@ void Engine::restore_state(ByteReader& r) {
   get_list(r, stress_, n, "the stresses", value);
   get_list(r, density_, n, "the densities", value);
   get_list(r, mass_, n, "the masses", value);
-  get_list(r, reach_radius_, n, "the reach radii", value);
-  reach_restored_ = true;  // the next step's pair loop sets the candidates the reach is found from
+  {
+    // What reach_radius finds from the candidate flags restored below.
+    std::vector<double> reach;
+    get_list(r, reach, n, "the reach radii", value);
+  }
   energy0_ = r.f64();
   energy_scale_ = r.f64();
   dropped_friction_work_ = r.f64();

@@ -23,7 +23,6 @@ void Engine::run_steps(std::int64_t count) {
   // SimulationError cannot leave the parallel region: it is caught where it
   // is thrown, every thread stops after that step, and it is rethrown here.
   if (count <= 0) return;
-  reach_restored_ = false;  // this step's candidates give the reach (reach_radius)
   const std::int64_t first = steps_;
   const int every = scene_.guards.energy_check_every;
   std::exception_ptr error;
@@ -81,7 +80,6 @@ void Engine::compute_forces() {
   rebuild_near_pairs();
   if (thread_contacts_.empty()) thread_contacts_.resize(1);
   pair_forces(false);
-  reach_restored_ = false;
   merge_contacts();  // contact_forces.cpp: slots for the pairs in contact
   count_candidates();
 }
