@@ -176,6 +176,9 @@ void Engine::set_pair_radii() {
   // bound of its reach).
   pair_radius_.resize(near_pairs_.size());
   near_radius_ = radius_;
+  // And the pairs' active flags as the per-block sum reads them (pair_active_).
+  pair_active_.resize(near_pairs_.size());
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) pair_active_[k] = near_pairs_[k].active ? 1 : 0;
   for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
     const std::size_t i = static_cast<std::size_t>(near_pairs_[k].i), j = static_cast<std::size_t>(near_pairs_[k].j);
     pair_radius_[k] = std::min(radius_[i], radius_[j]);

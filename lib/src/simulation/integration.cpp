@@ -184,7 +184,7 @@ Vec6 Engine::body_force(int i) const {
 }
 
 Engine::GatherArrays Engine::gather_arrays() {
-  return {near_pair_offset_.data(), block_pairs_.data(), near_pairs_.data(), pair_loads_.data()};
+  return {near_pair_offset_.data(), block_pairs_.data(), pair_active_.data(), near_pairs_.data(), pair_loads_.data()};
 }
 
 Vec6 Engine::gather_contact_forces(int i) { return gather_contact_forces(i, gather_arrays()); }
@@ -207,8 +207,8 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
   detail::Lanes6 sum{{body[0], body[1]}, {body[2], body[3]}, {body[4], body[5]}};
   for (int q = a.offset[i], end = a.offset[i + 1]; q < end; ++q) {
     const int k = pairs[q];
+    if (a.active[k] != summed) continue;
     const NearPair& p = near[k];
-    if (p.active != summed) continue;
     const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     // A pair whose pg was kept within its IP carries the rest of Eq. 20's

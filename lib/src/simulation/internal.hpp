@@ -131,6 +131,7 @@ class Engine {
   struct GatherArrays {
     const int* offset;
     const int* pairs;
+    const unsigned char* active;
     const NearPair* near;
     const PairLoad* loads;
   };
@@ -286,6 +287,11 @@ class Engine {
   std::vector<int> near_pair_offset_;
   std::vector<int> block_pairs_;
   std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (reach_radius)
+  // Per near pair, NearPair::active once more, a byte each: what the
+  // per-block sum reads of every near pair, without its 16-byte record.
+  // Written with the flag (the pair loop; set_pair_radii after a rebuild
+  // or restore).
+  std::vector<unsigned char> pair_active_;
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).
