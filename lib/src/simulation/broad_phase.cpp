@@ -190,7 +190,9 @@ void Engine::set_pair_radii() {
 std::size_t Engine::bytes_per_near_pair() const {
   // A near pair's own state; a touching pair's contact slot is apart
   // (sizeof(ContactSlot): the result and the friction history).
-  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + sizeof(double) + (friction_ ? sizeof(double) : 0);
+  // (pair_active_'s byte is the pair's active flag once more.)
+  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + sizeof(double) + sizeof(unsigned char) +
+         (friction_ ? sizeof(double) : 0);
 }
 
 }  // namespace dda
