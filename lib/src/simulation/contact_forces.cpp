@@ -102,7 +102,7 @@ constexpr std::size_t kBornListRoom = 256;
     //  3. W itself, against the blocks' half-thicknesses along the normal.
     double fn = 0.0;  // |normal force|, taken when a tier past the first or the approach energy needs it
     if (g.max_penetration > 0.0) {
-      r.depth_bound = g.max_penetration * std::min(radius_[cp], radius_[tp]);
+      r.depth_bound = g.max_penetration * pair_radius_[static_cast<std::size_t>(k)];  // min(radius_[cp], radius_[tp])
       r.depth = kTwoPi * nf.ip_area / nf.ip_perimeter;
       if (!(r.depth <= r.depth_bound)) {
         fn = length(nf.force);
