@@ -69,8 +69,9 @@ template <int kN>
 // ay bx of the cross product). The area and centroid are green_centroid's
 // bits; for them alone the scalar loop is as short as the lanes. As in
 // green_centroid, the two edges at v[0] are left out (zero terms).
+// Inline in the block loop (polygon_geometry): no call per block and step.
 template <int kN = 0>
-AreaMoments green_moments(const Vec2* v, int n) {
+[[gnu::always_inline]] inline AreaMoments green_moments(const Vec2* v, int n) {
   using detail::high_lanes;
   using detail::lanes;
   using detail::low_lanes;

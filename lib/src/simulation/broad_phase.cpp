@@ -171,16 +171,28 @@ void Engine::rebuild_near_pairs() {
 
 void Engine::set_pair_radii() {
   // Each near pair's smaller inscribed radius (radius_, fixed at t = 0):
-  // what a candidate pair gives both its blocks' reach in gather.
+  // what a candidate pair gives both its blocks' reach (reach_radius); and
+  // each block's smallest over all its near pairs (near_radius_, a lower
+  // bound of its reach).
   pair_radius_.resize(near_pairs_.size());
-  for (std::size_t k = 0; k < near_pairs_.size(); ++k)
-    pair_radius_[k] = std::min(radius_[static_cast<std::size_t>(near_pairs_[k].i)], radius_[static_cast<std::size_t>(near_pairs_[k].j)]);
+  near_radius_ = radius_;
+  // And the pairs' active flags as the per-block sum reads them (pair_active_).
+  pair_active_.resize(near_pairs_.size());
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) pair_active_[k] = near_pairs_[k].active ? 1 : 0;
+  for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(near_pairs_[k].i), j = static_cast<std::size_t>(near_pairs_[k].j);
+    pair_radius_[k] = std::min(radius_[i], radius_[j]);
+    near_radius_[i] = std::min(near_radius_[i], pair_radius_[k]);
+    near_radius_[j] = std::min(near_radius_[j], pair_radius_[k]);
+  }
 }
 
 std::size_t Engine::bytes_per_near_pair() const {
   // A near pair's own state; a touching pair's contact slot is apart
   // (sizeof(ContactSlot): the result and the friction history).
-  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + sizeof(double) + (friction_ ? sizeof(double) : 0);
+  // (pair_active_'s byte is the pair's active flag once more.)
+  return sizeof(NearPair) + sizeof(PairLoad) + 2 * sizeof(int) + sizeof(double) + sizeof(unsigned char) +
+         (friction_ ? sizeof(double) : 0);
 }
 
 }  // namespace dda

@@ -102,7 +102,7 @@ constexpr std::size_t kBornListRoom = 256;
     //  3. W itself, against the blocks' half-thicknesses along the normal.
     double fn = 0.0;  // |normal force|, taken when a tier past the first or the approach energy needs it
     if (g.max_penetration > 0.0) {
-      r.depth_bound = g.max_penetration * std::min(radius_[cp], radius_[tp]);
+      r.depth_bound = g.max_penetration * pair_radius_[static_cast<std::size_t>(k)];  // min(radius_[cp], radius_[tp])
       r.depth = kTwoPi * nf.ip_area / nf.ip_perimeter;
       if (!(r.depth <= r.depth_bound)) {
         fn = length(nf.force);
@@ -148,6 +148,7 @@ void Engine::pair_forces(bool with_energy) {
   const long end = team > 1 ? pair_split_[static_cast<std::size_t>(t) + 1] : n;
   // The loop's arrays in locals: its stores could alias the vectors' members.
   NearPair* const near = near_pairs_.data();
+  unsigned char* const active = pair_active_.data();
   const Aabb* const boxes = boxes_.data();
   const BlockSide* const sides = sides_.data();
   const std::uint32_t* const sharp = sharp_corners_.data();
@@ -183,6 +184,7 @@ void Engine::pair_forces(bool with_energy) {
       // The flag is written only when set (most such pairs were apart).
       if (p.active) {
         p.active = false;
+        active[k] = 0;
         changed.ended.push_back(long{k});
       }
       continue;
@@ -200,9 +202,13 @@ void Engine::pair_forces(bool with_energy) {
     if (state != OverlapState::kOverlapping || ip.count < 3 ||
         !(r = pair_force(k, was_active, ip, source.data(), tol, pair_fault, changed))) {
       work += kWorkCandidate;
-      if (was_active) changed.ended.push_back(long{k});
+      if (was_active) {
+        active[k] = 0;
+        changed.ended.push_back(long{k});
+      }
       continue;
     }
+    active[k] = 1;  // p.active, set by pair_force
     work += kWorkTouching;
     // The penalty energy of the contact, as energy() computes it (the same
     // IP: the lines left out of the cut leave it unchanged).

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "simulation/friction.hpp"  // friction_tan
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -82,18 +83,30 @@ void Engine::settle() {
   start_energy_guard();  // damping only removes energy: the guard stays valid
   if (!(settle > 0.0)) return;
   std::vector<double> friction_tan;
+  // A touching pair keeps its blocks' tan phi from its first contact
+  // (PairHistory::friction_tan): each change of the table is given to them.
+  const auto retake_friction_tans = [&] {
+    for (std::size_t k = 0; k < near_pairs_.size(); ++k)
+      if (near_pairs_[k].slot >= 0)
+        contact_slots_[static_cast<std::size_t>(near_pairs_[k].slot)].history.friction_tan =
+            Engine::friction_tan(near_pairs_[k].i, near_pairs_[k].j);
+  };
   if (scene_.damping.settle_sticking) {
     // No friction limit while settling (an infinite tan phi: a contact's
     // normal force is never zero, so the limit is +inf, never NaN).
     friction_tan = friction_tan_table_;
     std::fill(friction_tan_table_.begin(), friction_tan_table_.end(), std::numeric_limits<double>::infinity());
+    retake_friction_tans();
   }
   // With settle_sticking, the last settle_slip_time of the settle runs
   // with the friction limits again (still damped).
   const double sticking_until = scene_.damping.settle_sticking ? settle - scene_.damping.settle_slip_time : settle;
   try {
     advance_to(sticking_until);
-    if (scene_.damping.settle_sticking) friction_tan_table_ = friction_tan;
+    if (scene_.damping.settle_sticking) {
+      friction_tan_table_ = friction_tan;
+      retake_friction_tans();
+    }
     advance_to(settle);
   } catch (const SimulationError& e) {
     SimulationError settling(std::string("while settling (damping.settle_time = ") + std::to_string(settle) +

@@ -43,13 +43,14 @@ inline double Engine::friction_tan(int a, int b) const {
     ft_last = last_ft;
   } else {
     hist = PairHistory{};
+    hist.friction_tan = friction_tan(cp, tp);
   }
   const double fn = length(nf.force);
   const Vec2 ng = nf.force / fn;
   const Vec2 dtan = hist.d - dot(hist.d, ng) * ng;
   const double lt = length(dtan);
   const Vec2 s = lt > 0.0 ? dtan / lt : Vec2{};
-  const double limit = fn * friction_tan(cp, tp);
+  const double limit = fn * hist.friction_tan;
   Vec2 ft{};
   if (c.friction_update == FrictionUpdate::kReturnMapping) {
     // Elastic-plastic Coulomb (not the paper's Eq. 26, see FrictionUpdate):

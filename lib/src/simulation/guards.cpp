@@ -120,7 +120,7 @@ void Engine::check_state(bool energy_due) {
         // Largest vertex motion of this step, |T(p) dd| at the vertices
         // (squared, recorded by move_blocks as it moved them).
         s << "a vertex moved " << std::sqrt(step_motion2_[i]) << " m in one step, more than "
-          << scene_.guards.max_step_motion << " of the smallest inscribed radius within reach (" << reach_radius_[i]
+          << scene_.guards.max_step_motion << " of the smallest inscribed radius within reach (" << reach_radius(i)
           << " m)";
         break;
     }

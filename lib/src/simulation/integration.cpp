@@ -72,6 +72,7 @@ template <class Prefetch, class Each>
       if (strains_) stress_[i] += elastic(i) * dd.tail<3>();
     }
     update_block_geometry(i, poly);
+    density_[i] = mass_[i] / moments_[i].area;  // mass is conserved: the density follows the strained area
     if (sweep && !inside(boxes_[i], skin_boxes_[i])) left_skin = true;
   });
   mine.left_skin = left_skin;
@@ -104,7 +105,13 @@ void Engine::prefetch_gather(int i) const {
 }
 
 void Engine::update_geometry() {
-  for (int i = 0; i < block_count(); ++i) update_block_geometry(i);
+  // The blocks' geometry at t = 0, and their masses (set once: the moves
+  // conserve them, the density follows the strained area).
+  for (int i = 0; i < block_count(); ++i) {
+    update_block_geometry(i);
+    if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
+    density_[i] = mass_[i] / moments_[i].area;
+  }
 }
 
 void Engine::update_block_geometry(int i) { update_block_geometry(i, polygon_span(i)); }
@@ -152,9 +159,6 @@ void Engine::update_block_geometry(int i, PolygonSpan poly) {
       side.bisector_count = bisectors(side.poly, small, scene_.contact.small_edge_rays, own.get());
     }
   }
-  // Mass is conserved (set once, at t = 0): the density follows the strained area.
-  if (mass_[i] == 0.0) mass_[i] = density_[i] * moments_[i].area;
-  density_[i] = mass_[i] / moments_[i].area;
 }
 
 void Engine::block_facts(int i) {
@@ -180,8 +184,7 @@ Vec6 Engine::body_force(int i) const {
 }
 
 Engine::GatherArrays Engine::gather_arrays() {
-  return {near_pair_offset_.data(), block_pairs_.data(), near_pairs_.data(),
-          pair_loads_.data(),       radius_.data(),      pair_radius_.data(), reach_radius_.data()};
+  return {near_pair_offset_.data(), block_pairs_.data(), pair_active_.data(), near_pairs_.data(), pair_loads_.data()};
 }
 
 Vec6 Engine::gather_contact_forces(int i) { return gather_contact_forces(i, gather_arrays()); }
@@ -189,31 +192,23 @@ Vec6 Engine::gather_contact_forces(int i) { return gather_contact_forces(i, gath
 Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
   // Block i's force F^{n+1}: its body force, then its contact forces, Eqs.
   // 22-23 and 28-29 through T(pg)^T, added in increasing pair order (the
-  // same bits for any thread count); and the
-  // smallest inscribed radius within its reach (itself and its candidates)
-  // for the step-motion guard. The sum is kept in lanes (point_load_lanes)
-  // and the arrays in locals (a): the force's stores could alias them.
+  // same bits for any thread count). The sum is kept in lanes
+  // (point_load_lanes) and the arrays in locals (a): the force's stores
+  // could alias them.
   const int* pairs = a.pairs;
   const NearPair* near = a.near;
   const PairLoad* loads = a.loads;
-  const double* radius = a.radius;
-  double reach = radius[i];
   const detail::Lanes c = detail::lanes(moments_[i].centroid);
   // The value of p.active a pair summed here has: 1 (active) for a free
   // block, 2 (never: a bool) for a fixed one, whose sum stays its body
-  // force. One compare per candidate.
+  // force. One compare per near pair (a touching pair is a candidate).
   const int summed = fixed_[i] ? 2 : 1;
   const Vec6 body = body_force(i);
   detail::Lanes6 sum{{body[0], body[1]}, {body[2], body[3]}, {body[4], body[5]}};
   for (int q = a.offset[i], end = a.offset[i + 1]; q < end; ++q) {
     const int k = pairs[q];
+    if (a.active[k] != summed) continue;
     const NearPair& p = near[k];
-    if (!p.candidate) continue;
-    // The pair's smaller radius (pair_radius_): reach already holds block
-    // i's, so the other block's is the same minimum (the operands in
-    // minsd's order: reach is kept in its register).
-    reach = std::min(a.pair_radius[k], reach);
-    if (p.active != summed) continue;
     const PairLoad& load = loads[k];
     detail::Lanes6 g = detail::point_load_lanes(c, load.point, load.force);
     // A pair whose pg was kept within its IP carries the rest of Eq. 20's
@@ -231,15 +226,16 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
       sum.g45 -= g.g45;
     }
   }
-  a.reach[i] = reach;
   Vec6 force;
   force << sum.g01[0], sum.g01[1], sum.g23[0], sum.g23[1], sum.g45[0], sum.g45[1];
   return force;
 }
 
 [[gnu::flatten]] void Engine::gather_and_kick() {
-  // Per block: its contact forces, a^{n+1}, the second half kick, and the
-  // per-block guards (flagged here, reported by check_state).
+  // Per free block: its contact forces, a^{n+1}, the second half kick, and
+  // the per-block guards (flagged here, reported by check_state). A fixed
+  // block is skipped: no kick and no guard reads its sum, and a boundary
+  // block has many near pairs.
   bool failed = false;
   // Thread 0 first gives the pairs that began to touch their contact
   // slots (contact_forces.cpp): this phase reads only the pairs' loads.
@@ -247,8 +243,8 @@ Vec6 Engine::gather_contact_forces(int i, const GatherArrays& a) {
   ThreadFlags& mine = flags_[static_cast<std::size_t>(thread_index())];
   const GatherArrays arrays = gather_arrays();
   const double per_block = over_block_share(mine, [&](int i) { prefetch_gather(i); }, [&](int i) __attribute__((always_inline)) {
-    const Vec6 force = gather_contact_forces(i, arrays);
     if (fixed_[i]) return;
+    const Vec6 force = gather_contact_forces(i, arrays);
     kick_block(i, force);
     if (guard_fault(i) != GuardFault::kNone) failed = true;
   });
@@ -276,9 +272,26 @@ Engine::GuardFault Engine::guard_fault(int i) const {
   const bool finite = sum[0] + sum[1] == 0.0;
   if (!finite) return GuardFault::kNonFinite;
   if (!(moments_[i].area > 0.0)) return GuardFault::kAreaCollapsed;
-  const double motion_limit = scene_.guards.max_step_motion * reach_radius_[i];
+  // First against the limit of near_radius_ (<= the reach: a limit no
+  // larger, |max_step_motion| r squared growing with r), which a block
+  // mostly passes; only above it the reach itself (the same verdict).
+  const double bound_limit = scene_.guards.max_step_motion * near_radius_[i];
+  if (!(step_motion2_[i] > bound_limit * bound_limit)) return GuardFault::kNone;
+  const double motion_limit = scene_.guards.max_step_motion * reach_radius(i);
   if (step_motion2_[i] > motion_limit * motion_limit) return GuardFault::kStepMotion;
   return GuardFault::kNone;
+}
+
+double Engine::reach_radius(int i) const {
+  // The smallest inscribed radius within block i's reach: its own and its
+  // candidates' (the pairs whose boxes overlapped at the last pair loop),
+  // each pair's the smaller of its blocks' (pair_radius_).
+  double reach = radius_[static_cast<std::size_t>(i)];
+  for (int q = near_pair_offset_[static_cast<std::size_t>(i)]; q < near_pair_offset_[static_cast<std::size_t>(i) + 1]; ++q) {
+    const int k = block_pairs_[static_cast<std::size_t>(q)];
+    if (near_pairs_[static_cast<std::size_t>(k)].candidate) reach = std::min(pair_radius_[static_cast<std::size_t>(k)], reach);
+  }
+  return reach;
 }
 
 Vec6 Engine::force_acceleration(int i, const Vec6& f) const {

@@ -125,17 +125,15 @@ class Engine {
   void block_facts(int i);
   Vec6 body_force(int i) const;
   void gather_and_kick();
-  // The arrays gather_contact_forces reads (and the reach it writes), taken
-  // once per block loop: the kicks' stores could alias the vectors' members,
-  // which would be reloaded per block.
+  // The arrays gather_contact_forces reads, taken once per block loop: the
+  // kicks' stores could alias the vectors' members, which would be reloaded
+  // per block.
   struct GatherArrays {
     const int* offset;
     const int* pairs;
+    const unsigned char* active;
     const NearPair* near;
     const PairLoad* loads;
-    const double* radius;
-    const double* pair_radius;
-    double* reach;
   };
   GatherArrays gather_arrays();
   Vec6 gather_contact_forces(int i);
@@ -171,6 +169,7 @@ class Engine {
   // guards.cpp, penetration_guard.cpp
   enum class GuardFault { kNone, kNonFinite, kAreaCollapsed, kStepMotion };
   GuardFault guard_fault(int i) const;
+  double reach_radius(int i) const;
   bool guards_stop(std::int64_t done, bool energy_due, std::exception_ptr& error);
   void check_state(bool energy_due);
   bool pair_guard_fault(int cp, int tp, const PairResult& r) const;
@@ -252,7 +251,14 @@ class Engine {
 
   // Guards.
   double min_inscribed_radius_ = 0.0;
-  std::vector<double> radius_, reach_radius_;  // inscribed radii at t = 0; per-step reach
+  std::vector<double> radius_;  // inscribed radii at t = 0
+  // Block i's reach (reach_radius(i), the step-motion guard's radius) is
+  // the smallest radius_ of it and its candidates, found from the pairs'
+  // candidate flags when asked for. near_radius_: per block, the smallest
+  // radius_ of it and all its near pairs (set_pair_radii), a lower bound of
+  // its reach whatever the candidates: the guard asks for the reach only
+  // when the motion exceeds the bound's limit.
+  std::vector<double> near_radius_;
   double dt_crit_prior_ = 0.0;
   double energy0_ = 0.0, energy_scale_ = 0.0;
   double dropped_friction_work_ = 0.0;  // friction work of the pairs that left the near list, J/m
@@ -280,7 +286,12 @@ class Engine {
   std::vector<ThreadContacts> thread_contacts_;  // per thread of the team
   std::vector<int> near_pair_offset_;
   std::vector<int> block_pairs_;
-  std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (gather's reach)
+  std::vector<double> pair_radius_;  // per near pair, the smaller radius_ of its blocks (reach_radius)
+  // Per near pair, NearPair::active once more, a byte each: what the
+  // per-block sum reads of every near pair, without its 16-byte record.
+  // Written with the flag (the pair loop; set_pair_radii after a rebuild
+  // or restore).
+  std::vector<unsigned char> pair_active_;
   std::size_t candidate_count_ = 0;
 
   // The thread team (team.cpp).
@@ -350,6 +361,7 @@ struct Engine::PairHistory {
   Vec2 d{};               // accumulated relative displacement of CP w.r.t. TP
   Vec2 slide_dir{};       // sliding direction s of the last sliding step
   bool sliding = false;
+  double friction_tan = 0.0;  // friction_tan of its blocks, kept from its first contact (no table look-up per step)
 };
 
 // One touching pair's contact, computed independently of all others
@@ -375,7 +387,7 @@ struct Engine::PairResult {
 };
 
 // A touching pair's contact slot: its result and its friction history
-// (left fresh without friction), 80 + 40 = 120 B, two cache lines of its
+// (left fresh without friction), 80 + 48 = 128 B, two cache lines of its
 // own (128 B). Slots are handed out from a free list, so neighbouring slots
 // mostly belong to pairs of different threads of a team: with slots
 // sharing a line, every contact's write would take the line from the other

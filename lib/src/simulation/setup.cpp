@@ -236,7 +236,6 @@ void Engine::build_blocks(const std::vector<BlockSpec>& blocks) {
   density_.assign(n, 0.0);
   mass_.assign(n, 0.0);
   radius_.assign(n, 0.0);
-  reach_radius_.assign(n, 0.0);
   h_.assign(n, 0.0);
   const int boundary_elastic = static_cast<int>(scene_.materials.size());
   elastic_table_.assign(scene_.materials.size() + 1, Mat3::Zero());

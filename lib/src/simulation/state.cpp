@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "dda/state_bytes.hpp"
+#include "simulation/friction.hpp"  // friction_tan
 #include "simulation/internal.hpp"
 
 namespace dda {
@@ -223,7 +224,11 @@ void Engine::save_state(ByteWriter& w) const {
   put_list(w, mass_, value);
 
   // The guards' and the energy budget's accumulators.
-  put_list(w, reach_radius_, value);
+  {
+    std::vector<double> reach(static_cast<std::size_t>(block_count()));
+    for (int i = 0; i < block_count(); ++i) reach[static_cast<std::size_t>(i)] = reach_radius(i);
+    put_list(w, reach, value);
+  }
   w.f64(energy0_);
   w.f64(energy_scale_);
   w.f64(dropped_friction_work_);
@@ -351,7 +356,11 @@ void Engine::restore_state(ByteReader& r) {
   get_list(r, stress_, n, "the stresses", value);
   get_list(r, density_, n, "the densities", value);
   get_list(r, mass_, n, "the masses", value);
-  get_list(r, reach_radius_, n, "the reach radii", value);
+  {
+    // What reach_radius finds from the candidate flags restored below.
+    std::vector<double> reach;
+    get_list(r, reach, n, "the reach radii", value);
+  }
   energy0_ = r.f64();
   energy_scale_ = r.f64();
   dropped_friction_work_ = r.f64();
@@ -404,7 +413,9 @@ void Engine::restore_state(ByteReader& r) {
     ContactSlot s;
     s.result = {c.info.normal_force, c.info.tangential_force, c.info.ip_area, c.info.ip_length,
                 c.energy,           c.depth,                  c.depth_bound,  c.approach_energy};
-    if (friction_) s.history = {frictions[k].d, frictions[k].slide_dir, frictions[k].sliding};
+    if (friction_)
+      s.history = {frictions[k].d, frictions[k].slide_dir, frictions[k].sliding,
+                   friction_tan(near_pairs_[k].i, near_pairs_[k].j)};
     contact_slots_.push_back(s);
   }
   get_list(r, near_pair_offset_, n + 1, "the block pair offsets", value);

@@ -74,13 +74,13 @@ void Engine::run_steps(std::int64_t count) {
 }
 
 void Engine::compute_forces() {
-  // Serial: the pairs' loads at the current state, and each block's reach
-  // (the constructor's a^0: kick and start_damping sum the blocks' forces).
+  // Serial: the pairs' loads at the current state, and with their candidate
+  // flags each block's reach (the constructor's a^0: kick and
+  // start_damping sum the blocks' forces).
   rebuild_near_pairs();
   if (thread_contacts_.empty()) thread_contacts_.resize(1);
   pair_forces(false);
   merge_contacts();  // contact_forces.cpp: slots for the pairs in contact
-  for (int i = 0; i < block_count(); ++i) (void)gather_contact_forces(i);
   count_candidates();
 }
 
