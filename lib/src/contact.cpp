@@ -120,20 +120,9 @@ inline const LaneConstants* lane_constants() {
 #endif
   return k;
 }
-// lane_min({DBL_MAX, DBL_MAX}, d), a fold's first step, with the start
-// read from kc->max as minpd's memory operand (GCC would keep it in a
-// register for the whole edge, which the rest of the edge's work then
-// lacks). The same selection, d < DBL_MAX ? d : DBL_MAX lane by lane.
-inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
-#if defined(__SSE2__) && defined(__GNUC__)
-  asm("minpd %1, %0" : "+x"(d) : "m"(*reinterpret_cast<const Lanes*>(kc->max)));
-  return d;
-#else
-  return detail::lane_min(Lanes{kc->max[0], kc->max[1]}, d);
-#endif
-}
 // -v lane by lane (v with kc->sign's bit flipped), the sign read as
-// xorpd's memory operand, as in min_from_max.
+// xorpd's memory operand (GCC would keep the constant in a register for
+// the whole edge, which the rest of the edge's work then lacks).
 inline Lanes negated(const LaneConstants* kc, Lanes v) {
 #if defined(__SSE2__) && defined(__GNUC__)
   asm("xorpd %1, %0" : "+x"(v) : "m"(*reinterpret_cast<const Lanes*>(kc->sign)));
@@ -604,13 +593,16 @@ template <int kN, bool kMinus>
       s[p] = negated(kc, nx * abx + ny * aby);                                // -dot(n, ab)
     }
   }
-  // The lane by lane minimum of value(p) over the pairs p, folded from
-  // DBL_MAX as EdgeLines does; with the count known, its first step is
-  // min_from_max.
+  // The lane by lane minimum of value(p) over the pairs p, folded as
+  // EdgeLines does (d_i < d ? d_i : d from DBL_MAX). With the count known
+  // (two pairs or more), the fold starts from pair 0 itself: the first
+  // step from DBL_MAX returns a finite d_0 unchanged, so for finite
+  // distances the same values in the same order give the same bits (an
+  // infinite or NaN d_0 would be kept where DBL_MAX's step replaces it).
   const auto fold_pairs = [&](auto&& value) {
     if constexpr (kN > 0) {
-      Lanes d = min_from_max(kc, value(0));
-      for (int p = 1; p < pairs; ++p) d = lane_min(d, value(p));
+      Lanes d = lane_min(value(0), value(1));
+      for (int p = 2; p < pairs; ++p) d = lane_min(d, value(p));
       return d;
     } else {
       Lanes d = load(kc->max);
