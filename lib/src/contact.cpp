@@ -390,8 +390,16 @@ template <int kN, bool kMinus>
   const LaneConstants* const kc = lane_constants();
   const auto at = [&](double t) {
     const Lanes tt = {t, t};
-    Lanes d = load(kc->max);
-    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    // With the count known, folded from pair 0 as paper_side_edge's
+    // fold_pairs (the same bits for finite distances).
+    Lanes d;
+    if constexpr (kN >= 3) {
+      d = lane_min(c[0] + s[0] * tt, c[1] + s[1] * tt);
+      for (int p = 2; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    } else {
+      d = load(kc->max);
+      for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    }
     return across_min(d);
   };
   const auto traction = [k](double d) {
