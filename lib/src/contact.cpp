@@ -354,7 +354,7 @@ template <bool kMinus>
   cr.sort();
   auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
-    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+    return kMinus ? 0.0 - k * d : k * d;
   };
   const double f_start = zero_start ? 0.0 : traction(lines.at_start());
   const double f_end = zero_end ? 0.0 : traction(lines.at_end());
@@ -404,7 +404,7 @@ template <int kN, bool kMinus>
   };
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
-    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+    return kMinus ? 0.0 - k * d : k * d;
   };
   const double f_mid = traction(mid);
   // The crossings strictly inside (0, 1), in ray order (Crossings::add's
@@ -626,9 +626,11 @@ template <int kN, bool kMinus>
     mid = fold_at(load(kc->half));
     if (mid <= tol) return false;
   }
+  // +k d or -k d for d > 0 (k = kn / H >= +0): k d is then never -0, so
+  // 0.0 + k d would be k d itself; 0.0 - k d is +0 where -(k d) is -0.
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
-    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+    return kMinus ? 0.0 - k * d : k * d;
   };
   // d_exit at the ends (at_start's and at_end's folds) and the lines that
   // attain it there.
