@@ -120,20 +120,9 @@ inline const LaneConstants* lane_constants() {
 #endif
   return k;
 }
-// lane_min({DBL_MAX, DBL_MAX}, d), a fold's first step, with the start
-// read from kc->max as minpd's memory operand (GCC would keep it in a
-// register for the whole edge, which the rest of the edge's work then
-// lacks). The same selection, d < DBL_MAX ? d : DBL_MAX lane by lane.
-inline Lanes min_from_max(const LaneConstants* kc, Lanes d) {
-#if defined(__SSE2__) && defined(__GNUC__)
-  asm("minpd %1, %0" : "+x"(d) : "m"(*reinterpret_cast<const Lanes*>(kc->max)));
-  return d;
-#else
-  return detail::lane_min(Lanes{kc->max[0], kc->max[1]}, d);
-#endif
-}
 // -v lane by lane (v with kc->sign's bit flipped), the sign read as
-// xorpd's memory operand, as in min_from_max.
+// xorpd's memory operand (GCC would keep the constant in a register for
+// the whole edge, which the rest of the edge's work then lacks).
 inline Lanes negated(const LaneConstants* kc, Lanes v) {
 #if defined(__SSE2__) && defined(__GNUC__)
   asm("xorpd %1, %0" : "+x"(v) : "m"(*reinterpret_cast<const Lanes*>(kc->sign)));
@@ -365,7 +354,7 @@ template <bool kMinus>
   cr.sort();
   auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
-    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+    return kMinus ? 0.0 - k * d : k * d;
   };
   const double f_start = zero_start ? 0.0 : traction(lines.at_start());
   const double f_end = zero_end ? 0.0 : traction(lines.at_end());
@@ -401,13 +390,21 @@ template <int kN, bool kMinus>
   const LaneConstants* const kc = lane_constants();
   const auto at = [&](double t) {
     const Lanes tt = {t, t};
-    Lanes d = load(kc->max);
-    for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    // With the count known, folded from pair 0 as paper_side_edge's
+    // fold_pairs (the same bits for finite distances).
+    Lanes d;
+    if constexpr (kN >= 3) {
+      d = lane_min(c[0] + s[0] * tt, c[1] + s[1] * tt);
+      for (int p = 2; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    } else {
+      d = load(kc->max);
+      for (int p = 0; p < pairs; ++p) d = lane_min(d, c[p] + s[p] * tt);
+    }
     return across_min(d);
   };
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
-    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+    return kMinus ? 0.0 - k * d : k * d;
   };
   const double f_mid = traction(mid);
   // The crossings strictly inside (0, 1), in ray order (Crossings::add's
@@ -604,13 +601,16 @@ template <int kN, bool kMinus>
       s[p] = negated(kc, nx * abx + ny * aby);                                // -dot(n, ab)
     }
   }
-  // The lane by lane minimum of value(p) over the pairs p, folded from
-  // DBL_MAX as EdgeLines does; with the count known, its first step is
-  // min_from_max.
+  // The lane by lane minimum of value(p) over the pairs p, folded as
+  // EdgeLines does (d_i < d ? d_i : d from DBL_MAX). With the count known
+  // (two pairs or more), the fold starts from pair 0 itself: the first
+  // step from DBL_MAX returns a finite d_0 unchanged, so for finite
+  // distances the same values in the same order give the same bits (an
+  // infinite or NaN d_0 would be kept where DBL_MAX's step replaces it).
   const auto fold_pairs = [&](auto&& value) {
     if constexpr (kN > 0) {
-      Lanes d = min_from_max(kc, value(0));
-      for (int p = 1; p < pairs; ++p) d = lane_min(d, value(p));
+      Lanes d = lane_min(value(0), value(1));
+      for (int p = 2; p < pairs; ++p) d = lane_min(d, value(p));
       return d;
     } else {
       Lanes d = load(kc->max);
@@ -626,9 +626,11 @@ template <int kN, bool kMinus>
     mid = fold_at(load(kc->half));
     if (mid <= tol) return false;
   }
+  // +k d or -k d for d > 0 (k = kn / H >= +0): k d is then never -0, so
+  // 0.0 + k d would be k d itself; 0.0 - k d is +0 where -(k d) is -0.
   const auto traction = [k](double d) {
     if (!(d > 0.0)) return 0.0;
-    return kMinus ? 0.0 - k * d : 0.0 + k * d;
+    return kMinus ? 0.0 - k * d : k * d;
   };
   // d_exit at the ends (at_start's and at_end's folds) and the lines that
   // attain it there.
@@ -1161,8 +1163,24 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
       // A region wholly on the kept side (every d <= 0) is what clip_ring
       // would copy, one wholly beyond (every d > 0) what it would empty:
       // neither is cut (mostly the case, an IP being small beside its block).
-      bool inside = true, outside = true;
-      for (int k = 0; k < count; ++k) {
+      // Two vertices at a time in lanes (the same operations, lane by lane),
+      // an odd count's last alone.
+      using detail::Lanes;
+      using detail::LaneMask;
+      const Lanes nl = detail::lanes(normal), off = {offset, offset}, snap_lanes = {snap, snap}, zero = {0.0, 0.0};
+      const LaneMask magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
+      LaneMask on_kept = ~LaneMask{}, beyond = ~LaneMask{};
+      int k = 0;
+      for (; k + 1 < count; k += 2) {
+        const Lanes p0 = nl * detail::lanes(cell[k]), p1 = nl * detail::lanes(cell[k + 1]);
+        Lanes dk = (detail::low_lanes(p0, p1) + detail::high_lanes(p0, p1)) - off;
+        dk = (Lanes)(~((Lanes)((LaneMask)dk & magnitude) <= snap_lanes) & (LaneMask)dk);
+        std::memcpy(d.data() + k, &dk, sizeof dk);
+        on_kept &= dk <= zero;
+        beyond &= dk > zero;
+      }
+      bool inside = detail::lane_bits(on_kept) == 3u, outside = detail::lane_bits(beyond) == 3u;
+      if (k < count) {
         double dk = dot(normal, cell[k]) - offset;
         if (std::fabs(dk) <= snap) dk = 0.0;
         d[static_cast<std::size_t>(k)] = dk;
@@ -1180,7 +1198,11 @@ double potential_integral(const PotentialSide& side, const Polygon& region, doub
       next = 1 - next;
     }
     if (count < 3) continue;
-    const AreaMoments m = area_centroid(cell, count);
+    // area_centroid, inline for the common triangles and quadrilaterals
+    // (the same template: the same bits).
+    const AreaMoments m = count == 3   ? detail::green_centroid<3>(cell, 3)
+                          : count == 4 ? detail::green_centroid<4>(cell, 4)
+                                       : area_centroid(cell, count);
     const double dc = dot(ni, p.vertex(i) - m.centroid);
     total += m.area * side.kn_over_h * std::max(dc, 0.0);
   }
