@@ -531,10 +531,12 @@ struct ClipRing {
 // (bevel_and_finish), if any. The last ring goes to `result` in one pass
 // with its normals and sources, which also runs clean_ring's test; only a
 // ring that has a vertex to remove (rare) is then cleaned (clean_result).
-// Out of line: OverlapAndClip::run inlines all else it calls, and one copy
-// of the clipper serves every pair of counts.
-[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
-                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
+// Inline in OverlapAndClip::run for the common pairs of triangles to
+// pentagons (no call frame, no arguments spilled across a call); the rest
+// share one out-of-line copy, clip_target.
+[[gnu::always_inline]] inline void clip_target_inline(const PolygonView& contact, const PolygonView& target,
+                                                       double tol, std::uint32_t lines, std::uint32_t sharp,
+                                                       Polygon& result, IpEdge* source) {
   static thread_local ClipRing rings[2];
   // The target's own edges label themselves: label j for edge j.
   static constexpr std::array<int, kMaxVertices> target_label = [] {
@@ -577,6 +579,13 @@ struct ClipRing {
   finish_ring(in, in_label, in_count, contact, target, tol, result, source);
 }
 
+// clip_target_inline out of line: pairs with a count of 6 or more, and
+// intersection_polygon.
+[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
+                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
+  clip_target_inline(contact, target, tol, lines, sharp, result, source);
+}
+
 // overlap_and_intersection for the vertex counts kA, kB (0: read them):
 // the overlap test and, when the polygons overlap, the cut by the lines it
 // found cutting. Flattened, so that the test runs in this call frame with
@@ -605,7 +614,11 @@ struct OverlapAndClip {
     // e.g. a needle's tip deep in a block far from the origin, whose
     // vertices clean_ring merges): then the pair is touching, with no
     // intersection polygon and no contact force.
-    clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
+    // The clipper inline for the pairs of triangles to pentagons.
+    if (kA != 0 && kA <= 5 && kB <= 5)
+      clip_target_inline(contact, target, tol, lines, facts.contact_sharp, ip, source);
+    else
+      clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
     if (ip.count >= 3) return OverlapState::kOverlapping;
     ip.count = 0;
     return OverlapState::kTouching;
