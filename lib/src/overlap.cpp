@@ -531,9 +531,9 @@ struct ClipRing {
 // (bevel_and_finish), if any. The last ring goes to `result` in one pass
 // with its normals and sources, which also runs clean_ring's test; only a
 // ring that has a vertex to remove (rare) is then cleaned (clean_result).
-// Inline in OverlapAndClip::run for the common pairs of triangles to
-// pentagons (no call frame, no arguments spilled across a call); the rest
-// share one out-of-line copy, clip_target.
+// Inline in OverlapAndClip::run for the pairs of counts known at compile
+// time (3 to 8: no call frame, no arguments spilled across a call); the
+// rest share one out-of-line copy, clip_target.
 [[gnu::always_inline]] inline void clip_target_inline(const PolygonView& contact, const PolygonView& target,
                                                        double tol, std::uint32_t lines, std::uint32_t sharp,
                                                        Polygon& result, IpEdge* source) {
@@ -579,7 +579,7 @@ struct ClipRing {
   finish_ring(in, in_label, in_count, contact, target, tol, result, source);
 }
 
-// clip_target_inline out of line: pairs with a count of 6 or more, and
+// clip_target_inline out of line: pairs with a count above 8, and
 // intersection_polygon.
 [[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
                                    std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
@@ -614,8 +614,8 @@ struct OverlapAndClip {
     // e.g. a needle's tip deep in a block far from the origin, whose
     // vertices clean_ring merges): then the pair is touching, with no
     // intersection polygon and no contact force.
-    // The clipper inline for the pairs of triangles to pentagons.
-    if (kA != 0 && kA <= 5 && kB <= 5)
+    // The clipper inline for the counts known at compile time.
+    if (kA != 0)
       clip_target_inline(contact, target, tol, lines, facts.contact_sharp, ip, source);
     else
       clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
