@@ -425,7 +425,10 @@ struct ClipRing {
 
 // clip_target's end on its last ring in[0..n) (labels in_label, no
 // kMixedEdgeLabel): emit_ring, then cleaning only if a vertex is
-// removable; no IP when fewer than 3 vertices are left.
+// removable; no IP when fewer than 3 vertices are left. kPentagons:
+// pentagons inline too (measured: fewer instructions for the pairs of
+// equal counts, more for those of a quadrilateral and a pentagon).
+template <bool kPentagons>
 [[gnu::always_inline]] inline void finish_ring(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
                                                const PolygonView& target, double tol, Polygon& result,
                                                IpEdge* source) {
@@ -433,12 +436,12 @@ struct ClipRing {
     result.count = 0;
     return;
   }
+  // The counts by their frequency: triangles, quadrilaterals, pentagons.
   bool clean = false;
-  switch (n) {
-    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
-    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: finish_ring_wide(in, in_label, n, contact, target, tol, result, source); return;
-  }
+  if (n == 3) clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source);
+  else if (n == 4) clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source);
+  else if (kPentagons && n == 5) clean = emit_ring<5>(in, in_label, 5, contact, target, tol, result, source);
+  else return finish_ring_wide(in, in_label, n, contact, target, tol, result, source);
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
@@ -508,7 +511,7 @@ struct ClipRing {
     std::swap(out_ring, spare_ring);
   }
   if (in_count < 3 || !bevelled) {
-    finish_ring(in, in_label, in_count, contact, target, tol, result, source);
+    finish_ring<false>(in, in_label, in_count, contact, target, tol, result, source);
     return;
   }
   for (int i = 0; i < in_count; ++i) result.v[static_cast<std::size_t>(i)] = in[i];
@@ -533,7 +536,8 @@ struct ClipRing {
 // ring that has a vertex to remove (rare) is then cleaned (clean_result).
 // Inline in OverlapAndClip::run for the pairs of counts known at compile
 // time (3 to 8: no call frame, no arguments spilled across a call); the
-// rest share one out-of-line copy, clip_target.
+// rest share one out-of-line copy, clip_target. kPentagons as finish_ring's.
+template <bool kPentagons = false>
 [[gnu::always_inline]] inline void clip_target_inline(const PolygonView& contact, const PolygonView& target,
                                                        double tol, std::uint32_t lines, std::uint32_t sharp,
                                                        Polygon& result, IpEdge* source) {
@@ -576,7 +580,7 @@ struct ClipRing {
     bevel_and_finish(contact, target, tol, sharp, in, in_label, in_count, out_ring, spare_ring, result, source);
     return;
   }
-  finish_ring(in, in_label, in_count, contact, target, tol, result, source);
+  finish_ring<kPentagons>(in, in_label, in_count, contact, target, tol, result, source);
 }
 
 // clip_target_inline out of line: pairs with a count above 8, and
@@ -616,7 +620,7 @@ struct OverlapAndClip {
     // intersection polygon and no contact force.
     // The clipper inline for the counts known at compile time.
     if (kA != 0)
-      clip_target_inline(contact, target, tol, lines, facts.contact_sharp, ip, source);
+      clip_target_inline<kA == kB>(contact, target, tol, lines, facts.contact_sharp, ip, source);
     else
       clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
     if (ip.count >= 3) return OverlapState::kOverlapping;
