@@ -405,7 +405,15 @@ template <int kN>
 // clip_target's scratch: a ring of vertices and their edge labels.
 struct ClipRing {
   std::array<Vec2, kMaxVertices> v;
-  std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
+  std::array<int, kMaxVertices> label;
+};
+
+// clip_target's two rings on its stack, left uninitialised (a ClipRing
+// would zero its Vec2s on every call): every element is written before it
+// is read.
+union ClipRings {
+  ClipRings() {}
+  ClipRing ring[2];
 };
 
 // finish_ring's end for a ring of more than four vertices, apart (as
@@ -524,10 +532,9 @@ template <bool kPentagons>
 // edge labels; normals taken from the labelled source edges. Two rings
 // (vertices and labels), ping-ponged by swapping their pointers: each cut
 // of a convex polygon by a half-plane adds at most one vertex, so n + m
-// fits in kMaxVertices. The rings are thread-local scratch, as a local ring
-// would be zeroed on every call (Vec2 zero-initialises); one pointer per
-// ring, rather than a buffer index, keeps the loop's addresses in
-// registers. The first input is the target itself, and a line that leaves
+// fits in kMaxVertices. The rings are uninitialised stack scratch
+// (ClipRings); one pointer per ring, rather than a buffer index, keeps the
+// loop's addresses in registers. The first input is the target itself, and a line that leaves
 // every vertex inside (the usual case: a shallow contact is cut by one or
 // two of the contact polygon's edge lines) costs one distance per vertex
 // and no copy. Then the bevels at the contact's sharp corners
@@ -541,7 +548,7 @@ template <bool kPentagons = false>
 [[gnu::always_inline]] inline void clip_target_inline(const PolygonView& contact, const PolygonView& target,
                                                        double tol, std::uint32_t lines, std::uint32_t sharp,
                                                        Polygon& result, IpEdge* source) {
-  static thread_local ClipRing rings[2];
+  ClipRings rings;
   // The target's own edges label themselves: label j for edge j.
   static constexpr std::array<int, kMaxVertices> target_label = [] {
     std::array<int, kMaxVertices> l{};
@@ -551,8 +558,8 @@ template <bool kPentagons = false>
   const Vec2* in = target.v;
   const int* in_label = target_label.data();
   int in_count = target.count;
-  ClipRing* out_ring = &rings[0];
-  ClipRing* spare_ring = &rings[1];
+  ClipRing* out_ring = &rings.ring[0];
+  ClipRing* spare_ring = &rings.ring[1];
   // Only the lines whose bit is set, in increasing order, while 3 vertices
   // are left.
   if (in_count < 3) lines = 0;
