@@ -543,8 +543,9 @@ template <bool kPentagons>
 // ring that has a vertex to remove (rare) is then cleaned (clean_result).
 // Inline in OverlapAndClip::run for the pairs of counts known at compile
 // time (3 to 8: no call frame, no arguments spilled across a call); the
-// rest share one out-of-line copy, clip_target. kPentagons as finish_ring's.
-template <bool kPentagons = false>
+// rest share one out-of-line copy, clip_target. kPentagons as finish_ring's;
+// kTarget: target.count when known at compile time (0: read it).
+template <bool kPentagons = false, int kTarget = 0>
 [[gnu::always_inline]] inline void clip_target_inline(const PolygonView& contact, const PolygonView& target,
                                                        double tol, std::uint32_t lines, std::uint32_t sharp,
                                                        Polygon& result, IpEdge* source) {
@@ -557,12 +558,12 @@ template <bool kPentagons = false>
   }();
   const Vec2* in = target.v;
   const int* in_label = target_label.data();
-  int in_count = target.count;
+  int in_count = kTarget ? kTarget : target.count;
   ClipRing* out_ring = &rings.ring[0];
   ClipRing* spare_ring = &rings.ring[1];
   // Only the lines whose bit is set, in increasing order, while 3 vertices
   // are left.
-  if (in_count < 3) lines = 0;
+  if (kTarget == 0 && in_count < 3) lines = 0;
   for (; lines != 0; lines &= lines - 1u) {
     const int c = __builtin_ctz(lines);
     const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
@@ -627,7 +628,7 @@ struct OverlapAndClip {
     // intersection polygon and no contact force.
     // The clipper inline for the counts known at compile time.
     if (kA != 0)
-      clip_target_inline<kA == kB>(contact, target, tol, lines, facts.contact_sharp, ip, source);
+      clip_target_inline<kA == kB, kB>(contact, target, tol, lines, facts.contact_sharp, ip, source);
     else
       clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
     if (ip.count >= 3) return OverlapState::kOverlapping;
