@@ -564,6 +564,23 @@ template <bool kPentagons = false, int kTarget = 0>
   // Only the lines whose bit is set, in increasing order, while 3 vertices
   // are left.
   if (kTarget == 0 && in_count < 3) lines = 0;
+  if (kTarget > 5 && lines != 0) {
+    // The first cut of a target of 6 to 8 vertices, inline with its count
+    // known (the loop would cut it out of line, cut_ring_any).
+    const int c = __builtin_ctz(lines);
+    Vec2* out = out_ring->v.data();
+    int* out_label = out_ring->label.data();
+    const int count = cut_ring<kTarget>(in, in_label, kTarget, contact.normal(c), contact.vertex(c), tol,
+                                        contact_label(c), out, out_label);
+    lines &= lines - 1u;
+    if (count >= 0) {
+      in_count = count;
+      in = out;
+      in_label = out_label;
+      std::swap(out_ring, spare_ring);
+      if (count < 3) lines = 0;
+    }
+  }
   for (; lines != 0; lines &= lines - 1u) {
     const int c = __builtin_ctz(lines);
     const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
