@@ -337,6 +337,55 @@ inline void set_labelled_edge(int i, int l, const PolygonView& contact, const Po
 // snapped by the same test (fabs(NaN) <= tol is false: a NaN stays). kN: n
 // when known at compile time (0: read it), so that the common small rings
 // run unrolled; the same operations in the same order either way.
+// clip_ring_n for a ring of kN points none of which is on the line (each
+// distance < 0 or > 0), the points outside the bits of kOut: the same
+// points and labels as clip_edge's first two cases, with the sides known
+// at compile time (no comparisons).
+template <int kN, unsigned kOut>
+[[gnu::always_inline]] inline int cut_sided(const Vec2* in, const int* in_label, const double* dist, int line_label,
+                                            Vec2* out, int* out_label) {
+  int o = 0;
+#pragma GCC unroll 8
+  for (int i = 0; i < kN; ++i) {
+    const int k = i + 1 == kN ? 0 : i + 1;
+    const bool p_out = (kOut >> i) & 1u, q_out = (kOut >> k) & 1u;
+    if (!p_out) {
+      out_label[o] = in_label[i];
+      out[o++] = in[i];
+      if (q_out) {
+        out_label[o] = line_label;
+        out[o++] = lerp(in[i], in[k], dist[i] / (dist[i] - dist[k]));
+      }
+    } else if (!q_out) {
+      out_label[o] = in_label[i];
+      out[o++] = lerp(in[i], in[k], dist[i] / (dist[i] - dist[k]));
+    }
+  }
+  return o;
+}
+
+// cut_sided for the run-time mask `outside` of kN = 3 or 4 points (not 0).
+template <int kN>
+[[gnu::always_inline]] inline int cut_sided_any(unsigned outside, const Vec2* in, const int* in_label,
+                                                const double* dist, int line_label, Vec2* out, int* out_label) {
+#define DDA_CUT_SIDED(m) \
+  case m: return cut_sided<kN, m>(in, in_label, dist, line_label, out, out_label);
+  if constexpr (kN == 3) {
+    switch (outside) {
+      DDA_CUT_SIDED(1) DDA_CUT_SIDED(2) DDA_CUT_SIDED(3) DDA_CUT_SIDED(4) DDA_CUT_SIDED(5) DDA_CUT_SIDED(6)
+      default: return 0;  // every point outside
+    }
+  } else {
+    switch (outside) {
+      DDA_CUT_SIDED(1) DDA_CUT_SIDED(2) DDA_CUT_SIDED(3) DDA_CUT_SIDED(4) DDA_CUT_SIDED(5) DDA_CUT_SIDED(6)
+      DDA_CUT_SIDED(7) DDA_CUT_SIDED(8) DDA_CUT_SIDED(9) DDA_CUT_SIDED(10) DDA_CUT_SIDED(11) DDA_CUT_SIDED(12)
+      DDA_CUT_SIDED(13) DDA_CUT_SIDED(14)
+      default: return 0;  // every point outside
+    }
+  }
+#undef DDA_CUT_SIDED
+}
+
 template <int kN>
 int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, double tol, int line_label, Vec2* out,
              int* out_label) {
@@ -347,15 +396,28 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
   const Lanes tol_l = {tol, tol};
   const LaneMask sign = {INT64_MIN, INT64_MIN};
   LaneMask outside = {0, 0};  // lanes of the points outside, or-ed over the pairs
+  constexpr bool kSided = kN == 3 || kN == 4;
+  unsigned out_bits = 0, sided_bits = 0;  // kSided: the points outside, and those off the line
   for (int k = 0; k < (kN ? kPairs : (n + 1) / 2); ++k) {
     const Vec2 p = in[2 * k], q = in[std::min(2 * k + 1, n - 1)];
     const Lanes tp = nxy * (Lanes{p.x, p.y} - pxy), tq = nxy * (Lanes{q.x, q.y} - pxy);  // the terms of dot(nc, p - pc)
     Lanes d = Lanes{tp[0], tq[0]} + Lanes{tp[1], tq[1]};
     d = (Lanes)((LaneMask)d & ~((Lanes)((LaneMask)d & ~sign) <= tol_l));  // |d| <= tol: +0
-    outside = detail::lane_or(outside, d > Lanes{0.0, 0.0});
+    const LaneMask out_k = d > Lanes{0.0, 0.0};
+    outside = detail::lane_or(outside, out_k);
+    if constexpr (kSided) {
+      out_bits |= lane_bits(out_k) << (2 * k);
+      sided_bits |= lane_bits(detail::lane_or(out_k, d < Lanes{0.0, 0.0})) << (2 * k);
+    }
     __builtin_memcpy(&dist[2 * k], &d, sizeof d);
   }
   if (!lane_bits(outside)) return -1;
+  if constexpr (kSided) {
+    // No point on the line (nor NaN): the cut by the mask of the points outside.
+    constexpr unsigned kAll = (1u << kN) - 1u;
+    if ((sided_bits & kAll) == kAll)
+      return cut_sided_any<kN>(out_bits & kAll, in, in_label, dist, line_label, out, out_label);
+  }
   return 2 * n > kMaxVertices
              ? detail::clip_ring_n<true, true, kN>(in, dist, n, out, in_label, line_label, out_label)
              : detail::clip_ring_n<true, false, kN>(in, dist, n, out, in_label, line_label, out_label);
