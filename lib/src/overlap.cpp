@@ -327,16 +327,6 @@ inline void set_labelled_edge(int i, int l, const PolygonView& contact, const Po
 }
 
 
-// One cut of clip_target: the ring in[0..n) with its labels cut by the line
-// through pc with unit normal nc, keeping the inner side. Signed distances
-// within tol of the line are snapped to 0 (no duplicate vertex, no sliver
-// edge). Returns -1, and writes nothing, when no vertex lies outside (the
-// ring stays as it is); else the new count. The distances two points at a
-// time (pair k: points 2k and 2k + 1 in its lanes, an odd count's last
-// point repeated), each nc . (p - pc) rounded as the scalar dot product and
-// snapped by the same test (fabs(NaN) <= tol is false: a NaN stays). kN: n
-// when known at compile time (0: read it), so that the common small rings
-// run unrolled; the same operations in the same order either way.
 // clip_ring_n for a ring of kN points none of which is on the line (each
 // distance < 0 or > 0), the points outside the bits of kOut: the same
 // points and labels as clip_edge's first two cases, with the sides known
@@ -386,6 +376,18 @@ template <int kN>
 #undef DDA_CUT_SIDED
 }
 
+// One cut of clip_target: the ring in[0..n) with its labels cut by the line
+// through pc with unit normal nc, keeping the inner side. Signed distances
+// within tol of the line are snapped to 0 (no duplicate vertex, no sliver
+// edge). Returns -1, and writes nothing, when no vertex lies outside (the
+// ring stays as it is); else the new count. The distances two points at a
+// time (pair k: points 2k and 2k + 1 in its lanes, an odd count's last
+// point repeated), each nc . (p - pc) rounded as the scalar dot product and
+// snapped by the same test (fabs(NaN) <= tol is false: a NaN stays). kN: n
+// when known at compile time (0: read it), so that the common small rings
+// run unrolled; the same operations in the same order either way. A ring
+// of 3 or 4 points none of which is on the line (the usual cut) goes
+// through cut_sided, one straight sequence per mask of the points outside.
 template <int kN>
 int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, double tol, int line_label, Vec2* out,
              int* out_label) {
