@@ -406,10 +406,12 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
     }
     __builtin_memcpy(&dist[2 * k], &d, sizeof d);
   }
-  if (!lane_bits(outside)) return -1;
   if constexpr (kSided) {
+    if (out_bits == 0) return -1;
     // No point on the line (nor NaN): the cut by the mask of the points outside.
-    if ((sided_bits & 15u) == 15u) return cut_sided_4(out_bits & 15u, in, in_label, dist, line_label, out, out_label);
+    if (sided_bits == 15u) return cut_sided_4(out_bits, in, in_label, dist, line_label, out, out_label);
+  } else if (!lane_bits(outside)) {
+    return -1;
   }
   return 2 * n > kMaxVertices
              ? detail::clip_ring_n<true, true, kN>(in, dist, n, out, in_label, line_label, out_label)
