@@ -591,10 +591,10 @@ template <bool kPentagons>
 // of a convex polygon by a half-plane adds at most one vertex, so n + m
 // fits in kMaxVertices. The rings are uninitialised stack scratch
 // (ClipRings); one pointer per ring, rather than a buffer index, keeps the
-// loop's addresses in registers. The first input is the target itself, and a line that leaves
-// every vertex inside (the usual case: a shallow contact is cut by one or
-// two of the contact polygon's edge lines) costs one distance per vertex
-// and no copy. Then the bevels at the contact's sharp corners
+// loop's addresses in registers. The first input is the target itself,
+// and a line that leaves every vertex inside (the usual case: a shallow
+// contact is cut by one or two of the contact polygon's edge lines) costs
+// one distance per vertex and no copy. Then the bevels at the contact's sharp corners
 // (bevel_and_finish), if any. The last ring goes to `result` in one pass
 // with its normals and sources, which also runs clean_ring's test; only a
 // ring that has a vertex to remove (rare) is then cleaned (clean_result).
