@@ -327,6 +327,48 @@ inline void set_labelled_edge(int i, int l, const PolygonView& contact, const Po
 }
 
 
+// clip_ring_n for a ring of kN points none of which is on the line (each
+// distance < 0 or > 0), the points outside the bits of kOut: the same
+// points and labels as clip_edge's first two cases, with the sides known
+// at compile time (no comparisons).
+template <int kN, unsigned kOut>
+[[gnu::always_inline]] inline int cut_sided(const Vec2* in, const int* in_label, const double* dist, int line_label,
+                                            Vec2* out, int* out_label) {
+  int o = 0;
+#pragma GCC unroll 8
+  for (int i = 0; i < kN; ++i) {
+    const int k = i + 1 == kN ? 0 : i + 1;
+    const bool p_out = (kOut >> i) & 1u, q_out = (kOut >> k) & 1u;
+    if (!p_out) {
+      out_label[o] = in_label[i];
+      out[o++] = in[i];
+      if (q_out) {
+        out_label[o] = line_label;
+        out[o++] = lerp(in[i], in[k], dist[i] / (dist[i] - dist[k]));
+      }
+    } else if (!q_out) {
+      out_label[o] = in_label[i];
+      out[o++] = lerp(in[i], in[k], dist[i] / (dist[i] - dist[k]));
+    }
+  }
+  return o;
+}
+
+// cut_sided for a quadrilateral, the mask `outside` of its points outside
+// (not 0) known at run time.
+[[gnu::always_inline]] inline int cut_sided_4(unsigned outside, const Vec2* in, const int* in_label,
+                                              const double* dist, int line_label, Vec2* out, int* out_label) {
+#define DDA_CUT_SIDED(m) \
+  case m: return cut_sided<4, m>(in, in_label, dist, line_label, out, out_label);
+  switch (outside) {
+    DDA_CUT_SIDED(1) DDA_CUT_SIDED(2) DDA_CUT_SIDED(3) DDA_CUT_SIDED(4) DDA_CUT_SIDED(5) DDA_CUT_SIDED(6)
+    DDA_CUT_SIDED(7) DDA_CUT_SIDED(8) DDA_CUT_SIDED(9) DDA_CUT_SIDED(10) DDA_CUT_SIDED(11) DDA_CUT_SIDED(12)
+    DDA_CUT_SIDED(13) DDA_CUT_SIDED(14)
+    default: return 0;  // every point outside
+  }
+#undef DDA_CUT_SIDED
+}
+
 // One cut of clip_target: the ring in[0..n) with its labels cut by the line
 // through pc with unit normal nc, keeping the inner side. Signed distances
 // within tol of the line are snapped to 0 (no duplicate vertex, no sliver
@@ -336,7 +378,9 @@ inline void set_labelled_edge(int i, int l, const PolygonView& contact, const Po
 // point repeated), each nc . (p - pc) rounded as the scalar dot product and
 // snapped by the same test (fabs(NaN) <= tol is false: a NaN stays). kN: n
 // when known at compile time (0: read it), so that the common small rings
-// run unrolled; the same operations in the same order either way.
+// run unrolled; the same operations in the same order either way. A ring
+// of 4 points none of which is on the line (the usual cut) goes through
+// cut_sided, one straight sequence per mask of the points outside.
 template <int kN>
 int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, double tol, int line_label, Vec2* out,
              int* out_label) {
@@ -347,15 +391,28 @@ int cut_ring(const Vec2* in, const int* in_label, int n_in, Vec2 nc, Vec2 pc, do
   const Lanes tol_l = {tol, tol};
   const LaneMask sign = {INT64_MIN, INT64_MIN};
   LaneMask outside = {0, 0};  // lanes of the points outside, or-ed over the pairs
+  constexpr bool kSided = kN == 4;         // measured: fewer instructions than for 3 to 5 points
+  unsigned out_bits = 0, sided_bits = 0;  // kSided: the points outside, and those off the line
   for (int k = 0; k < (kN ? kPairs : (n + 1) / 2); ++k) {
     const Vec2 p = in[2 * k], q = in[std::min(2 * k + 1, n - 1)];
     const Lanes tp = nxy * (Lanes{p.x, p.y} - pxy), tq = nxy * (Lanes{q.x, q.y} - pxy);  // the terms of dot(nc, p - pc)
     Lanes d = Lanes{tp[0], tq[0]} + Lanes{tp[1], tq[1]};
     d = (Lanes)((LaneMask)d & ~((Lanes)((LaneMask)d & ~sign) <= tol_l));  // |d| <= tol: +0
-    outside = detail::lane_or(outside, d > Lanes{0.0, 0.0});
+    const LaneMask out_k = d > Lanes{0.0, 0.0};
+    outside = detail::lane_or(outside, out_k);
+    if constexpr (kSided) {
+      out_bits |= lane_bits(out_k) << (2 * k);
+      sided_bits |= lane_bits(detail::lane_or(out_k, d < Lanes{0.0, 0.0})) << (2 * k);
+    }
     __builtin_memcpy(&dist[2 * k], &d, sizeof d);
   }
-  if (!lane_bits(outside)) return -1;
+  if constexpr (kSided) {
+    if (out_bits == 0) return -1;
+    // No point on the line (nor NaN): the cut by the mask of the points outside.
+    if (sided_bits == 15u) return cut_sided_4(out_bits, in, in_label, dist, line_label, out, out_label);
+  } else if (!lane_bits(outside)) {
+    return -1;
+  }
   return 2 * n > kMaxVertices
              ? detail::clip_ring_n<true, true, kN>(in, dist, n, out, in_label, line_label, out_label)
              : detail::clip_ring_n<true, false, kN>(in, dist, n, out, in_label, line_label, out_label);
@@ -405,7 +462,15 @@ template <int kN>
 // clip_target's scratch: a ring of vertices and their edge labels.
 struct ClipRing {
   std::array<Vec2, kMaxVertices> v;
-  std::array<int, kMaxVertices> label{};  // initialised: a constant (unguarded) thread_local
+  std::array<int, kMaxVertices> label;
+};
+
+// clip_target's two rings on its stack, left uninitialised (a ClipRing
+// would zero its Vec2s on every call): every element is written before it
+// is read.
+union ClipRings {
+  ClipRings() {}
+  ClipRing ring[2];
 };
 
 // finish_ring's end for a ring of more than four vertices, apart (as
@@ -425,7 +490,10 @@ struct ClipRing {
 
 // clip_target's end on its last ring in[0..n) (labels in_label, no
 // kMixedEdgeLabel): emit_ring, then cleaning only if a vertex is
-// removable; no IP when fewer than 3 vertices are left.
+// removable; no IP when fewer than 3 vertices are left. kPentagons:
+// pentagons inline too (measured: fewer instructions for the pairs of
+// equal counts, more for those of a quadrilateral and a pentagon).
+template <bool kPentagons>
 [[gnu::always_inline]] inline void finish_ring(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
                                                const PolygonView& target, double tol, Polygon& result,
                                                IpEdge* source) {
@@ -433,12 +501,12 @@ struct ClipRing {
     result.count = 0;
     return;
   }
+  // The counts by their frequency: triangles, quadrilaterals, pentagons.
   bool clean = false;
-  switch (n) {
-    case 3: clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source); break;
-    case 4: clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source); break;
-    default: finish_ring_wide(in, in_label, n, contact, target, tol, result, source); return;
-  }
+  if (n == 3) clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source);
+  else if (n == 4) clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source);
+  else if (kPentagons && n == 5) clean = emit_ring<5>(in, in_label, 5, contact, target, tol, result, source);
+  else return finish_ring_wide(in, in_label, n, contact, target, tol, result, source);
   if (!clean) clean_result(in_label, contact, target, tol, result, source);
 }
 
@@ -508,7 +576,7 @@ struct ClipRing {
     std::swap(out_ring, spare_ring);
   }
   if (in_count < 3 || !bevelled) {
-    finish_ring(in, in_label, in_count, contact, target, tol, result, source);
+    finish_ring<false>(in, in_label, in_count, contact, target, tol, result, source);
     return;
   }
   for (int i = 0; i < in_count; ++i) result.v[static_cast<std::size_t>(i)] = in[i];
@@ -521,21 +589,24 @@ struct ClipRing {
 // edge labels; normals taken from the labelled source edges. Two rings
 // (vertices and labels), ping-ponged by swapping their pointers: each cut
 // of a convex polygon by a half-plane adds at most one vertex, so n + m
-// fits in kMaxVertices. The rings are thread-local scratch, as a local ring
-// would be zeroed on every call (Vec2 zero-initialises); one pointer per
-// ring, rather than a buffer index, keeps the loop's addresses in
-// registers. The first input is the target itself, and a line that leaves
-// every vertex inside (the usual case: a shallow contact is cut by one or
-// two of the contact polygon's edge lines) costs one distance per vertex
-// and no copy. Then the bevels at the contact's sharp corners
+// fits in kMaxVertices. The rings are uninitialised stack scratch
+// (ClipRings); one pointer per ring, rather than a buffer index, keeps the
+// loop's addresses in registers. The first input is the target itself,
+// and a line that leaves every vertex inside (the usual case: a shallow
+// contact is cut by one or two of the contact polygon's edge lines) costs
+// one distance per vertex and no copy. Then the bevels at the contact's sharp corners
 // (bevel_and_finish), if any. The last ring goes to `result` in one pass
 // with its normals and sources, which also runs clean_ring's test; only a
 // ring that has a vertex to remove (rare) is then cleaned (clean_result).
-// Out of line: OverlapAndClip::run inlines all else it calls, and one copy
-// of the clipper serves every pair of counts.
-[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
-                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
-  static thread_local ClipRing rings[2];
+// Inline in OverlapAndClip::run for the pairs of counts known at compile
+// time (3 to 8: no call frame, no arguments spilled across a call); the
+// rest share one out-of-line copy, clip_target. kPentagons as finish_ring's;
+// kTarget: target.count when known at compile time (0: read it).
+template <bool kPentagons = false, int kTarget = 0>
+[[gnu::always_inline]] inline void clip_target_inline(const PolygonView& contact, const PolygonView& target,
+                                                       double tol, std::uint32_t lines, std::uint32_t sharp,
+                                                       Polygon& result, IpEdge* source) {
+  ClipRings rings;
   // The target's own edges label themselves: label j for edge j.
   static constexpr std::array<int, kMaxVertices> target_label = [] {
     std::array<int, kMaxVertices> l{};
@@ -544,12 +615,29 @@ struct ClipRing {
   }();
   const Vec2* in = target.v;
   const int* in_label = target_label.data();
-  int in_count = target.count;
-  ClipRing* out_ring = &rings[0];
-  ClipRing* spare_ring = &rings[1];
+  int in_count = kTarget ? kTarget : target.count;
+  ClipRing* out_ring = &rings.ring[0];
+  ClipRing* spare_ring = &rings.ring[1];
   // Only the lines whose bit is set, in increasing order, while 3 vertices
   // are left.
-  if (in_count < 3) lines = 0;
+  if (kTarget == 0 && in_count < 3) lines = 0;
+  if (kTarget > 5 && lines != 0) {
+    // The first cut of a target of 6 to 8 vertices, inline with its count
+    // known (the loop would cut it out of line, cut_ring_any).
+    const int c = __builtin_ctz(lines);
+    Vec2* out = out_ring->v.data();
+    int* out_label = out_ring->label.data();
+    const int count = cut_ring<kTarget>(in, in_label, kTarget, contact.normal(c), contact.vertex(c), tol,
+                                        contact_label(c), out, out_label);
+    lines &= lines - 1u;
+    if (count >= 0) {
+      in_count = count;
+      in = out;
+      in_label = out_label;
+      std::swap(out_ring, spare_ring);
+      if (count < 3) lines = 0;
+    }
+  }
   for (; lines != 0; lines &= lines - 1u) {
     const int c = __builtin_ctz(lines);
     const Vec2 nc = contact.normal(c), pc = contact.vertex(c);
@@ -574,7 +662,14 @@ struct ClipRing {
     bevel_and_finish(contact, target, tol, sharp, in, in_label, in_count, out_ring, spare_ring, result, source);
     return;
   }
-  finish_ring(in, in_label, in_count, contact, target, tol, result, source);
+  finish_ring<kPentagons>(in, in_label, in_count, contact, target, tol, result, source);
+}
+
+// clip_target_inline out of line: pairs with a count above 8, and
+// intersection_polygon.
+[[gnu::noinline]] void clip_target(const PolygonView& contact, const PolygonView& target, double tol,
+                                   std::uint32_t lines, std::uint32_t sharp, Polygon& result, IpEdge* source) {
+  clip_target_inline(contact, target, tol, lines, sharp, result, source);
 }
 
 // overlap_and_intersection for the vertex counts kA, kB (0: read them):
@@ -605,7 +700,11 @@ struct OverlapAndClip {
     // e.g. a needle's tip deep in a block far from the origin, whose
     // vertices clean_ring merges): then the pair is touching, with no
     // intersection polygon and no contact force.
-    clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
+    // The clipper inline for the counts known at compile time.
+    if (kA != 0)
+      clip_target_inline<kA == kB, kB>(contact, target, tol, lines, facts.contact_sharp, ip, source);
+    else
+      clip_target(contact, target, tol, lines, facts.contact_sharp, ip, source);
     if (ip.count >= 3) return OverlapState::kOverlapping;
     ip.count = 0;
     return OverlapState::kTouching;
