@@ -381,11 +381,13 @@ template <bool kMinus>
 // the crossings with the rays, sorted, and the paper's segments between
 // them (integrate_halves when there are none). c, s: the edge's lines as
 // paper_side_edge builds them; mid, f_start, f_end: its d_exit at t = 1/2
-// and end tractions.
+// and end tractions. Hexagons to octagons: first the envelope walk from
+// line walk_i to line walk_j (when >= 0; see paper_side_edge), and the
+// midpoint's distance taken here (mid is not read).
 template <int kN, bool kMinus>
 [[gnu::always_inline]] inline void paper_side_crossings(const Lanes* c, const Lanes* s, int n, double k,
                                                         BisectorSpan rays, double mid, double f_start, double f_end,
-                                                        EdgeSums& sums) {
+                                                        EdgeSums& sums, int walk_i = -1, int walk_j = -1) {
   const int pairs = (n + 1) / 2;
   const LaneConstants* const kc = lane_constants();
   const auto at = [&](double t) {
@@ -406,6 +408,53 @@ template <int kN, bool kMinus>
     if (!(d > 0.0)) return 0.0;
     return kMinus ? 0.0 - k * d : k * d;
   };
+  if constexpr (kN >= 6) {
+    // The envelope walk (see paper_side_edge): from line walk_i at t = 0,
+    // at each step the earlier crossing t_b > t_a of the current line with
+    // one of its two adjacent lines (the one that falls below it: den > 0),
+    // accepted when no line lies below both there and d(t_b) > 0; the
+    // trapezoid t_a -> t_b, then on from that line, until walk_j's last
+    // trapezoid to t = 1. Any other step falls through to the paper's
+    // crossings below.
+    if (walk_i >= 0) {
+      int cur = walk_i;
+      double t0 = 0.0, fa = f_start;
+      EdgeSums w{};
+      for (int step = 0; step < n; ++step) {
+        if (cur == walk_j) {
+          const double dt = 1.0 - t0;
+          w.s0 += dt * (fa + f_end);
+          w.s1 += dt * (fa * (2.0 * t0 + 1.0) + f_end * (t0 + 2.0));
+          ++w.segments;
+          sums = w;
+          return;
+        }
+        const double cc = line_at(c, cur), sc = line_at(s, cur);
+        int best = -1;
+        double tb = 1.0;
+        for (const int nb : {cur == 0 ? n - 1 : cur - 1, cur == n - 1 ? 0 : cur + 1}) {
+          const double num = line_at(c, nb) - cc, den = sc - line_at(s, nb);
+          if (!(den > 0.0)) continue;
+          const double t = num / den;
+          if (t > t0 && t < tb) {
+            tb = t;
+            best = nb;
+          }
+        }
+        if (best < 0) break;
+        const double dt = at(tb), vi = cc + sc * tb, vj = line_at(c, best) + line_at(s, best) * tb;
+        if (!(dt > 0.0 && dt == (vj < vi ? vj : vi))) break;
+        const double fb = traction(dt), dtt = tb - t0;
+        w.s0 += dtt * (fa + fb);
+        w.s1 += dtt * (fa * (2.0 * t0 + tb) + fb * (t0 + 2.0 * tb));
+        ++w.segments;
+        t0 = tb;
+        fa = fb;
+        cur = best;
+      }
+    }
+    mid = at(0.5);  // the midpoint's distance, taken here (paper_side_edge's fold_at)
+  }
   const double f_mid = traction(mid);
   // The crossings strictly inside (0, 1), in ray order (Crossings::add's
   // test), at most 2 kN (a virtual node adds a ray), after a sentinel 0
@@ -450,8 +499,9 @@ template <int kN, bool kMinus>
 // (measured).
 template <int kN, bool kMinus>
 [[gnu::noinline]] void paper_side_crossings_call(const Lanes* c, const Lanes* s, int n, double k, BisectorSpan rays,
-                                                 double mid, double f_start, double f_end, EdgeSums& sums) {
-  paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
+                                                 double mid, double f_start, double f_end, EdgeSums& sums,
+                                                 int walk_i = -1, int walk_j = -1) {
+  paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums, walk_i, walk_j);
 }
 
 // The pairs (first, last) of line masks of a kN-gon (kN = 3 to 5) in
@@ -546,13 +596,34 @@ using PairedFor = std::conditional_t<(kN >= 6 && kN <= 8), PairedLines<kN>, std:
 //     the paper's other points split these two pieces only, and its sum is
 //     the two trapezoids 0 -> t* -> 1 with f* = k d*, the traction the
 //     paper's rule takes at that crossing (the same bits).
-// Both need the traction linear on each piece: the end distances > 0 (the
+// Hexagons to octagons, where an edge's envelope has more pieces, walk it
+// (in paper_side_crossings, before the paper's general case): line i alone
+// at t = 0, line j alone at t = 1 (vertex rays, rays.count == n). From the
+// current line a at t_a (the minimum there: d_exit(t_a) = l_a(t_a)), the
+// earlier crossing t_b in (t_a, 1) of l_a with one of its two adjacent
+// lines b that falls below it (s_a > s_b), accepted when no line lies
+// below both there, min_k l_k(t_b) = min(l_a, l_b)(t_b) = d_b > 0; then on
+// from b at t_b, until the current line is j, whose piece runs to t = 1.
+// Each piece [t_a, t_b] is one line: every l_k is >= l_a at t_a and at t_b
+// (in exact arithmetic l_a(t_b) = l_b(t_b) = d_b), so on all of it
+// (linear), and d_exit = l_a there; the last piece likewise, j attaining
+// the minimum at its start and at t = 1. Every kink is the crossing of two
+// adjacent lines, on the vertex ray between them, with d_b > 0: a point
+// the ray test passes (Sect. 3.2.3), where the paper takes f_b = k d_b
+// (the same bits). The paper's other points split these pieces only, so
+// its segments (Eqs. 13-17) sum in exact arithmetic to the walk's
+// trapezoids t_a -> t_b. A step with no adjacent crossing before t = 1
+// (the next kink between lines that are not adjacent, on no vertex ray),
+// with a line below both, or with d_b <= 0 leaves the walk for the
+// paper's general case. The walk's sums differ from the paper's by
+// round-off only (adding its trapezoids in place of the paper's segments).
+// All of these need the traction linear on each piece: the end distances > 0 (the
 // clamp d > 0 ? k d : 0 would bend it), or the end known on this side's
 // boundary (zero_start / zero_end: d = 0 there, f = 0). The midpoint's
 // tol test comes first, as on every edge (for hexagons to octagons, after
 // the ends, which may settle it). The sums differ from the paper's
 // segment by segment only by round-off; segments counts the trapezoids
-// integrated (1 or 2 here).
+// integrated (1 or 2 here, up to n in the walk).
 template <int kN, bool kMinus>
 [[gnu::always_inline]] inline bool paper_side_edge(const PolygonView& poly, double k, BisectorSpan rays, Vec2 a, Vec2 ab,
                                                    double tol, bool zero_start, bool zero_end, EdgeSums& sums,
@@ -654,6 +725,7 @@ template <int kN, bool kMinus>
   }
   const double f_start = zero_start ? 0.0 : traction(d0);
   const double f_end = zero_end ? 0.0 : traction(d1);
+  int walk_i = -1, walk_j = -1;  // the envelope walk's end lines (hexagons to octagons)
   if ((zero_start || d0 > 0.0) && (zero_end || d1 > 0.0)) {
     // Bit i: line i attains d_exit at t = 0 (first) / t = 1 (last); an odd
     // count's repeated line masked off.
@@ -734,6 +806,10 @@ template <int kN, bool kMinus>
         }
       }
     }
+    if (kN >= 6 && rays.count == n && first == 1u << i && last == 1u << j) {
+      walk_i = i;
+      walk_j = j;
+    }
   }
   if constexpr (kN >= 3 && kN <= 5) {
     Lanes cl[kCapacity], sl[kCapacity];  // a copy, as in the two-line shortcut
@@ -743,8 +819,8 @@ template <int kN, bool kMinus>
     }
     paper_side_crossings_call<kN, kMinus>(cl, sl, n, k, rays, mid, f_start, f_end, sums);
   }
-  else if constexpr (kN >= 6)  // the midpoint's distance taken here (see above)
-    paper_side_crossings_call<kN, kMinus>(c, s, n, k, rays, fold_at(load(kc->half)), f_start, f_end, sums);
+  else if constexpr (kN >= 6)  // the midpoint's distance taken there, after the walk
+    paper_side_crossings_call<kN, kMinus>(c, s, n, k, rays, 0.0, f_start, f_end, sums, walk_i, walk_j);
   else
     paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums);
   return true;
