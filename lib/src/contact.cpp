@@ -504,11 +504,12 @@ template <int kN, bool kMinus>
   paper_side_crossings<kN, kMinus>(c, s, n, k, rays, mid, f_start, f_end, sums, walk_i, walk_j);
 }
 
-// The pairs (first, last) of line masks of a kN-gon (kN = 3 to 5) in
+// The pairs (first, last) of line masks of a kN-gon (kN = 3 to 8) in
 // which each mask is one line and the two lines are adjacent (i - j = +-1
-// or +-(kN - 1)): bit first | last << kN of a table built at compile time,
-// so that paper_side_edge's two-line test is one lookup instead of two
-// single-bit tests and an index difference (the same predicate).
+// or +-(kN - 1)): bit first | last << kN of a table built at compile time
+// (2^(2 kN) bits: 8 KB for octagons), so that paper_side_edge's two-line
+// test is one lookup instead of two single-bit tests and an index
+// difference (the same predicate).
 template <int kN>
 struct AdjacentLines {
   static constexpr int kKeys = 1 << (2 * kN);
@@ -755,7 +756,7 @@ template <int kN, bool kMinus>
     // i, j: the lines nearest at the start and at the end when adjacent.
     int i = 0, j = 0;
     bool adjacent;
-    if constexpr (kN >= 3 && kN <= 5) {
+    if constexpr (kN >= 3 && kN <= 8) {
       adjacent = rays.count == n && kAdjacentLines<kN>.test(first, last);
       if (adjacent) {
         i = __builtin_ctz(first);  // one bit each
@@ -806,10 +807,11 @@ template <int kN, bool kMinus>
         }
       }
     }
-    if (kN >= 6 && rays.count == n && first == 1u << i && last == 1u << j) {
-      walk_i = i;
-      walk_j = j;
-    }
+    if constexpr (kN >= 6 && kN <= 8)
+      if (rays.count == n && first != 0 && last != 0 && (first & (first - 1)) == 0 && (last & (last - 1)) == 0) {
+        walk_i = __builtin_ctz(first);  // one bit each
+        walk_j = __builtin_ctz(last);
+      }
   }
   if constexpr (kN >= 3 && kN <= 5) {
     Lanes cl[kCapacity], sl[kCapacity];  // a copy, as in the two-line shortcut
