@@ -644,10 +644,16 @@ template <bool kPentagons = false, int kTarget = 0>
     Vec2* out = out_ring->v.data();
     int* out_label = out_ring->label.data();
     const int line = contact_label(c);
-    // The counts by their frequency: quadrilaterals, triangles (a corner
+    // The counts by their frequency: for a target of 6 to 8 vertices its
+    // count plus one and its count (a cut removing one or two vertices),
+    // inline with the count known; then quadrilaterals, triangles (a corner
     // cut off), pentagons, the rest.
     int count = 0;
-    if (in_count == 4) count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label);
+    if (kTarget > 5 && in_count == kTarget + 1)
+      count = cut_ring<kTarget + 1>(in, in_label, kTarget + 1, nc, pc, tol, line, out, out_label);
+    else if (kTarget > 5 && in_count == kTarget)
+      count = cut_ring<kTarget>(in, in_label, kTarget, nc, pc, tol, line, out, out_label);
+    else if (in_count == 4) count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label);
     else if (in_count == 3) count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label);
     else if (in_count == 5) count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label);
     else count = cut_ring_any(in, in_label, in_count, detail::lanes(nc), detail::lanes(pc), tol, line, out, out_label);
