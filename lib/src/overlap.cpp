@@ -494,8 +494,9 @@ union ClipRings {
 // pentagons inline too (measured: fewer instructions for the pairs of
 // equal counts, more for those of a quadrilateral and a pentagon).
 // kTarget: the target's count when known at compile time (0: not known);
-// for a target of 6 to 8 vertices, rings of its count and one fewer or
-// more (the commonest last rings) inline with the count known too.
+// for a target of 6 to 8 vertices, rings of its count, then one fewer or
+// more, two fewer or more, three more (the last rings by their frequency),
+// inline with the count known too.
 template <bool kPentagons, int kTarget = 0>
 [[gnu::always_inline]] inline void finish_ring(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
                                                const PolygonView& target, double tol, Polygon& result,
@@ -504,8 +505,8 @@ template <bool kPentagons, int kTarget = 0>
     result.count = 0;
     return;
   }
-  // The counts by their frequency: a 6-8 target's own (kTarget), then
-  // triangles, quadrilaterals, pentagons.
+  // The counts by their frequency: a 6-8 target's own and those near it
+  // (kTarget), then triangles, quadrilaterals, pentagons.
   bool clean = false;
   if (kTarget > 5 && n == kTarget)
     clean = emit_ring<kTarget>(in, in_label, kTarget, contact, target, tol, result, source);
@@ -513,6 +514,12 @@ template <bool kPentagons, int kTarget = 0>
     clean = emit_ring<kTarget - 1>(in, in_label, kTarget - 1, contact, target, tol, result, source);
   else if (kTarget > 5 && n == kTarget + 1)
     clean = emit_ring<kTarget + 1>(in, in_label, kTarget + 1, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget - 2)
+    clean = emit_ring<kTarget - 2>(in, in_label, kTarget - 2, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget + 2)
+    clean = emit_ring<kTarget + 2>(in, in_label, kTarget + 2, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget + 3)
+    clean = emit_ring<kTarget + 3>(in, in_label, kTarget + 3, contact, target, tol, result, source);
   else if (n == 3) clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source);
   else if (n == 4) clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source);
   else if (kPentagons && n == 5) clean = emit_ring<5>(in, in_label, 5, contact, target, tol, result, source);
