@@ -493,7 +493,11 @@ union ClipRings {
 // removable; no IP when fewer than 3 vertices are left. kPentagons:
 // pentagons inline too (measured: fewer instructions for the pairs of
 // equal counts, more for those of a quadrilateral and a pentagon).
-template <bool kPentagons>
+// kTarget: the target's count when known at compile time (0: not known);
+// for a target of 6 to 8 vertices, rings of its count, then one fewer or
+// more, two fewer or more, three more (the last rings by their frequency),
+// inline with the count known too.
+template <bool kPentagons, int kTarget = 0>
 [[gnu::always_inline]] inline void finish_ring(const Vec2* in, const int* in_label, int n, const PolygonView& contact,
                                                const PolygonView& target, double tol, Polygon& result,
                                                IpEdge* source) {
@@ -501,9 +505,22 @@ template <bool kPentagons>
     result.count = 0;
     return;
   }
-  // The counts by their frequency: triangles, quadrilaterals, pentagons.
+  // The counts by their frequency: a 6-8 target's own and those near it
+  // (kTarget), then triangles, quadrilaterals, pentagons.
   bool clean = false;
-  if (n == 3) clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source);
+  if (kTarget > 5 && n == kTarget)
+    clean = emit_ring<kTarget>(in, in_label, kTarget, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget - 1)
+    clean = emit_ring<kTarget - 1>(in, in_label, kTarget - 1, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget + 1)
+    clean = emit_ring<kTarget + 1>(in, in_label, kTarget + 1, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget - 2)
+    clean = emit_ring<kTarget - 2>(in, in_label, kTarget - 2, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget + 2)
+    clean = emit_ring<kTarget + 2>(in, in_label, kTarget + 2, contact, target, tol, result, source);
+  else if (kTarget > 5 && n == kTarget + 3)
+    clean = emit_ring<kTarget + 3>(in, in_label, kTarget + 3, contact, target, tol, result, source);
+  else if (n == 3) clean = emit_ring<3>(in, in_label, 3, contact, target, tol, result, source);
   else if (n == 4) clean = emit_ring<4>(in, in_label, 4, contact, target, tol, result, source);
   else if (kPentagons && n == 5) clean = emit_ring<5>(in, in_label, 5, contact, target, tol, result, source);
   else return finish_ring_wide(in, in_label, n, contact, target, tol, result, source);
@@ -644,10 +661,16 @@ template <bool kPentagons = false, int kTarget = 0>
     Vec2* out = out_ring->v.data();
     int* out_label = out_ring->label.data();
     const int line = contact_label(c);
-    // The counts by their frequency: quadrilaterals, triangles (a corner
+    // The counts by their frequency: for a target of 6 to 8 vertices its
+    // count plus one and its count (a cut removing one or two vertices),
+    // inline with the count known; then quadrilaterals, triangles (a corner
     // cut off), pentagons, the rest.
     int count = 0;
-    if (in_count == 4) count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label);
+    if (kTarget > 5 && in_count == kTarget + 1)
+      count = cut_ring<kTarget + 1>(in, in_label, kTarget + 1, nc, pc, tol, line, out, out_label);
+    else if (kTarget > 5 && in_count == kTarget)
+      count = cut_ring<kTarget>(in, in_label, kTarget, nc, pc, tol, line, out, out_label);
+    else if (in_count == 4) count = cut_ring<4>(in, in_label, 4, nc, pc, tol, line, out, out_label);
     else if (in_count == 3) count = cut_ring<3>(in, in_label, 3, nc, pc, tol, line, out, out_label);
     else if (in_count == 5) count = cut_ring<5>(in, in_label, 5, nc, pc, tol, line, out, out_label);
     else count = cut_ring_any(in, in_label, in_count, detail::lanes(nc), detail::lanes(pc), tol, line, out, out_label);
@@ -662,7 +685,7 @@ template <bool kPentagons = false, int kTarget = 0>
     bevel_and_finish(contact, target, tol, sharp, in, in_label, in_count, out_ring, spare_ring, result, source);
     return;
   }
-  finish_ring<kPentagons>(in, in_label, in_count, contact, target, tol, result, source);
+  finish_ring<kPentagons, kTarget>(in, in_label, in_count, contact, target, tol, result, source);
 }
 
 // clip_target_inline out of line: pairs with a count above 8, and
