@@ -388,7 +388,7 @@ template <int kN, bool kMinus>
 [[gnu::always_inline]] inline void paper_side_crossings(const Lanes* c, const Lanes* s, int n, double k,
                                                         BisectorSpan rays, double mid, double f_start, double f_end,
                                                         EdgeSums& sums, int walk_i = -1, int walk_j = -1) {
-  if constexpr (kN > 0) n = kN;  // the count known at compile time (loops unrolled, indices folded)
+  if constexpr (kN >= 6) n = kN;  // the count known at compile time (loops unrolled, indices folded)
   const int pairs = (n + 1) / 2;
   const LaneConstants* const kc = lane_constants();
   const auto at = [&](double t) {
