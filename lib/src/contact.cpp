@@ -433,15 +433,17 @@ template <int kN, bool kMinus>
         const double cc = line_at(c, cur), sc = line_at(s, cur);
         int best = -1;
         double tb = 1.0;
-        for (const int nb : {cur == 0 ? n - 1 : cur - 1, cur == n - 1 ? 0 : cur + 1}) {
+        const auto neighbour = [&](int nb) {
           const double num = line_at(c, nb) - cc, den = sc - line_at(s, nb);
-          if (!(den > 0.0)) continue;
+          if (!(den > 0.0)) return;
           const double t = num / den;
           if (t > t0 && t < tb) {
             tb = t;
             best = nb;
           }
-        }
+        };
+        neighbour(cur == 0 ? n - 1 : cur - 1);
+        neighbour(cur == n - 1 ? 0 : cur + 1);
         if (best < 0) break;
         const double dt = at(tb), vi = cc + sc * tb, vj = line_at(c, best) + line_at(s, best) * tb;
         if (!(dt > 0.0 && dt == (vj < vi ? vj : vi))) break;
