@@ -810,8 +810,15 @@ template <int kN, bool kMinus>
         }
       }
     }
+    // The walk for lines i and j that are not adjacent. Adjacent ones
+    // failed the two-line test above, and the walk cannot join them the
+    // other way round: the slopes s_k = -n_k . ab of the envelope's lines
+    // fall from piece to piece (d_exit is concave), and -cos falls over at
+    // most half a turn of the normals, while that way spans more (in exact
+    // arithmetic). Such an edge takes the paper's general case directly.
     if constexpr (kN >= 6 && kN <= 8)
-      if (rays.count == n && first != 0 && last != 0 && (first & (first - 1)) == 0 && (last & (last - 1)) == 0) {
+      if (!adjacent && rays.count == n && first != 0 && last != 0 && (first & (first - 1)) == 0 &&
+          (last & (last - 1)) == 0) {
         walk_i = __builtin_ctz(first);  // one bit each
         walk_j = __builtin_ctz(last);
       }
